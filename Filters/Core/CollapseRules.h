@@ -1,0 +1,79 @@
+/**
+ * @file CollapseRules.h
+ * @brief When a half-edge collapse v0 -> v1 is allowed (SPEC.md, "Order").
+ *
+ * Topology (the link condition, after pmp-library's is_collapse_legal):
+ * - both vertices unlocked (manifold neighbourhood) and adjacent;
+ * - a boundary v0 collapses only along a boundary edge, and never when boundaries are
+ *   preserved;
+ * - a triangle on the edge must not have its two other edges on the boundary;
+ * - the two vertices opposite the edge (vl, vr) differ, are unlocked, and keep a valence of at
+ *   least 3 (interior) so no two triangles come to share all three vertices;
+ * - v0 and v1 share no neighbour other than vl and vr (otherwise an edge would become
+ *   non-manifold).
+ * Geometry: no triangle of v0 that survives may become degenerate or turn its normal by more
+ * than the configured angle.
+ */
+#ifndef colordecimation_CollapseRules_h
+#define colordecimation_CollapseRules_h
+
+#include "vtkColorDecimationModule.h" // for export macro
+
+#include <cstdint>
+#include <vector>
+
+namespace colordecimation
+{
+class HalfEdgeMesh;
+
+struct CollapseRuleOptions
+{
+  bool PreserveBoundary = false;
+  /// cos(maximum normal angle): a surviving triangle's normal may turn by at most that angle.
+  double MinimumNormalCosine = 0.0;
+};
+
+/// Why a collapse was refused (for tests and statistics).
+enum class CollapseVerdict
+{
+  Legal,
+  NotCollapsible, ///< a vertex is locked, removed, or the two are not adjacent
+  Boundary,       ///< boundary rule
+  LinkCondition,  ///< the link condition or the valence rule
+  Degenerate,     ///< a triangle would lose its area
+  Flip            ///< a triangle normal would turn too far
+};
+
+class VTKCOLORDECIMATION_EXPORT CollapseRules
+{
+public:
+  explicit CollapseRules(const CollapseRuleOptions& options)
+    : Options(options)
+  {
+  }
+
+  const CollapseRuleOptions& GetOptions() const { return this->Options; }
+
+  /// Full check of v0 -> v1. `positions` holds 3 floats per vertex.
+  CollapseVerdict Check(const HalfEdgeMesh& mesh, const float* positions, int32_t v0, int32_t v1);
+
+  bool IsLegal(const HalfEdgeMesh& mesh, const float* positions, int32_t v0, int32_t v1)
+  {
+    return this->Check(mesh, positions, v0, v1) == CollapseVerdict::Legal;
+  }
+
+  /// The topological part alone.
+  CollapseVerdict CheckTopology(const HalfEdgeMesh& mesh, int32_t v0, int32_t v1);
+
+  /// The geometric part alone: triangles of v0 moved onto p1 stay non-degenerate, unflipped.
+  CollapseVerdict CheckGeometry(const HalfEdgeMesh& mesh, const float* positions, int32_t v0,
+                                int32_t v1) const;
+
+private:
+  CollapseRuleOptions Options;
+  std::vector<int32_t> Neighbors; ///< scratch, reused
+};
+
+} // namespace colordecimation
+
+#endif

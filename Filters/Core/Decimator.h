@@ -1,0 +1,126 @@
+/**
+ * @file Decimator.h
+ * @brief The decimation loop: vertices in a min-heap keyed by their cheapest valid outgoing
+ * half-edge collapse, collapsed one at a time until the triangle target is met.
+ *
+ * Pipeline (in the order Run performs it):
+ * 1. HalfEdgeMesh::Build: connectivity, locking of non-manifold places;
+ * 2. the normalised frame: bounding-box centre at the origin, mean edge length 1 (SPEC.md);
+ * 3. InitializeVertexMetrics: area-weighted quadrics and visual importance;
+ * 4. every vertex costed (Evaluate) and pushed on the VertexHeap;
+ * 5. pop, check CollapseRules, collapse, merge the metric state (Q and I accumulate into v1),
+ *    re-cost v1 and its new 1-ring.
+ *
+ * Costing is lazy about legality: a vertex is keyed by its cheapest *admissible* target (the
+ * boundary rule and locks only), which is a lower bound of its cheapest *valid* one. When a
+ * popped vertex's best collapse turns out illegal, the vertex is re-costed over its legal
+ * collapses only and pushed back. Because keys never exceed the true priority, the vertex
+ * that is collapsed is always the one with the lowest valid cost, exactly as an eager check of
+ * every candidate would choose, at a fraction of the work.
+ */
+#ifndef colordecimation_Decimator_h
+#define colordecimation_Decimator_h
+
+#include "CollapseRules.h"
+#include "ColorMetric.h"
+#include "HalfEdgeMesh.h"
+#include "VertexHeap.h"
+#include "vtkColorDecimationModule.h" // for export macro
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace colordecimation
+{
+
+enum class ErrorMetric
+{
+  HalfEdgeColor = 0, ///< (1 + Q)(1 + I)(1 + C): the paper's metric
+  Geometry = 1       ///< Q alone (half-edge QEM), colour ignored
+};
+
+struct DecimatorOptions
+{
+  ErrorMetric Metric = ErrorMetric::HalfEdgeColor;
+  bool PreserveBoundary = false;
+  double MaximumNormalAngle = 90.0; ///< degrees
+  double GeometryWeight = 1.0;      ///< w in Q' = w Q (SPEC.md, Frame)
+};
+
+struct DecimatorInput
+{
+  int32_t NumberOfPoints = 0;
+  const double* Points = nullptr; ///< 3 per point, original coordinates
+  const float* Colors = nullptr;  ///< 3 per point, RGB in [0,1]; null: no colour
+  int32_t NumberOfTriangles = 0;
+  const int32_t* Triangles = nullptr; ///< 3 point ids per triangle, no repeated id
+  const uint8_t* Fixed = nullptr;     ///< optional, 1 per point: non-zero points never collapse
+};
+
+struct DecimatorStatistics
+{
+  MeshBuildReport Build;
+  int64_t InputTriangles = 0;
+  int64_t TargetTriangles = 0;
+  int64_t OutputTriangles = 0;
+  int64_t Collapses = 0;
+  int64_t RejectedPops = 0;  ///< popped collapses that failed the rules and were re-costed
+  double MeanEdgeLength = 0; ///< of the input, in its own units (the frame's unit)
+  bool Aborted = false;
+  size_t StateBytes = 0; ///< bytes held by the decimator's arrays
+  size_t MetricBytesPerVertex = sizeof(VertexMetric);
+};
+
+class VTKCOLORDECIMATION_EXPORT Decimator
+{
+public:
+  explicit Decimator(const DecimatorOptions& options);
+
+  /**
+   * Decimate until at most `targetTriangles` remain or no valid collapse is left.
+   * `progress(fraction)` is called now and then; returning false aborts (the mesh is left
+   * valid, decimated as far as it got).
+   */
+  DecimatorStatistics Run(const DecimatorInput& input, int64_t targetTriangles,
+                          const std::function<bool(double)>& progress = nullptr);
+
+  const HalfEdgeMesh& GetMesh() const { return this->Mesh; }
+  const std::vector<VertexMetric>& GetMetrics() const { return this->Metrics; }
+  /// Positions in the normalised frame (3 floats per vertex).
+  const std::vector<float>& GetNormalizedPositions() const { return this->P; }
+
+  /**
+   * The cost of v0 -> v1 on the current mesh (no legality check), or a negative value if
+   * they are not neighbours. For tests.
+   */
+  double CollapseCost(int32_t v0, int32_t v1);
+
+private:
+  struct Choice
+  {
+    int32_t Target = -1;
+    double Cost = 0;
+  };
+  /// Cheapest admissible (exact = false) or legal (exact = true) collapse of v0.
+  Choice Evaluate(int32_t v0, bool exact);
+  void GatherRing(int32_t v0);
+  void CostRing(int32_t v0);
+  void Update(int32_t v);
+
+  DecimatorOptions Options;
+  CollapseRules Rules;
+  HalfEdgeMesh Mesh;
+  std::vector<float> P;
+  const float* Colors = nullptr;
+  std::vector<VertexMetric> Metrics;
+  VertexHeap Heap;
+  std::vector<int32_t> Best; ///< heap vertex -> its chosen target
+  Ring CurrentRing;
+  std::vector<double> Costs;
+  std::vector<int> Order;
+};
+
+} // namespace colordecimation
+
+#endif

@@ -1,0 +1,251 @@
+#include "HalfEdgeMesh.h"
+
+#include <algorithm>
+
+namespace colordecimation
+{
+
+MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangles,
+                                    int32_t numTriangles)
+{
+  MeshBuildReport report;
+  const int32_t numHalfEdges = 3 * numTriangles;
+  this->V.assign(triangles, triangles + numHalfEdges);
+  this->T.assign(numHalfEdges, -1);
+  this->Out.assign(numVertices, -1);
+  this->Flags.assign(numVertices, 0);
+  this->LiveFaces = numTriangles;
+
+  // Outgoing half-edges of each vertex, in compressed rows (counting sort on the origin).
+  std::vector<int32_t> offsets(static_cast<size_t>(numVertices) + 1, 0);
+  for (int32_t h = 0; h < numHalfEdges; ++h)
+  {
+    ++offsets[this->V[h] + 1];
+  }
+  for (int32_t v = 0; v < numVertices; ++v)
+  {
+    offsets[v + 1] += offsets[v];
+  }
+  std::vector<int32_t> outgoing(numHalfEdges);
+  {
+    std::vector<int32_t> fill(offsets.begin(), offsets.end() - 1);
+    for (int32_t h = 0; h < numHalfEdges; ++h)
+    {
+      outgoing[fill[this->V[h]]++] = h;
+    }
+  }
+
+  // Pair twins. An edge is manifold when it has exactly one half-edge each way.
+  for (int32_t h = 0; h < numHalfEdges; ++h)
+  {
+    const int32_t a = this->V[h];
+    const int32_t b = this->Target(h);
+    int32_t forward = 0, backward = 0, twin = -1, smallest = h;
+    for (int32_t k = offsets[a]; k < offsets[a + 1]; ++k)
+    {
+      const int32_t g = outgoing[k];
+      if (this->Target(g) == b)
+      {
+        ++forward;
+        smallest = std::min(smallest, g);
+      }
+    }
+    for (int32_t k = offsets[b]; k < offsets[b + 1]; ++k)
+    {
+      const int32_t g = outgoing[k];
+      if (this->Target(g) == a)
+      {
+        ++backward;
+        twin = g;
+        smallest = std::min(smallest, g);
+      }
+    }
+    if (forward == 1 && backward == 1)
+    {
+      this->T[h] = twin;
+    }
+    else if (forward == 1 && backward == 0)
+    {
+      ++report.BoundaryEdges;
+    }
+    else
+    {
+      this->Flags[a] |= Locked;
+      this->Flags[b] |= Locked;
+      if (smallest == h)
+      {
+        ++report.NonManifoldEdges;
+      }
+    }
+  }
+
+  // One outgoing half-edge per vertex; detect bow-ties by circulating.
+  for (int32_t v = 0; v < numVertices; ++v)
+  {
+    const int32_t count = offsets[v + 1] - offsets[v];
+    if (count == 0)
+    {
+      ++report.IsolatedVertices;
+      continue;
+    }
+    int32_t boundaryOut = -1, boundaryCount = 0;
+    for (int32_t k = offsets[v]; k < offsets[v + 1]; ++k)
+    {
+      if (this->T[outgoing[k]] < 0)
+      {
+        boundaryOut = outgoing[k];
+        ++boundaryCount;
+      }
+    }
+    this->Out[v] = boundaryCount == 1 ? boundaryOut : outgoing[offsets[v]];
+    if (this->Flags[v] & Locked)
+    {
+      continue;
+    }
+    int32_t visited = 0;
+    if (boundaryCount <= 1)
+    {
+      int32_t h = this->Out[v];
+      do
+      {
+        ++visited;
+        h = this->T[Prev(h)];
+      } while (h >= 0 && h != this->Out[v] && visited <= count);
+    }
+    if (visited != count)
+    {
+      this->Flags[v] |= Locked;
+      ++report.NonManifoldVertices;
+    }
+  }
+  for (int32_t v = 0; v < numVertices; ++v)
+  {
+    report.LockedVertices += (this->Flags[v] & Locked) ? 1 : 0;
+  }
+  return report;
+}
+
+int HalfEdgeMesh::Valence(int32_t v) const
+{
+  int valence = 0;
+  this->ForEachNeighbor(v, [&](int32_t) { ++valence; });
+  return valence;
+}
+
+int32_t HalfEdgeMesh::FindHalfEdge(int32_t a, int32_t b) const
+{
+  int32_t found = -1;
+  this->ForEachOutgoing(a,
+                        [&](int32_t h)
+                        {
+                          if (this->Target(h) == b)
+                          {
+                            found = h;
+                          }
+                        });
+  return found;
+}
+
+void HalfEdgeMesh::RemoveFace(int32_t h)
+{
+  const int32_t ta = this->T[Next(h)];
+  const int32_t tb = this->T[Prev(h)];
+  if (ta >= 0)
+  {
+    this->T[ta] = tb;
+  }
+  if (tb >= 0)
+  {
+    this->T[tb] = ta;
+  }
+  const int32_t first = h - h % 3;
+  for (int32_t k = first; k < first + 3; ++k)
+  {
+    this->V[k] = -1;
+    this->T[k] = -1;
+  }
+  --this->LiveFaces;
+}
+
+void HalfEdgeMesh::RepairOutgoing(int32_t v, int32_t candidate)
+{
+  if (this->Flags[v] & Locked)
+  {
+    // Locked vertices are never circulated; any live outgoing half-edge will do.
+    const int32_t current = this->Out[v];
+    if (current < 0 || this->V[current] != v)
+    {
+      this->Out[v] = candidate;
+    }
+    return;
+  }
+  // Turn backwards until the boundary (or all the way round).
+  int32_t h = candidate;
+  do
+  {
+    if (this->T[h] < 0)
+    {
+      break;
+    }
+    h = Next(this->T[h]);
+  } while (h != candidate);
+  this->Out[v] = h;
+}
+
+int HalfEdgeMesh::Collapse(int32_t v0, int32_t v1)
+{
+  const int32_t h01 = this->FindHalfEdge(v0, v1);
+  const int32_t h10 = this->FindHalfEdge(v1, v0);
+
+  // v0's corners, gathered before anything changes (the valence is small; the buffer is
+  // reused so that a collapse allocates nothing in the steady state).
+  this->Scratch.clear();
+  this->ForEachOutgoing(v0, [&](int32_t h) { this->Scratch.push_back(h); });
+
+  int32_t vl = -1, vr = -1, leftCandidate = -1, rightCandidate = -1, keepCandidate = -1;
+  int removed = 0;
+  if (h01 >= 0)
+  {
+    // Face (v0, v1, vl): ta runs vl -> v1, tb runs v0 -> vl (v1 -> vl after relabelling).
+    const int32_t ta = this->T[Next(h01)];
+    const int32_t tb = this->T[Prev(h01)];
+    vl = this->V[Prev(h01)];
+    leftCandidate = ta >= 0 ? ta : Next(tb);
+    keepCandidate = tb >= 0 ? tb : Next(ta);
+    this->RemoveFace(h01);
+    ++removed;
+  }
+  if (h10 >= 0)
+  {
+    // Face (v1, v0, vr): ta runs vr -> v0 (vr -> v1 after relabelling), tb runs v1 -> vr.
+    const int32_t ta = this->T[Next(h10)];
+    const int32_t tb = this->T[Prev(h10)];
+    vr = this->V[Prev(h10)];
+    rightCandidate = ta >= 0 ? ta : Next(tb);
+    keepCandidate = tb >= 0 ? tb : Next(ta);
+    this->RemoveFace(h10);
+    ++removed;
+  }
+  for (int32_t h : this->Scratch)
+  {
+    if (this->V[h] == v0)
+    {
+      this->V[h] = v1;
+    }
+  }
+  this->Out[v0] = -1;
+  this->Flags[v0] |= Removed;
+
+  this->RepairOutgoing(v1, keepCandidate);
+  if (vl >= 0)
+  {
+    this->RepairOutgoing(vl, leftCandidate);
+  }
+  if (vr >= 0)
+  {
+    this->RepairOutgoing(vr, rightCandidate);
+  }
+  return removed;
+}
+
+} // namespace colordecimation

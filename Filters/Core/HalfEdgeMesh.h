@@ -1,0 +1,162 @@
+/**
+ * @file HalfEdgeMesh.h
+ * @brief Compact triangle connectivity (a corner table) that supports half-edge collapses.
+ *
+ * Half-edge `h` lives in face `h / 3` and runs from corner vertex `V[h]` to `V[Next(h)]`.
+ * `T[h]` is its twin (the same edge in the neighbouring face, running the other way) or -1
+ * on a boundary. Each vertex keeps one outgoing half-edge in `Out`; for a boundary vertex
+ * it is the one whose twin is -1, so that circulating forward from it visits the whole fan.
+ *
+ * Everything is stored in flat arrays (no per-vertex allocation): 24 bytes per triangle and
+ * 5 bytes per vertex.
+ *
+ * Edges used by more than two triangles, edges whose triangles disagree on orientation, and
+ * vertices whose triangles form more than one fan (bow-ties) cannot be represented by twins.
+ * Their vertices are *locked*: they keep all their triangles and never take part in a
+ * collapse, so non-manifold input is carried through unchanged around those places.
+ *
+ * A collapse v0 -> v1 (see CollapseRules.h for when it is allowed) deletes the one or two
+ * triangles on the edge, stitches their outer edges together and moves v0's other corners to
+ * v1:
+ *
+ * @verbatim
+ *          vl                        vl
+ *         /  \                      /  \
+ *        /    \                    /    \
+ *      v0 ---- v1       ==>      ...--- v1
+ *        \    /                    \    /
+ *         \  /                      \  /
+ *          vr                        vr
+ * @endverbatim
+ */
+#ifndef colordecimation_HalfEdgeMesh_h
+#define colordecimation_HalfEdgeMesh_h
+
+#include "vtkColorDecimationModule.h" // for export macro
+
+#include <cstdint>
+#include <vector>
+
+namespace colordecimation
+{
+
+/// Counts of what the connectivity build found in the input.
+struct MeshBuildReport
+{
+  int64_t BoundaryEdges = 0;
+  int64_t NonManifoldEdges = 0;    ///< edges with 3+ triangles or inconsistent orientation
+  int64_t NonManifoldVertices = 0; ///< vertices with more than one fan (bow-ties)
+  int64_t LockedVertices = 0;
+  int64_t IsolatedVertices = 0;
+};
+
+class VTKCOLORDECIMATION_EXPORT HalfEdgeMesh
+{
+public:
+  enum VertexFlag : uint8_t
+  {
+    Locked = 1,  ///< non-manifold neighbourhood: never collapsed
+    Removed = 2, ///< collapsed away
+  };
+
+  /// Build from `numTriangles` triangles given as 3 vertex ids each. Triangles must not
+  /// repeat a vertex (the caller drops those).
+  MeshBuildReport Build(int32_t numVertices, const int32_t* triangles, int32_t numTriangles);
+
+  static int32_t Next(int32_t h) { return (h % 3 == 2) ? h - 2 : h + 1; }
+  static int32_t Prev(int32_t h) { return (h % 3 == 0) ? h + 2 : h - 1; }
+
+  int32_t Origin(int32_t h) const { return this->V[h]; }
+  int32_t Target(int32_t h) const { return this->V[Next(h)]; }
+  int32_t Twin(int32_t h) const { return this->T[h]; }
+  int32_t Outgoing(int32_t v) const { return this->Out[v]; }
+
+  int32_t GetNumberOfVertices() const { return static_cast<int32_t>(this->Out.size()); }
+  int32_t GetNumberOfFaceSlots() const { return static_cast<int32_t>(this->V.size() / 3); }
+  int64_t GetNumberOfLiveFaces() const { return this->LiveFaces; }
+  bool IsFaceAlive(int32_t f) const { return this->V[3 * f] >= 0; }
+  const int32_t* GetFace(int32_t f) const { return this->V.data() + 3 * f; }
+
+  bool IsLocked(int32_t v) const { return (this->Flags[v] & Locked) != 0; }
+  bool IsRemoved(int32_t v) const { return (this->Flags[v] & Removed) != 0; }
+  /// A vertex that still has triangles, is manifold and may take part in collapses.
+  bool IsCollapsible(int32_t v) const { return this->Flags[v] == 0 && this->Out[v] >= 0; }
+  /// Only meaningful for unlocked vertices.
+  bool IsBoundaryVertex(int32_t v) const { return this->Out[v] >= 0 && this->T[this->Out[v]] < 0; }
+
+  /**
+   * Call `f(h)` for every outgoing half-edge of an unlocked vertex, in fan order (for a
+   * boundary vertex starting at its boundary half-edge).
+   */
+  template <typename F>
+  void ForEachOutgoing(int32_t v, F&& f) const
+  {
+    const int32_t start = this->Out[v];
+    if (start < 0)
+    {
+      return;
+    }
+    int32_t h = start;
+    do
+    {
+      f(h);
+      h = this->T[Prev(h)];
+    } while (h >= 0 && h != start);
+  }
+
+  /**
+   * Call `f(u)` for every neighbour of an unlocked vertex, in fan order. A boundary vertex
+   * has one neighbour more than it has outgoing half-edges: the last one is reached through
+   * the incoming boundary half-edge.
+   */
+  template <typename F>
+  void ForEachNeighbor(int32_t v, F&& f) const
+  {
+    const int32_t start = this->Out[v];
+    if (start < 0)
+    {
+      return;
+    }
+    int32_t h = start;
+    do
+    {
+      f(this->Target(h));
+      const int32_t p = Prev(h);
+      h = this->T[p];
+      if (h < 0)
+      {
+        f(this->V[p]);
+      }
+    } while (h >= 0 && h != start);
+  }
+
+  /// Exclude v from every collapse (it and all its triangles' corners stay as they are).
+  void Lock(int32_t v) { this->Flags[v] |= Locked; }
+
+  /// Number of neighbours of an unlocked vertex.
+  int Valence(int32_t v) const;
+
+  /// The half-edge a -> b of an unlocked vertex a, or -1.
+  int32_t FindHalfEdge(int32_t a, int32_t b) const;
+
+  /**
+   * Collapse v0 into v1 (both unlocked, adjacent; legality is the caller's business, see
+   * CollapseRules). Returns the number of triangles removed (1 or 2).
+   */
+  int Collapse(int32_t v0, int32_t v1);
+
+private:
+  void RemoveFace(int32_t h);
+  void RepairOutgoing(int32_t v, int32_t candidate);
+
+  std::vector<int32_t> V;       ///< corner -> vertex; -1 for deleted faces
+  std::vector<int32_t> T;       ///< half-edge -> twin half-edge, -1 on boundaries
+  std::vector<int32_t> Out;     ///< vertex -> one outgoing half-edge, -1 if it has none
+  std::vector<uint8_t> Flags;   ///< VertexFlag bits
+  std::vector<int32_t> Scratch; ///< reused by Collapse
+  int64_t LiveFaces = 0;
+};
+
+} // namespace colordecimation
+
+#endif

@@ -1,0 +1,538 @@
+/*=========================================================================
+
+  Program:   ColorDecimation (a VTK module)
+  Module:    vtkColorHalfEdgeDecimation.cxx
+
+  Distributed under the OSI-approved BSD 3-Clause License; see LICENSE.
+
+=========================================================================*/
+#include "vtkColorHalfEdgeDecimation.h"
+
+#include "Core/Decimator.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolygon.h"
+#include "vtkSmartPointer.h"
+#include "vtkTriangleStrip.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkColorHalfEdgeDecimation);
+
+namespace
+{
+
+/// Triangles of the input with, for each, the id of the input cell it came from.
+struct TriangleSoup
+{
+  std::vector<int32_t> Triangles;
+  std::vector<vtkIdType> SourceCell;
+  vtkIdType Polygons = 0;   ///< cells with more than 3 points that were triangulated
+  vtkIdType Strips = 0;     ///< strips decomposed
+  vtkIdType Degenerate = 0; ///< triangles with a repeated point, dropped
+  vtkIdType BadCells = 0;   ///< cells with fewer than 3 points, dropped
+  bool IdsOutOfRange = false;
+
+  void Add(const vtkIdType* ids, vtkIdType cell, vtkIdType numPoints)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (ids[k] < 0 || ids[k] >= numPoints)
+      {
+        this->IdsOutOfRange = true;
+        return;
+      }
+    }
+    if (ids[0] == ids[1] || ids[1] == ids[2] || ids[0] == ids[2])
+    {
+      ++this->Degenerate;
+      return;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Triangles.push_back(static_cast<int32_t>(ids[k]));
+    }
+    this->SourceCell.push_back(cell);
+  }
+};
+
+void ExtractTriangles(vtkPolyData* input, TriangleSoup& soup)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  const vtkIdType polyOffset = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  soup.Triangles.reserve(3 * static_cast<size_t>(input->GetNumberOfPolys()));
+  soup.SourceCell.reserve(static_cast<size_t>(input->GetNumberOfPolys()));
+
+  vtkNew<vtkPolygon> polygon;
+  vtkNew<vtkIdList> local;
+  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  vtkIdType cell = polyOffset;
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell(), ++cell)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    polys->GetCurrentCell(npts, pts);
+    if (npts == 3)
+    {
+      soup.Add(pts, cell, numPoints);
+      continue;
+    }
+    if (npts < 3)
+    {
+      ++soup.BadCells;
+      continue;
+    }
+    ++soup.Polygons;
+    bool inRange = true;
+    for (vtkIdType k = 0; k < npts; ++k)
+    {
+      inRange = inRange && pts[k] >= 0 && pts[k] < numPoints;
+    }
+    if (!inRange)
+    {
+      soup.IdsOutOfRange = true;
+      continue;
+    }
+    polygon->Initialize(static_cast<int>(npts), pts, input->GetPoints());
+    local->Reset();
+    if (polygon->Triangulate(local) && local->GetNumberOfIds() == 3 * (npts - 2))
+    {
+      for (vtkIdType t = 0; t < local->GetNumberOfIds(); t += 3)
+      {
+        const vtkIdType ids[3] = { pts[local->GetId(t)], pts[local->GetId(t + 1)],
+                                   pts[local->GetId(t + 2)] };
+        soup.Add(ids, cell, numPoints);
+      }
+    }
+    else
+    {
+      for (vtkIdType k = 1; k + 1 < npts; ++k) // fan, when ear cutting gives up
+      {
+        const vtkIdType ids[3] = { pts[0], pts[k], pts[k + 1] };
+        soup.Add(ids, cell, numPoints);
+      }
+    }
+  }
+
+  vtkNew<vtkCellArray> stripTriangles;
+  auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
+  cell = polyOffset + input->GetNumberOfPolys();
+  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell(), ++cell)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    strips->GetCurrentCell(npts, pts);
+    ++soup.Strips;
+    if (npts < 3)
+    {
+      ++soup.BadCells;
+      continue;
+    }
+    stripTriangles->Reset();
+    vtkTriangleStrip::DecomposeStrip(static_cast<int>(npts), pts, stripTriangles);
+    auto tris = vtk::TakeSmartPointer(stripTriangles->NewIterator());
+    for (tris->GoToFirstCell(); !tris->IsDoneWithTraversal(); tris->GoToNextCell())
+    {
+      vtkIdType n3;
+      const vtkIdType* ids;
+      tris->GetCurrentCell(n3, ids);
+      soup.Add(ids, cell, numPoints);
+    }
+  }
+}
+
+/// Points as doubles; false if a coordinate is NaN or infinite.
+bool GatherPoints(vtkPoints* points, std::vector<double>& xyz)
+{
+  const vtkIdType n = points->GetNumberOfPoints();
+  xyz.resize(3 * static_cast<size_t>(n));
+  vtkDataArray* data = points->GetData();
+  if (auto* f = vtkFloatArray::FastDownCast(data))
+  {
+    const float* src = f->GetPointer(0);
+    std::copy(src, src + 3 * n, xyz.begin());
+  }
+  else if (auto* d = vtkDoubleArray::FastDownCast(data))
+  {
+    const double* src = d->GetPointer(0);
+    std::copy(src, src + 3 * n, xyz.begin());
+  }
+  else
+  {
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      points->GetPoint(i, &xyz[3 * i]);
+    }
+  }
+  return std::all_of(xyz.begin(), xyz.end(), [](double x) { return std::isfinite(x); });
+}
+
+/**
+ * RGB in [0,1], 3 floats per point (SPEC.md, Frame). Returns the number of tuples holding a
+ * NaN or infinite value (measured as 0, carried through unchanged).
+ */
+vtkIdType ConvertColors(vtkDataArray* array, std::vector<float>& rgb)
+{
+  const vtkIdType n = array->GetNumberOfTuples();
+  const int comps = array->GetNumberOfComponents();
+  const int used = comps >= 3 ? 3 : 1; // RGB(A...) or a grey value
+  rgb.assign(3 * static_cast<size_t>(n), 0.0f);
+  vtkIdType nonFinite = 0;
+
+  if (auto* uc = vtkUnsignedCharArray::FastDownCast(array))
+  {
+    const unsigned char* src = uc->GetPointer(0);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        rgb[3 * i + k] = src[comps * i + (used == 3 ? k : 0)] / 255.0f;
+      }
+    }
+    return 0;
+  }
+
+  // Range of the components used, finite values only.
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < used; ++k)
+    {
+      const double x = array->GetComponent(i, k);
+      if (std::isfinite(x))
+      {
+        lo = std::min(lo, x);
+        hi = std::max(hi, x);
+      }
+    }
+  }
+  const bool unit = lo >= 0.0 && hi <= 1.0;
+  const double offset = unit ? 0.0 : lo;
+  const double scale = unit ? 1.0 : (hi > lo ? 1.0 / (hi - lo) : 0.0);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    bool finite = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double x = array->GetComponent(i, used == 3 ? k : 0);
+      finite = finite && std::isfinite(x);
+      rgb[3 * i + k] = std::isfinite(x) ? static_cast<float>((x - offset) * scale) : 0.0f;
+    }
+    nonFinite += finite ? 0 : 1;
+  }
+  return nonFinite;
+}
+
+void CopyPassedData(vtkPolyData* input, vtkPolyData* output)
+{
+  output->GetFieldData()->PassData(input->GetFieldData());
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
+  : ErrorMetric(HalfEdgeColor)
+  , TargetReduction(0.9)
+  , PreserveBoundary(false)
+  , MaximumNormalAngle(90.0)
+  , GeometryWeight(1.0)
+  , GenerateOriginalPointIds(true)
+  , OriginalPointIdsArrayName(nullptr)
+  , ActualReduction(0.0)
+  , NumberOfCollapses(0)
+  , StateMemory(0)
+{
+  this->SetOriginalPointIdsArrayName("vtkOriginalPointIds");
+  this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+                               vtkDataSetAttributes::SCALARS);
+}
+
+//------------------------------------------------------------------------------
+vtkColorHalfEdgeDecimation::~vtkColorHalfEdgeDecimation()
+{
+  this->SetOriginalPointIdsArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkColorHalfEdgeDecimation::GetErrorMetricAsString()
+{
+  return this->ErrorMetric == Geometry ? "Geometry" : "HalfEdgeColor";
+}
+
+//------------------------------------------------------------------------------
+int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
+                                            vtkInformationVector** inputVector,
+                                            vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->ActualReduction = 0.0;
+  this->NumberOfCollapses = 0;
+  this->StateMemory = 0;
+  if (!input || !output)
+  {
+    return 0;
+  }
+  CopyPassedData(input, output);
+
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  if (numPoints == 0 || input->GetNumberOfCells() == 0)
+  {
+    vtkDebugMacro(<< "Empty input: empty output.");
+    return 1;
+  }
+  if (input->GetNumberOfVerts() > 0 || input->GetNumberOfLines() > 0)
+  {
+    vtkWarningMacro(<< "Dropping " << input->GetNumberOfVerts() << " vertex and "
+                    << input->GetNumberOfLines() << " line cells: only surfaces are decimated.");
+  }
+  if (numPoints > std::numeric_limits<int32_t>::max())
+  {
+    vtkErrorMacro(<< "Too many points (" << numPoints << "); at most 2^31 - 1 are supported.");
+    return 1;
+  }
+
+  std::vector<double> xyz;
+  if (!GatherPoints(input->GetPoints(), xyz))
+  {
+    vtkErrorMacro(<< "The input has NaN or infinite point coordinates; output is empty.");
+    return 1;
+  }
+
+  TriangleSoup soup;
+  ExtractTriangles(input, soup);
+  if (soup.IdsOutOfRange)
+  {
+    vtkErrorMacro(<< "The input has cells with point ids outside [0, " << numPoints
+                  << "); output is empty.");
+    return 1;
+  }
+  if (soup.Polygons > 0 || soup.Strips > 0)
+  {
+    vtkWarningMacro(<< "Triangulated " << soup.Polygons << " polygons and " << soup.Strips
+                    << " triangle strips.");
+  }
+  if (soup.Degenerate > 0 || soup.BadCells > 0)
+  {
+    vtkWarningMacro(<< "Dropped " << soup.Degenerate << " triangles that repeat a point and "
+                    << soup.BadCells << " polygons with fewer than 3 points.");
+  }
+  const vtkIdType numTriangles = static_cast<vtkIdType>(soup.SourceCell.size());
+  if (numTriangles > std::numeric_limits<int32_t>::max() / 3)
+  {
+    vtkErrorMacro(<< "Too many triangles (" << numTriangles << ").");
+    return 1;
+  }
+  if (numTriangles == 0)
+  {
+    vtkWarningMacro(<< "The input has no triangles: empty output.");
+    return 1;
+  }
+
+  // The colour array.
+  std::vector<float> rgb;
+  const float* colors = nullptr;
+  if (this->ErrorMetric != Geometry)
+  {
+    int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+    vtkDataArray* colorArray = this->GetInputArrayToProcess(0, inputVector, association);
+    if (!colorArray)
+    {
+      vtkWarningMacro(<< "No colour array (point scalars or the array selected with "
+                         "SetInputArrayToProcess): decimating by geometry alone.");
+    }
+    else if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+    {
+      vtkErrorMacro(<< "The colour array '" << (colorArray->GetName() ? colorArray->GetName() : "")
+                    << "' is not a point-data array; output is empty.");
+      return 1;
+    }
+    else if (colorArray->GetNumberOfTuples() != numPoints)
+    {
+      vtkErrorMacro(<< "The colour array '" << (colorArray->GetName() ? colorArray->GetName() : "")
+                    << "' has " << colorArray->GetNumberOfTuples() << " tuples for " << numPoints
+                    << " points; output is empty.");
+      return 1;
+    }
+    else if (colorArray->GetNumberOfComponents() < 1)
+    {
+      vtkErrorMacro(<< "The colour array has no components; output is empty.");
+      return 1;
+    }
+    else
+    {
+      const vtkIdType nonFinite = ConvertColors(colorArray, rgb);
+      if (nonFinite > 0)
+      {
+        vtkWarningMacro(<< nonFinite
+                        << " colour tuples hold NaN or infinite values: they are measured as 0 "
+                           "and carried through unchanged.");
+      }
+      colors = rgb.data();
+    }
+  }
+
+  // Decimate.
+  colordecimation::DecimatorOptions options;
+  options.Metric = this->ErrorMetric == Geometry ? colordecimation::ErrorMetric::Geometry
+                                                 : colordecimation::ErrorMetric::HalfEdgeColor;
+  options.PreserveBoundary = this->PreserveBoundary != 0;
+  options.MaximumNormalAngle = this->MaximumNormalAngle;
+  options.GeometryWeight = this->GeometryWeight;
+
+  colordecimation::DecimatorInput in;
+  in.NumberOfPoints = static_cast<int32_t>(numPoints);
+  in.Points = xyz.data();
+  in.Colors = colors;
+  in.NumberOfTriangles = static_cast<int32_t>(numTriangles);
+  in.Triangles = soup.Triangles.data();
+
+  const auto target = static_cast<int64_t>(
+    std::floor((1.0 - this->TargetReduction) * static_cast<double>(numTriangles)));
+  this->UpdateProgress(0.05);
+  colordecimation::Decimator decimator(options);
+  const colordecimation::DecimatorStatistics stats =
+    decimator.Run(in, target,
+                  [this](double fraction)
+                  {
+                    this->UpdateProgress(0.05 + 0.85 * fraction);
+                    return !this->GetAbortExecute();
+                  });
+  const colordecimation::MeshBuildReport& build = stats.Build;
+  if (build.NonManifoldEdges > 0 || build.NonManifoldVertices > 0)
+  {
+    vtkWarningMacro(<< "The input has " << build.NonManifoldEdges
+                    << " non-manifold or inconsistently oriented edges and "
+                    << build.NonManifoldVertices << " non-manifold vertices; their "
+                    << build.LockedVertices << " vertices are kept as they are.");
+  }
+  this->NumberOfCollapses = stats.Collapses;
+  this->StateMemory = static_cast<vtkIdType>(stats.StateBytes);
+
+  // Output: the surviving triangles on the points they use, in input order.
+  const colordecimation::HalfEdgeMesh& mesh = decimator.GetMesh();
+  std::vector<vtkIdType> newId(numPoints, -1);
+  vtkIdType numOutTriangles = 0;
+  for (int32_t f = 0; f < mesh.GetNumberOfFaceSlots(); ++f)
+  {
+    if (mesh.IsFaceAlive(f))
+    {
+      ++numOutTriangles;
+      const int32_t* tri = mesh.GetFace(f);
+      newId[tri[0]] = newId[tri[1]] = newId[tri[2]] = 0;
+    }
+  }
+  vtkNew<vtkIdList> sourcePoints;
+  vtkNew<vtkIdList> targetPoints;
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    if (newId[i] == 0)
+    {
+      newId[i] = sourcePoints->GetNumberOfIds();
+      targetPoints->InsertNextId(newId[i]);
+      sourcePoints->InsertNextId(i);
+    }
+  }
+  const vtkIdType numOutPoints = sourcePoints->GetNumberOfIds();
+
+  vtkNew<vtkPoints> outPoints;
+  outPoints->SetDataType(input->GetPoints()->GetDataType());
+  outPoints->SetNumberOfPoints(numOutPoints);
+  input->GetPoints()->GetData()->GetTuples(sourcePoints, outPoints->GetData());
+  output->SetPoints(outPoints);
+
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(3 * numOutTriangles);
+  vtkNew<vtkIdList> sourceCells;
+  vtkNew<vtkIdList> targetCells;
+  sourceCells->SetNumberOfIds(numOutTriangles);
+  targetCells->SetNumberOfIds(numOutTriangles);
+  vtkIdType t = 0;
+  for (int32_t f = 0; f < mesh.GetNumberOfFaceSlots(); ++f)
+  {
+    if (mesh.IsFaceAlive(f))
+    {
+      const int32_t* tri = mesh.GetFace(f);
+      for (int k = 0; k < 3; ++k)
+      {
+        connectivity->SetValue(3 * t + k, newId[tri[k]]);
+      }
+      sourceCells->SetId(t, soup.SourceCell[f]);
+      targetCells->SetId(t, t);
+      ++t;
+    }
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(3, connectivity);
+  output->SetPolys(polys);
+
+  vtkPointData* outPD = output->GetPointData();
+  outPD->CopyAllocate(input->GetPointData(), numOutPoints);
+  outPD->CopyData(input->GetPointData(), sourcePoints, targetPoints);
+  if (this->GenerateOriginalPointIds && this->OriginalPointIdsArrayName &&
+      *this->OriginalPointIdsArrayName)
+  {
+    if (input->GetPointData()->HasArray(this->OriginalPointIdsArrayName))
+    {
+      vtkWarningMacro(<< "The input already has a point array named '"
+                      << this->OriginalPointIdsArrayName << "': it is replaced by this filter's.");
+      outPD->RemoveArray(this->OriginalPointIdsArrayName);
+    }
+    vtkNew<vtkIdTypeArray> original;
+    original->SetName(this->OriginalPointIdsArrayName);
+    original->SetNumberOfValues(numOutPoints);
+    for (vtkIdType i = 0; i < numOutPoints; ++i)
+    {
+      original->SetValue(i, sourcePoints->GetId(i));
+    }
+    outPD->AddArray(original);
+  }
+  vtkCellData* outCD = output->GetCellData();
+  outCD->CopyAllocate(input->GetCellData(), numOutTriangles);
+  outCD->CopyData(input->GetCellData(), sourceCells, targetCells);
+
+  this->ActualReduction = 1.0 - static_cast<double>(numOutTriangles) / numTriangles;
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ErrorMetric: " << this->GetErrorMetricAsString() << "\n";
+  os << indent << "TargetReduction: " << this->TargetReduction << "\n";
+  os << indent << "PreserveBoundary: " << (this->PreserveBoundary ? "On" : "Off") << "\n";
+  os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";
+  os << indent << "GeometryWeight: " << this->GeometryWeight << "\n";
+  os << indent << "GenerateOriginalPointIds: " << (this->GenerateOriginalPointIds ? "On" : "Off")
+     << "\n";
+  os << indent << "OriginalPointIdsArrayName: "
+     << (this->OriginalPointIdsArrayName ? this->OriginalPointIdsArrayName : "(none)") << "\n";
+  os << indent << "ActualReduction: " << this->ActualReduction << "\n";
+  os << indent << "NumberOfCollapses: " << this->NumberOfCollapses << "\n";
+  os << indent << "StateMemory: " << this->StateMemory << "\n";
+}

@@ -1,0 +1,175 @@
+/*=========================================================================
+
+  Program:   ColorDecimation (a VTK module)
+  Module:    vtkColorHalfEdgeDecimation.h
+
+  Distributed under the OSI-approved BSD 3-Clause License; see LICENSE.
+
+=========================================================================*/
+/**
+ * @class   vtkColorHalfEdgeDecimation
+ * @brief   reduce the number of triangles of a mesh with vertex colour, keeping shape and colour
+ *
+ * vtkColorHalfEdgeDecimation simplifies a triangle mesh by half-edge collapses: a vertex v0
+ * is merged into a neighbour v1, which stays where it is with its own colour. Collapses are
+ * done cheapest first, by the cost of Kim, Choi and Lee, "Mesh Simplification with Vertex
+ * Color": (1 + quadric error) x (1 + visual importance of v0) x (1 + colour error of the
+ * collapse), measured in a frame where the mean edge length is 1 so that the result does
+ * not depend on the mesh's units.
+ *
+ * Because no vertex is ever moved or blended, every point-data array of the surviving
+ * points is copied bit-exactly (colours, normals, texture coordinates, ids), and an array
+ * (vtkOriginalPointIds by default) maps each output point to its input point. Cell data of
+ * the surviving triangles is copied too, and field data is passed.
+ *
+ * TargetReduction has the meaning it has in vtkQuadricDecimation: the fraction of the input
+ * triangles to remove. ActualReduction reports what was achieved; it can fall short of the
+ * target when no valid collapse is left.
+ *
+ * The colour is the array selected with SetInputArrayToProcess(0, ...) (by default the
+ * active point scalars): unsigned char RGB/RGBA (/255), float or double RGB (used as they are
+ * in [0,1], otherwise scaled by the array's range), other numeric types (scaled by their
+ * range), or a one-component grey value. Alpha is carried through but not measured. Without
+ * a colour array the filter decimates by geometry alone and says so with a warning.
+ *
+ * Collapses keep the surface a 2-manifold where it was one (link condition), never flip a
+ * triangle normal by more than MaximumNormalAngle, never create a degenerate triangle, and
+ * keep the Euler characteristic of closed manifold input. Vertices on non-manifold edges,
+ * bow-tie vertices and vertices of inconsistently oriented triangles are kept, together with
+ * their triangles.
+ *
+ * Input: polygons and triangle strips are triangulated (with a warning); vertices and lines
+ * are dropped (with a warning). Empty input gives empty output. Points with NaN or infinite
+ * coordinates, cell point ids out of range, or a colour array whose tuple count differs
+ * from the number of points are errors: the output is then empty.
+ *
+ * @sa
+ * vtkQuadricDecimation vtkDecimatePro vtkQuadricClustering
+ */
+#ifndef vtkColorHalfEdgeDecimation_h
+#define vtkColorHalfEdgeDecimation_h
+
+#include "vtkColorDecimationModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class VTKCOLORDECIMATION_EXPORT vtkColorHalfEdgeDecimation : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkColorHalfEdgeDecimation* New();
+  vtkTypeMacro(vtkColorHalfEdgeDecimation, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The cost that orders the collapses.
+   * - HalfEdgeColor (default): the paper's (1 + Q)(1 + I)(1 + C).
+   * - Geometry: the quadric error Q alone (colour ignored), for comparison.
+   */
+  enum ErrorMetrics
+  {
+    HalfEdgeColor = 0,
+    Geometry = 1
+  };
+
+  ///@{
+  /**
+   * Set/Get the error metric (see ErrorMetrics). Default HalfEdgeColor.
+   */
+  vtkSetClampMacro(ErrorMetric, int, HalfEdgeColor, Geometry);
+  vtkGetMacro(ErrorMetric, int);
+  void SetErrorMetricToHalfEdgeColor() { this->SetErrorMetric(HalfEdgeColor); }
+  void SetErrorMetricToGeometry() { this->SetErrorMetric(Geometry); }
+  const char* GetErrorMetricAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the desired reduction: the fraction of the input triangles to remove, as in
+   * vtkQuadricDecimation (0.9 leaves 10 % of the triangles). Default 0.9.
+   */
+  vtkSetClampMacro(TargetReduction, double, 0.0, 1.0);
+  vtkGetMacro(TargetReduction, double);
+  ///@}
+
+  ///@{
+  /**
+   * When on, vertices on the mesh boundary are never removed, so open boundaries keep their
+   * exact polyline. When off (default), a boundary vertex may still collapse, but only along
+   * the boundary into a neighbouring boundary vertex.
+   */
+  vtkSetMacro(PreserveBoundary, vtkTypeBool);
+  vtkGetMacro(PreserveBoundary, vtkTypeBool);
+  vtkBooleanMacro(PreserveBoundary, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the largest angle, in degrees, by which a collapse may turn the normal of a
+   * surviving triangle (the flip guard). Default 90; 180 disables it (degenerate triangles
+   * are refused whatever the angle).
+   */
+  vtkSetClampMacro(MaximumNormalAngle, double, 0.0, 180.0);
+  vtkGetMacro(MaximumNormalAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the weight w of the geometric term (Q' = w Q, in mean-edge-length units).
+   * Larger values favour shape over colour. Default 1.
+   */
+  vtkSetClampMacro(GeometryWeight, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(GeometryWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * When on (default), the output gets a vtkIdTypeArray point-data array (named by
+   * OriginalPointIdsArrayName, default "vtkOriginalPointIds") with each output point's id in
+   * the input.
+   */
+  vtkSetMacro(GenerateOriginalPointIds, vtkTypeBool);
+  vtkGetMacro(GenerateOriginalPointIds, vtkTypeBool);
+  vtkBooleanMacro(GenerateOriginalPointIds, vtkTypeBool);
+  vtkSetStringMacro(OriginalPointIdsArrayName);
+  vtkGetStringMacro(OriginalPointIdsArrayName);
+  ///@}
+
+  /**
+   * The reduction achieved by the last execution: 1 - output triangles / input triangles
+   * (input triangles counted after triangulation of polygons and strips).
+   */
+  vtkGetMacro(ActualReduction, double);
+
+  /**
+   * The number of collapses done by the last execution.
+   */
+  vtkGetMacro(NumberOfCollapses, vtkIdType);
+
+  /**
+   * Bytes held by the decimation's own arrays in the last execution (connectivity, frame,
+   * the metric's 48 bytes per vertex, heap); input and output data sets not included.
+   */
+  vtkGetMacro(StateMemory, vtkIdType);
+
+protected:
+  vtkColorHalfEdgeDecimation();
+  ~vtkColorHalfEdgeDecimation() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int ErrorMetric;
+  double TargetReduction;
+  vtkTypeBool PreserveBoundary;
+  double MaximumNormalAngle;
+  double GeometryWeight;
+  vtkTypeBool GenerateOriginalPointIds;
+  char* OriginalPointIdsArrayName;
+  double ActualReduction;
+  vtkIdType NumberOfCollapses;
+  vtkIdType StateMemory;
+
+private:
+  vtkColorHalfEdgeDecimation(const vtkColorHalfEdgeDecimation&) = delete;
+  void operator=(const vtkColorHalfEdgeDecimation&) = delete;
+};
+
+#endif
