@@ -52,7 +52,11 @@ struct TriangleSoup
   vtkIdType Strips = 0;     ///< strips decomposed
   vtkIdType Degenerate = 0; ///< triangles with a repeated point, dropped
   vtkIdType BadCells = 0;   ///< cells with fewer than 3 points, dropped
+  vtkIdType GhostCells = 0; ///< ghost cells (another piece's), left out
   bool IdsOutOfRange = false;
+  /// Per point: non-zero if it must not collapse (used by a ghost cell, or a ghost point).
+  std::vector<uint8_t> Fixed;
+  bool HasFixed = false;
 
   void Add(const vtkIdType* ids, vtkIdType cell, vtkIdType numPoints)
   {
@@ -77,9 +81,48 @@ struct TriangleSoup
   }
 };
 
+/**
+ * Ghost cells belong to a neighbouring piece (distributed data): they are left out, and the
+ * points they share with this piece are fixed, as are ghost (duplicate) points, so that the
+ * decimated pieces still meet without cracks.
+ */
+bool SkipGhostCell(vtkUnsignedCharArray* ghosts, vtkIdType cell, vtkIdType npts,
+                   const vtkIdType* pts, vtkIdType numPoints, TriangleSoup& soup)
+{
+  if (!ghosts ||
+      !(ghosts->GetValue(cell) &
+        (vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL)))
+  {
+    return false;
+  }
+  ++soup.GhostCells;
+  for (vtkIdType k = 0; k < npts; ++k)
+  {
+    if (pts[k] >= 0 && pts[k] < numPoints)
+    {
+      soup.Fixed[pts[k]] = 1;
+      soup.HasFixed = true;
+    }
+  }
+  return true;
+}
+
 void ExtractTriangles(vtkPolyData* input, TriangleSoup& soup)
 {
   const vtkIdType numPoints = input->GetNumberOfPoints();
+  soup.Fixed.assign(numPoints, 0);
+  vtkUnsignedCharArray* cellGhosts = input->GetCellGhostArray();
+  if (vtkUnsignedCharArray* pointGhosts = input->GetPointGhostArray())
+  {
+    for (vtkIdType i = 0; i < numPoints && i < pointGhosts->GetNumberOfValues(); ++i)
+    {
+      if (pointGhosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT)
+      {
+        soup.Fixed[i] = 1;
+        soup.HasFixed = true;
+      }
+    }
+  }
   const vtkIdType polyOffset = input->GetNumberOfVerts() + input->GetNumberOfLines();
   soup.Triangles.reserve(3 * static_cast<size_t>(input->GetNumberOfPolys()));
   soup.SourceCell.reserve(static_cast<size_t>(input->GetNumberOfPolys()));
@@ -93,6 +136,10 @@ void ExtractTriangles(vtkPolyData* input, TriangleSoup& soup)
     vtkIdType npts;
     const vtkIdType* pts;
     polys->GetCurrentCell(npts, pts);
+    if (SkipGhostCell(cellGhosts, cell, npts, pts, numPoints, soup))
+    {
+      continue;
+    }
     if (npts == 3)
     {
       soup.Add(pts, cell, numPoints);
@@ -143,6 +190,10 @@ void ExtractTriangles(vtkPolyData* input, TriangleSoup& soup)
     vtkIdType npts;
     const vtkIdType* pts;
     strips->GetCurrentCell(npts, pts);
+    if (SkipGhostCell(cellGhosts, cell, npts, pts, numPoints, soup))
+    {
+      continue;
+    }
     ++soup.Strips;
     if (npts < 3)
     {
@@ -409,6 +460,11 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   in.Colors = colors;
   in.NumberOfTriangles = static_cast<int32_t>(numTriangles);
   in.Triangles = soup.Triangles.data();
+  in.Fixed = soup.HasFixed ? soup.Fixed.data() : nullptr;
+  if (soup.GhostCells > 0)
+  {
+    vtkDebugMacro(<< "Left out " << soup.GhostCells << " ghost cells; their points are fixed.");
+  }
 
   const auto target = static_cast<int64_t>(
     std::floor((1.0 - this->TargetReduction) * static_cast<double>(numTriangles)));
