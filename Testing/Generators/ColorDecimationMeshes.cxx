@@ -1,0 +1,260 @@
+#include "ColorDecimationMeshes.h"
+
+#include "vtkCellArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkSphereSource.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace colordecimation
+{
+namespace meshes
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+unsigned char ToByte(double x)
+{
+  x = x < 0 ? 0 : (x > 1 ? 1 : x);
+  return static_cast<unsigned char>(std::lround(255.0 * x));
+}
+
+vtkSmartPointer<vtkPolyData> MakePolyData(const std::vector<double>& xyz,
+                                          const std::vector<vtkIdType>& triangles)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(xyz.size() / 3));
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    points->SetPoint(i, &xyz[3 * i]);
+  }
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(static_cast<vtkIdType>(triangles.size()));
+  for (size_t i = 0; i < triangles.size(); ++i)
+  {
+    connectivity->SetValue(static_cast<vtkIdType>(i), triangles[i]);
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(3, connectivity);
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  return mesh;
+}
+} // namespace
+
+void PatternColor(Pattern pattern, const double p[3], unsigned char rgb[3])
+{
+  const double x = p[0], y = p[1], z = p[2];
+  switch (pattern)
+  {
+    case Pattern::SharpRegions:
+    {
+      // Four flat regions split by a wavy border and a plane.
+      static const unsigned char palette[4][3] = {
+        { 200, 30, 30 }, { 30, 160, 60 }, { 40, 70, 200 }, { 240, 220, 40 }
+      };
+      const int a = (y + 0.25 * std::sin(4.0 * x) > 0) ? 1 : 0;
+      const int b = (z > 0.1) ? 2 : 0;
+      for (int k = 0; k < 3; ++k)
+      {
+        rgb[k] = palette[a + b][k];
+      }
+      return;
+    }
+    case Pattern::SmoothGradient:
+      rgb[0] = ToByte(0.5 + 0.5 * std::sin(1.5 * x + 0.3));
+      rgb[1] = ToByte(0.5 + 0.5 * std::sin(1.7 * y + 2.0));
+      rgb[2] = ToByte(0.5 + 0.5 * std::cos(1.3 * z + 0.7 * x));
+      return;
+    case Pattern::FineDetail:
+    {
+      // Thin dark strokes on a light ground: stripes along x and a grid of short bars.
+      const double stripe = std::abs(std::sin(12.0 * Pi * x));
+      const double bars = std::abs(std::sin(9.0 * Pi * y)) * std::abs(std::sin(9.0 * Pi * z));
+      const bool ink = stripe < 0.18 || bars > 0.85;
+      rgb[0] = ink ? 20 : 235;
+      rgb[1] = ink ? 20 : 230;
+      rgb[2] = ink ? 60 : 210;
+      return;
+    }
+    case Pattern::Constant:
+    default:
+      rgb[0] = 180;
+      rgb[1] = 140;
+      rgb[2] = 100;
+      return;
+  }
+}
+
+void ApplyPattern(vtkPolyData* mesh, Pattern pattern)
+{
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("RGB");
+  colors->SetNumberOfComponents(3);
+  colors->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    unsigned char rgb[3];
+    PatternColor(pattern, p, rgb);
+    colors->SetTypedTuple(i, rgb);
+  }
+  mesh->GetPointData()->SetScalars(colors);
+}
+
+vtkSmartPointer<vtkPolyData> Icosphere(int level, Pattern pattern)
+{
+  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+  std::vector<double> xyz = { -1, t,  0,  1, t, 0,  -1, -t, 0,  1, -t, 0, 0,  -1, t,  0,  1, t,
+                              0,  -1, -t, 0, 1, -t, t,  0,  -1, t, 0,  1, -t, 0,  -1, -t, 0, 1 };
+  std::vector<vtkIdType> tris = { 0, 11, 5, 0, 5,  1,  0,  1,  7,  0,  7, 10, 0, 10, 11,
+                                  1, 5,  9, 5, 11, 4,  11, 10, 2,  10, 7, 6,  7, 1,  8,
+                                  3, 9,  4, 3, 4,  2,  3,  2,  6,  3,  6, 8,  3, 8,  9,
+                                  4, 9,  5, 2, 4,  11, 6,  2,  10, 8,  6, 7,  9, 8,  1 };
+  auto normalize = [&xyz](vtkIdType i)
+  {
+    double* p = &xyz[3 * i];
+    const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    p[0] /= r;
+    p[1] /= r;
+    p[2] /= r;
+  };
+  for (vtkIdType i = 0; i < 12; ++i)
+  {
+    normalize(i);
+  }
+  for (int l = 0; l < level; ++l)
+  {
+    std::map<std::pair<vtkIdType, vtkIdType>, vtkIdType> midpoints;
+    auto midpoint = [&](vtkIdType a, vtkIdType b)
+    {
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      auto it = midpoints.find(key);
+      if (it != midpoints.end())
+      {
+        return it->second;
+      }
+      const vtkIdType m = static_cast<vtkIdType>(xyz.size() / 3);
+      for (int k = 0; k < 3; ++k)
+      {
+        xyz.push_back(0.5 * (xyz[3 * a + k] + xyz[3 * b + k]));
+      }
+      normalize(m);
+      midpoints[key] = m;
+      return m;
+    };
+    std::vector<vtkIdType> next;
+    next.reserve(4 * tris.size());
+    for (size_t f = 0; f < tris.size(); f += 3)
+    {
+      const vtkIdType a = tris[f], b = tris[f + 1], c = tris[f + 2];
+      const vtkIdType ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+      const vtkIdType sub[12] = { a, ab, ca, b, bc, ab, c, ca, bc, ab, bc, ca };
+      next.insert(next.end(), sub, sub + 12);
+    }
+    tris.swap(next);
+  }
+  auto mesh = MakePolyData(xyz, tris);
+  ApplyPattern(mesh, pattern);
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> UVSphere(int resolution, Pattern pattern)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(resolution);
+  source->SetPhiResolution(resolution);
+  source->SetRadius(1.0);
+  source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  source->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(source->GetOutput());
+  mesh->GetPointData()->Initialize(); // drop the normals: colour only
+  ApplyPattern(mesh, pattern);
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> UVSphereWithTriangles(long long triangles, Pattern pattern)
+{
+  // 2 r (r - 2) = triangles
+  const int r = static_cast<int>(std::lround(1.0 + std::sqrt(1.0 + triangles / 2.0)));
+  return UVSphere(r < 4 ? 4 : r, pattern);
+}
+
+vtkSmartPointer<vtkPolyData> Torus(int nu, int nv, Pattern pattern)
+{
+  const double R = 1.0, r = 0.35;
+  std::vector<double> xyz;
+  xyz.reserve(3 * static_cast<size_t>(nu) * nv);
+  for (int i = 0; i < nu; ++i)
+  {
+    const double u = 2.0 * Pi * i / nu;
+    for (int j = 0; j < nv; ++j)
+    {
+      const double v = 2.0 * Pi * j / nv;
+      xyz.push_back((R + r * std::cos(v)) * std::cos(u));
+      xyz.push_back((R + r * std::cos(v)) * std::sin(u));
+      xyz.push_back(r * std::sin(v));
+    }
+  }
+  std::vector<vtkIdType> tris;
+  tris.reserve(6 * static_cast<size_t>(nu) * nv);
+  for (int i = 0; i < nu; ++i)
+  {
+    for (int j = 0; j < nv; ++j)
+    {
+      const vtkIdType a = i * nv + j, b = ((i + 1) % nu) * nv + j;
+      const vtkIdType c = ((i + 1) % nu) * nv + (j + 1) % nv, d = i * nv + (j + 1) % nv;
+      const vtkIdType quad[6] = { a, b, c, a, c, d };
+      tris.insert(tris.end(), quad, quad + 6);
+    }
+  }
+  auto mesh = MakePolyData(xyz, tris);
+  ApplyPattern(mesh, pattern);
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> Grid(int nx, int ny, Pattern pattern)
+{
+  std::vector<double> xyz;
+  xyz.reserve(3 * static_cast<size_t>(nx + 1) * (ny + 1));
+  for (int j = 0; j <= ny; ++j)
+  {
+    for (int i = 0; i <= nx; ++i)
+    {
+      const double x = -1.0 + 2.0 * i / nx, y = -1.0 + 2.0 * j / ny;
+      xyz.push_back(x);
+      xyz.push_back(y);
+      xyz.push_back(0.15 * std::sin(2.0 * x) * std::cos(1.5 * y));
+    }
+  }
+  std::vector<vtkIdType> tris;
+  tris.reserve(6 * static_cast<size_t>(nx) * ny);
+  for (int j = 0; j < ny; ++j)
+  {
+    for (int i = 0; i < nx; ++i)
+    {
+      const vtkIdType a = j * (nx + 1) + i, b = a + 1, c = a + nx + 2, d = a + nx + 1;
+      const vtkIdType quad[6] = { a, b, c, a, c, d };
+      tris.insert(tris.end(), quad, quad + 6);
+    }
+  }
+  auto mesh = MakePolyData(xyz, tris);
+  ApplyPattern(mesh, pattern);
+  return mesh;
+}
+
+} // namespace meshes
+} // namespace colordecimation

@@ -1,0 +1,58 @@
+/**
+ * @file ColorDecimationMeshes.h
+ * @brief Coloured test meshes generated in code (no data files needed).
+ *
+ * Every mesh is a vtkPolyData of triangles with an unsigned char "RGB" point array set as
+ * the active scalars. Shapes:
+ * - Icosphere: closed, genus 0, valence 5/6 (subdivided icosahedron), radius 1;
+ * - UVSphere: vtkSphereSource's latitude-longitude sphere (closed, two high-valence poles),
+ *   the benchmark's "coloured sphere";
+ * - Torus: closed, genus 1 (radii 1 and 0.35);
+ * - Grid: an open, gently waved square sheet in [-1,1]^2 with one boundary loop.
+ * Colour patterns are functions of the position (so they are resolution-independent):
+ * - SharpRegions: a few flat-coloured regions with sharp borders;
+ * - SmoothGradient: a smooth colour ramp;
+ * - FineDetail: thin stripes and letter-like strokes, fine colour detail;
+ * - Constant: one colour everywhere.
+ */
+#ifndef ColorDecimationMeshes_h
+#define ColorDecimationMeshes_h
+
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+namespace colordecimation
+{
+namespace meshes
+{
+
+enum class Pattern
+{
+  SharpRegions,
+  SmoothGradient,
+  FineDetail,
+  Constant
+};
+
+/// Colour of a point (x, y, z) for a pattern, in 0..255.
+void PatternColor(Pattern pattern, const double p[3], unsigned char rgb[3]);
+
+/// (Re)colour every point of `mesh` with the pattern, as active "RGB" scalars.
+void ApplyPattern(vtkPolyData* mesh, Pattern pattern);
+
+/// 20 * 4^level triangles.
+vtkSmartPointer<vtkPolyData> Icosphere(int level, Pattern pattern);
+/// vtkSphereSource with theta and phi resolution `resolution`: 2 r (r - 2) triangles.
+vtkSmartPointer<vtkPolyData> UVSphere(int resolution, Pattern pattern);
+/// 2 nu nv triangles.
+vtkSmartPointer<vtkPolyData> Torus(int nu, int nv, Pattern pattern);
+/// 2 nx ny triangles.
+vtkSmartPointer<vtkPolyData> Grid(int nx, int ny, Pattern pattern);
+
+/// A UV sphere with about `triangles` triangles (for benchmarks at a given size).
+vtkSmartPointer<vtkPolyData> UVSphereWithTriangles(long long triangles, Pattern pattern);
+
+} // namespace meshes
+} // namespace colordecimation
+
+#endif
