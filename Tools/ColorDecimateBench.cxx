@@ -1,0 +1,1063 @@
+/**
+ * @file ColorDecimateBench.cxx
+ * @brief color-decimate-bench: time and peak memory of vtkColorHalfEdgeDecimation against
+ * vtkQuadricDecimation (and meshoptimizer, when built with it) on the same meshes, in one
+ * process, plus a scale sweep of generated spheres.
+ *
+ * Run `color-decimate-bench --help` for the options. With --markdown FILE it writes the
+ * whole report (docs/BENCHMARK.md) so that the figures can be regenerated in one command.
+ */
+#include "ColorDecimationMeshes.h"
+#include "MeshIO.h"
+#include "ProcessMemory.h"
+
+#include "vtkColorHalfEdgeDecimation.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkLogger.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkQuadricDecimation.h"
+#include "vtkSmartPointer.h"
+#include "vtkTriangleFilter.h"
+#include "vtkVersion.h"
+
+#if COLORDECIMATION_BENCH_WITH_MESHOPTIMIZER
+#include <meshoptimizer.h>
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <sys/stat.h>
+#include <sys/utsname.h>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+#ifndef COLORDECIMATION_SOURCE_DIR
+#define COLORDECIMATION_SOURCE_DIR "."
+#endif
+#ifndef COLORDECIMATION_BUILD_TYPE
+#define COLORDECIMATION_BUILD_TYPE "unknown"
+#endif
+
+namespace
+{
+using namespace colordecimation::tools;
+namespace meshes = colordecimation::meshes;
+
+const char* const Program = "color-decimate-bench";
+const char* const DefaultRealMesh = "shared/data/redkitchen_tsdf_7mm.ply";
+const int DefaultSphereResolution = 700; // 2 * 700 * 698 = 977,200 triangles
+
+enum Method
+{
+  OursColor = 0,
+  OursGeometry,
+  QuadricAttributes,
+  QuadricGeometry,
+  MeshOptimizer,
+  NumberOfMethods
+};
+
+const char* MethodName(int method)
+{
+  switch (method)
+  {
+    case OursColor:
+      return "vtkColorHalfEdgeDecimation, HalfEdgeColor";
+    case OursGeometry:
+      return "vtkColorHalfEdgeDecimation, Geometry";
+    case QuadricAttributes:
+      return "vtkQuadricDecimation, AttributeErrorMetric on (colour as scalars)";
+    case QuadricGeometry:
+      return "vtkQuadricDecimation, AttributeErrorMetric off";
+    case MeshOptimizer:
+      return "meshoptimizer meshopt_simplify (geometry only)";
+    default:
+      return "?";
+  }
+}
+
+const char* MethodShortName(int method)
+{
+  switch (method)
+  {
+    case OursColor:
+      return "HalfEdgeColor";
+    case OursGeometry:
+      return "Geometry";
+    case QuadricAttributes:
+      return "vtkQD attr on";
+    case QuadricGeometry:
+      return "vtkQD attr off";
+    case MeshOptimizer:
+      return "meshopt";
+    default:
+      return "?";
+  }
+}
+
+struct Options
+{
+  std::vector<std::string> Meshes;
+  double Reduction = 0.9;
+  std::vector<long long> Sizes = { 100000, 250000, 1000000, 4000000 };
+  bool SizesGiven = false;
+  bool NoSweep = false;
+  bool NoDefaultMeshes = false;
+  int Repeat = 1;
+  long long QuadricMax = 1000000;
+  bool NoQuadric = false;
+  std::string Markdown;
+  std::string Array;
+  std::string CommandLine;
+};
+
+struct RunResult
+{
+  bool Ran = false;
+  std::string Skipped; // why it did not run
+  double Seconds = 0;  // median over the repeats
+  long long OutputTriangles = 0;
+  long long PeakBytes = -1; // largest over the repeats, above the resident memory before
+  long long StateBytes = -1;
+  bool PeakReset = true;
+};
+
+struct CaseResult
+{
+  std::string Name;
+  std::string Description;
+  long long Points = 0;
+  long long Triangles = 0;
+  RunResult Runs[NumberOfMethods];
+};
+
+void PrintHelp(std::ostream& os)
+{
+  os << "Usage: color-decimate-bench [MESH ...] [options]\n"
+        "\n"
+        "Times vtkColorHalfEdgeDecimation (HalfEdgeColor and Geometry metrics) against\n"
+        "vtkQuadricDecimation with AttributeErrorMetric on (the colour array as scalars) and\n"
+        "off"
+#if COLORDECIMATION_BENCH_WITH_MESHOPTIMIZER
+        ", and meshoptimizer's meshopt_simplify (geometry only, for reference)"
+#endif
+        ", in one process on the same input. For each run it prints the filter's own time,\n"
+        "the output triangles, vtkQuadricDecimation's time divided by the run's time, and the\n"
+        "peak resident memory of the run above the memory before it (VmHWM after resetting it\n"
+        "through /proc/self/clear_refs).\n"
+        "\n"
+        "MESH    mesh files (.ply, .vtp, .vtu, .vtk, .obj, .stl) or demo: specifications (see\n"
+        "        color-decimate --help). Without MESH: ../shared/data/redkitchen_tsdf_7mm.ply\n"
+        "        beside the source tree or the working directory (when present) and the\n"
+        "        977,200-triangle coloured UV sphere (UVSphere(700), SharpRegions), then the\n"
+        "        scale sweep.\n"
+        "\n"
+        "Options:\n"
+        "  --reduction R        fraction of triangles to remove (default 0.9)\n"
+        "  --sizes LIST         triangle counts of the scale sweep of generated UV spheres,\n"
+        "                       e.g. 100k,250k,1M,4M (the default); the sweep runs by default\n"
+        "                       only when no MESH is given\n"
+        "  --no-sweep           no scale sweep\n"
+        "  --no-default-meshes  without MESH, skip the real mesh and the 977k sphere\n"
+        "  --repeat N           runs per method and mesh; the median time is reported\n"
+        "                       (default 1)\n"
+        "  --quadric-max N      in the sweep, run vtkQuadricDecimation only up to N input\n"
+        "                       triangles (default 1M; 0 = no limit). Given meshes always run it.\n"
+        "  --no-quadric         skip vtkQuadricDecimation everywhere\n"
+        "  --array NAME         colour point array (default: the active scalars)\n"
+        "  --markdown FILE      also write the report as Markdown (e.g. docs/BENCHMARK.md)\n"
+        "  -h, --help           show this help\n";
+}
+
+bool ParseCount(const std::string& text, long long& value)
+{
+  std::string t = text;
+  double scale = 1;
+  if (!t.empty() && (t.back() == 'k' || t.back() == 'K'))
+  {
+    scale = 1e3;
+    t.pop_back();
+  }
+  else if (!t.empty() && (t.back() == 'm' || t.back() == 'M'))
+  {
+    scale = 1e6;
+    t.pop_back();
+  }
+  if (t.empty())
+  {
+    return false;
+  }
+  char* end = nullptr;
+  const double v = std::strtod(t.c_str(), &end);
+  if (end != t.c_str() + t.size() || !(v >= 0) || v * scale > 1e10)
+  {
+    return false;
+  }
+  value = static_cast<long long>(std::llround(v * scale));
+  return true;
+}
+
+bool ParseOptions(int argc, char* argv[], Options& options, std::string& error, bool& help)
+{
+  for (int i = 0; i < argc; ++i)
+  {
+    options.CommandLine += (i ? " " : "") + std::string(argv[i]);
+  }
+  for (int i = 1; i < argc; ++i)
+  {
+    std::string arg = argv[i];
+    std::string value;
+    bool inlineValue = false;
+    if (arg.compare(0, 2, "--") == 0 && arg.find('=') != std::string::npos)
+    {
+      value = arg.substr(arg.find('=') + 1);
+      arg = arg.substr(0, arg.find('='));
+      inlineValue = true;
+    }
+    auto take = [&]() -> bool
+    {
+      if (inlineValue)
+      {
+        return true;
+      }
+      if (i + 1 >= argc)
+      {
+        error = "option " + arg + " needs a value";
+        return false;
+      }
+      value = argv[++i];
+      return true;
+    };
+    if (arg == "-h" || arg == "--help")
+    {
+      help = true;
+      return true;
+    }
+    else if (arg == "--reduction")
+    {
+      if (!take())
+      {
+        return false;
+      }
+      char* end = nullptr;
+      options.Reduction = std::strtod(value.c_str(), &end);
+      if (value.empty() || end != value.c_str() + value.size() || !(options.Reduction >= 0) ||
+          options.Reduction > 1)
+      {
+        error = "--reduction must be a number from 0 to 1 (got '" + value + "')";
+        return false;
+      }
+    }
+    else if (arg == "--sizes")
+    {
+      if (!take())
+      {
+        return false;
+      }
+      options.Sizes.clear();
+      options.SizesGiven = true;
+      std::stringstream list(value);
+      std::string item;
+      while (std::getline(list, item, ','))
+      {
+        long long n = 0;
+        if (!ParseCount(item, n) || n < 8)
+        {
+          error = "--sizes wants triangle counts such as 100k,1M (got '" + item + "')";
+          return false;
+        }
+        options.Sizes.push_back(n);
+      }
+      if (options.Sizes.empty())
+      {
+        error = "--sizes needs at least one size (or use --no-sweep)";
+        return false;
+      }
+    }
+    else if (arg == "--no-sweep")
+    {
+      options.NoSweep = true;
+    }
+    else if (arg == "--no-default-meshes")
+    {
+      options.NoDefaultMeshes = true;
+    }
+    else if (arg == "--repeat")
+    {
+      if (!take())
+      {
+        return false;
+      }
+      long long n = 0;
+      if (!ParseCount(value, n) || n < 1 || n > 1000)
+      {
+        error = "--repeat must be a whole number from 1 to 1000 (got '" + value + "')";
+        return false;
+      }
+      options.Repeat = static_cast<int>(n);
+    }
+    else if (arg == "--quadric-max")
+    {
+      if (!take())
+      {
+        return false;
+      }
+      if (!ParseCount(value, options.QuadricMax))
+      {
+        error = "--quadric-max must be a triangle count such as 1M (got '" + value + "')";
+        return false;
+      }
+    }
+    else if (arg == "--no-quadric")
+    {
+      options.NoQuadric = true;
+    }
+    else if (arg == "--markdown")
+    {
+      if (!take())
+      {
+        return false;
+      }
+      options.Markdown = value;
+    }
+    else if (arg == "--array")
+    {
+      if (!take())
+      {
+        return false;
+      }
+      options.Array = value;
+    }
+    else if (arg.size() > 1 && arg[0] == '-' && arg != "--demo")
+    {
+      error = "unknown option '" + arg + "'";
+      return false;
+    }
+    else
+    {
+      options.Meshes.push_back(arg);
+    }
+  }
+  return true;
+}
+
+bool FileExists(const std::string& path)
+{
+  struct stat info;
+  return ::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+}
+
+std::string Thousands(long long value)
+{
+  std::string digits = std::to_string(value < 0 ? -value : value);
+  std::string out;
+  for (size_t i = 0; i < digits.size(); ++i)
+  {
+    if (i > 0 && (digits.size() - i) % 3 == 0)
+    {
+      out += ',';
+    }
+    out += digits[i];
+  }
+  return value < 0 ? "-" + out : out;
+}
+
+std::string Format(const char* format, double value)
+{
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), format, value);
+  return buffer;
+}
+
+std::string MiB(long long bytes)
+{
+  return bytes < 0 ? std::string("?") : Format("%.1f", bytes / (1024.0 * 1024.0));
+}
+
+std::string SizeLabel(long long n)
+{
+  if (n >= 1000000 && n % 100000 == 0)
+  {
+    return Format(n % 1000000 == 0 ? "%.0fM" : "%.1fM", n / 1e6);
+  }
+  if (n >= 1000 && n % 1000 == 0)
+  {
+    return Format("%.0fk", n / 1e3);
+  }
+  return Thousands(n);
+}
+
+double Median(std::vector<double> values)
+{
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+//------------------------------------------------------------------------------
+// One run of each method. Each returns the filter's own time; the probe around it measures
+// the peak memory; everything the run allocated is freed before it returns.
+
+struct Single
+{
+  double Seconds = 0;
+  long long OutputTriangles = 0;
+  long long StateBytes = -1;
+  bool Ok = true;
+  std::string Error;
+};
+
+Single RunOurs(vtkPolyData* mesh, int metric, double reduction)
+{
+  Single result;
+  MessageCatcher::Scope quiet; // the filter's warnings (e.g. no colours) are not timing data
+  vtkNew<vtkColorHalfEdgeDecimation> filter;
+  filter->SetInputData(mesh);
+  filter->SetTargetReduction(reduction);
+  filter->SetErrorMetric(metric);
+  const auto start = std::chrono::steady_clock::now();
+  filter->Update();
+  result.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.OutputTriangles = CountTriangles(filter->GetOutput());
+  result.StateBytes = filter->GetStateMemory();
+  if (!quiet.Get()->Errors.empty())
+  {
+    result.Ok = false;
+    result.Error = quiet.Get()->FirstError();
+  }
+  return result;
+}
+
+Single RunQuadric(vtkPolyData* mesh, bool attributes, double reduction)
+{
+  Single result;
+  MessageCatcher::Scope quiet;
+  vtkNew<vtkQuadricDecimation> filter;
+  filter->SetInputData(mesh);
+  filter->SetTargetReduction(reduction);
+  filter->SetAttributeErrorMetric(attributes);
+  filter->SetScalarsAttribute(attributes);
+  filter->SetVectorsAttribute(false);
+  filter->SetNormalsAttribute(false);
+  filter->SetTCoordsAttribute(false);
+  filter->SetTensorsAttribute(false);
+  const auto start = std::chrono::steady_clock::now();
+  filter->Update();
+  result.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.OutputTriangles = CountTriangles(filter->GetOutput());
+  if (!quiet.Get()->Errors.empty())
+  {
+    result.Ok = false;
+    result.Error = quiet.Get()->FirstError();
+  }
+  return result;
+}
+
+#if COLORDECIMATION_BENCH_WITH_MESHOPTIMIZER
+/// The timed part: copying the points to float and the ids to 32 bits (what a VTK user has
+/// to do first) and meshopt_simplify; no vtkPolyData is built from the result.
+Single RunMeshOptimizer(vtkPolyData* mesh, double reduction)
+{
+  Single result;
+  const auto start = std::chrono::steady_clock::now();
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  std::vector<float> positions(3 * static_cast<size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    positions[3 * i] = static_cast<float>(p[0]);
+    positions[3 * i + 1] = static_cast<float>(p[1]);
+    positions[3 * i + 2] = static_cast<float>(p[2]);
+  }
+  std::vector<unsigned int> indices;
+  indices.reserve(3 * static_cast<size_t>(mesh->GetNumberOfPolys()));
+  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    it->GetCurrentCell(npts, pts);
+    if (npts == 3)
+    {
+      indices.insert(indices.end(),
+                     { static_cast<unsigned int>(pts[0]), static_cast<unsigned int>(pts[1]),
+                       static_cast<unsigned int>(pts[2]) });
+    }
+  }
+  const size_t triangles = indices.size() / 3;
+  const size_t target = 3 * static_cast<size_t>(std::llround(triangles * (1.0 - reduction)));
+  std::vector<unsigned int> simplified(indices.size());
+  float error = 0;
+  // target_error 1 = 100 % of the mesh extent: no error bound, stop at the triangle target.
+  const size_t count =
+    meshopt_simplify(simplified.data(), indices.data(), indices.size(), positions.data(),
+                     static_cast<size_t>(n), 3 * sizeof(float), target, 1.0f, 0, &error);
+  result.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.OutputTriangles = static_cast<long long>(count / 3);
+  return result;
+}
+#endif
+
+bool MethodAvailable(int method)
+{
+#if COLORDECIMATION_BENCH_WITH_MESHOPTIMIZER
+  return method >= 0 && method < NumberOfMethods;
+#else
+  return method >= 0 && method < MeshOptimizer;
+#endif
+}
+
+RunResult Measure(int method, vtkPolyData* mesh, const Options& options, const std::string& name)
+{
+  RunResult result;
+  std::vector<double> times;
+  for (int r = 0; r < options.Repeat; ++r)
+  {
+    std::fprintf(
+      stderr, "[bench] %s: %s%s ...", name.c_str(), MethodName(method),
+      options.Repeat > 1
+        ? (" (run " + std::to_string(r + 1) + "/" + std::to_string(options.Repeat) + ")").c_str()
+        : "");
+    std::fflush(stderr);
+    Single single;
+    long long peak = -1;
+    bool reset = true;
+    {
+      PeakMemoryProbe probe;
+      switch (method)
+      {
+        case OursColor:
+          single = RunOurs(mesh, vtkColorHalfEdgeDecimation::HalfEdgeColor, options.Reduction);
+          break;
+        case OursGeometry:
+          single = RunOurs(mesh, vtkColorHalfEdgeDecimation::Geometry, options.Reduction);
+          break;
+        case QuadricAttributes:
+          single = RunQuadric(mesh, true, options.Reduction);
+          break;
+        case QuadricGeometry:
+          single = RunQuadric(mesh, false, options.Reduction);
+          break;
+#if COLORDECIMATION_BENCH_WITH_MESHOPTIMIZER
+        case MeshOptimizer:
+          single = RunMeshOptimizer(mesh, options.Reduction);
+          break;
+#endif
+        default:
+          break;
+      }
+      peak = probe.PeakAboveBaseline();
+      reset = probe.PeakWasReset();
+    }
+    std::fprintf(stderr, " %.3f s\n", single.Seconds);
+    if (!single.Ok)
+    {
+      std::fprintf(stderr, "[bench] %s: %s failed: %s\n", name.c_str(), MethodName(method),
+                   single.Error.c_str());
+      result.Skipped = "failed: " + single.Error;
+      return result;
+    }
+    times.push_back(single.Seconds);
+    result.OutputTriangles = single.OutputTriangles;
+    result.StateBytes = single.StateBytes;
+    result.PeakBytes = std::max(result.PeakBytes, peak);
+    result.PeakReset = result.PeakReset && reset;
+  }
+  result.Ran = true;
+  result.Seconds = Median(times);
+  return result;
+}
+
+/// The same triangles for every method: polygons and strips are triangulated once here.
+vtkSmartPointer<vtkPolyData> Triangulated(vtkPolyData* mesh)
+{
+  vtkCellArray* polys = mesh->GetPolys();
+  const bool pure = mesh->GetNumberOfStrips() == 0 && mesh->GetNumberOfVerts() == 0 &&
+    mesh->GetNumberOfLines() == 0 &&
+    (polys->GetNumberOfCells() == 0 || polys->IsHomogeneous() == 3);
+  if (pure)
+  {
+    return mesh;
+  }
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(mesh);
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  triangles->Update();
+  vtkSmartPointer<vtkPolyData> result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(triangles->GetOutput());
+  return result;
+}
+
+CaseResult RunCase(const std::string& name, const std::string& description, vtkPolyData* mesh,
+                   const Options& options, bool runQuadric)
+{
+  CaseResult result;
+  result.Name = name;
+  result.Description = description;
+  result.Points = mesh->GetNumberOfPoints();
+  result.Triangles = CountTriangles(mesh);
+  for (int method = 0; method < NumberOfMethods; ++method)
+  {
+    if (!MethodAvailable(method))
+    {
+      result.Runs[method].Skipped = "not built (meshoptimizer not found)";
+      continue;
+    }
+    if ((method == QuadricAttributes || method == QuadricGeometry) && !runQuadric)
+    {
+      result.Runs[method].Skipped = "skipped";
+      continue;
+    }
+    result.Runs[method] = Measure(method, mesh, options, name);
+  }
+  return result;
+}
+
+//------------------------------------------------------------------------------
+// Report.
+
+std::string Ratio(const RunResult& quadric, const RunResult& run)
+{
+  if (!quadric.Ran || !run.Ran || run.Seconds <= 0)
+  {
+    return "—";
+  }
+  return Format("%.1f", quadric.Seconds / run.Seconds);
+}
+
+std::string CaseTable(const CaseResult& c, double reduction)
+{
+  std::ostringstream os;
+  os << "### " << c.Name << "\n\n"
+     << c.Description << ": " << Thousands(c.Points) << " points, " << Thousands(c.Triangles)
+     << " triangles; target reduction " << Format("%g", reduction) << ".\n\n";
+  os << "| method | seconds | output triangles | reduction | vtkQD attr on ÷ this | "
+        "vtkQD attr off ÷ this | peak memory (MiB) | decimation state (MiB) |\n"
+     << "|---|--:|--:|--:|--:|--:|--:|--:|\n";
+  for (int m = 0; m < NumberOfMethods; ++m)
+  {
+    const RunResult& r = c.Runs[m];
+    if (m == MeshOptimizer && !MethodAvailable(m))
+    {
+      continue;
+    }
+    os << "| " << MethodName(m) << " | ";
+    if (!r.Ran)
+    {
+      os << r.Skipped << " | | | | | | |\n";
+      continue;
+    }
+    os << Format("%.3f", r.Seconds) << " | " << Thousands(r.OutputTriangles) << " | "
+       << Format("%.4f", c.Triangles ? 1.0 - double(r.OutputTriangles) / c.Triangles : 0.0) << " | "
+       << Ratio(c.Runs[QuadricAttributes], r) << " | " << Ratio(c.Runs[QuadricGeometry], r) << " | "
+       << MiB(r.PeakBytes) << (r.PeakReset ? "" : " (process peak)") << " | "
+       << (r.StateBytes >= 0 ? MiB(r.StateBytes) : std::string("—")) << " |\n";
+  }
+  return os.str();
+}
+
+std::string SweepTable(const std::vector<CaseResult>& sweep)
+{
+  std::ostringstream os;
+  os << "| input triangles |";
+  const int methods[] = { OursColor, OursGeometry, QuadricAttributes, QuadricGeometry,
+                          MeshOptimizer };
+  for (int m : methods)
+  {
+    if (MethodAvailable(m))
+    {
+      os << " " << MethodShortName(m) << " s | " << MethodShortName(m) << " ns/triangle |";
+    }
+  }
+  os << " HalfEdgeColor peak (MiB) | HalfEdgeColor peak (bytes/triangle) |\n|--:|";
+  for (int m : methods)
+  {
+    if (MethodAvailable(m))
+    {
+      os << "--:|--:|";
+    }
+  }
+  os << "--:|--:|\n";
+  for (const CaseResult& c : sweep)
+  {
+    os << "| " << Thousands(c.Triangles) << " |";
+    for (int m : methods)
+    {
+      if (!MethodAvailable(m))
+      {
+        continue;
+      }
+      const RunResult& r = c.Runs[m];
+      if (!r.Ran)
+      {
+        os << " — | — |";
+        continue;
+      }
+      os << " " << Format("%.3f", r.Seconds) << " | "
+         << Format("%.0f", 1e9 * r.Seconds / std::max<long long>(1, c.Triangles)) << " |";
+    }
+    const RunResult& ours = c.Runs[OursColor];
+    os << " " << (ours.Ran ? MiB(ours.PeakBytes) : "—") << " | "
+       << (ours.Ran && ours.PeakBytes >= 0
+             ? Format("%.0f", double(ours.PeakBytes) / std::max<long long>(1, c.Triangles))
+             : "—")
+       << " |\n";
+  }
+  return os.str();
+}
+
+std::string ReadFirstLine(const char* command)
+{
+  std::string line;
+  if (std::FILE* pipe = popen(command, "r"))
+  {
+    char buffer[256];
+    if (std::fgets(buffer, sizeof(buffer), pipe))
+    {
+      line = buffer;
+    }
+    pclose(pipe);
+  }
+  while (!line.empty() && (line.back() == '\n' || line.back() == '\r'))
+  {
+    line.pop_back();
+  }
+  return line;
+}
+
+std::string MachineDescription()
+{
+  std::string cpu = "unknown CPU";
+  long long memKb = 0;
+  {
+    std::ifstream info("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(info, line))
+    {
+      if (line.compare(0, 10, "model name") == 0 && line.find(':') != std::string::npos)
+      {
+        cpu = line.substr(line.find(':') + 2);
+        break;
+      }
+    }
+  }
+  {
+    std::ifstream info("/proc/meminfo");
+    std::string key;
+    while (info >> key)
+    {
+      if (key == "MemTotal:")
+      {
+        info >> memKb;
+        break;
+      }
+      std::string rest;
+      std::getline(info, rest);
+    }
+  }
+  std::ostringstream os;
+  os << cpu << ", " << std::thread::hardware_concurrency() << " logical cores";
+  if (memKb > 0)
+  {
+    os << ", " << Format("%.0f", memKb / (1024.0 * 1024.0)) << " GiB RAM";
+  }
+  struct utsname name;
+  if (uname(&name) == 0)
+  {
+    os << ", " << name.sysname << " " << name.release << " " << name.machine;
+  }
+  return os.str();
+}
+
+/// " (in DIR)" for the current working directory, or "".
+std::string WorkingDirectory()
+{
+  char buffer[4096];
+  if (getcwd(buffer, sizeof(buffer)))
+  {
+    return std::string(" (in `") + buffer + "`)";
+  }
+  return "";
+}
+
+/// The 1-, 5- and 15-minute load averages ("0.12 0.30 0.25"), or "?".
+std::string LoadAverage()
+{
+  std::ifstream file("/proc/loadavg");
+  std::string one, five, fifteen;
+  if (file >> one >> five >> fifteen)
+  {
+    return one + " " + five + " " + fifteen;
+  }
+  return "?";
+}
+
+std::string Report(const Options& options, const std::vector<CaseResult>& cases,
+                   const std::vector<CaseResult>& sweep, const std::string& date,
+                   double totalSeconds, const std::string& loadBefore, const std::string& loadAfter)
+{
+  std::ostringstream os;
+  os << "# Benchmark: vtkColorHalfEdgeDecimation against vtkQuadricDecimation\n\n"
+     << "This file is written by `color-decimate-bench --markdown FILE` "
+        "(Tools/ColorDecimateBench.cxx); rerun the command below to regenerate it.\n\n"
+     << "- Command: `" << options.CommandLine << "`" << WorkingDirectory() << "\n"
+     << "- Date: " << date << "; whole run " << Format("%.0f", totalSeconds) << " s\n"
+     << "- Machine: " << MachineDescription() << "\n"
+     << "- Load average (1, 5, 15 min): " << loadBefore << " before, " << loadAfter
+     << " after (other work on the machine slows the runs down)\n"
+     << "- VTK " << vtkVersion::GetVTKVersion() << "; build type " << COLORDECIMATION_BUILD_TYPE
+#ifdef NDEBUG
+     << " (NDEBUG)"
+#else
+     << " (assertions on: timings are not representative)"
+#endif
+#if defined(__clang__)
+     << "; clang " << __clang_major__ << "." << __clang_minor__
+#elif defined(__GNUC__)
+     << "; GCC " << __GNUC__ << "." << __GNUC_MINOR__
+#endif
+#if COLORDECIMATION_BENCH_WITH_MESHOPTIMIZER
+     << "; meshoptimizer " << MESHOPTIMIZER_VERSION / 1000 << "."
+     << (MESHOPTIMIZER_VERSION % 1000) / 10
+#else
+     << "; meshoptimizer not built in"
+#endif
+     << "\n";
+  const std::string commit =
+    ReadFirstLine("git -C \"" COLORDECIMATION_SOURCE_DIR "\" log -1 --format='%h %s' 2>/dev/null");
+  if (!commit.empty())
+  {
+    const std::string dirty = ReadFirstLine("git -C \"" COLORDECIMATION_SOURCE_DIR
+                                            "\" status --porcelain --untracked-files=no "
+                                            "-- Filters 2>/dev/null");
+    os << "- Source: commit `" << commit << "`"
+       << (dirty.empty() ? "" : " with uncommitted changes in Filters/") << "\n";
+  }
+  os << "- Repeats: " << options.Repeat << " run(s) per method and mesh"
+     << (options.Repeat > 1 ? ", median time, largest peak" : "") << "\n\n";
+
+  os << "## What is measured\n\n"
+        "- Every method runs in this one process on the very same vtkPolyData (triangles; "
+        "polygons and strips would be triangulated once beforehand), one after the other.\n"
+        "- *seconds*: the filter's own time, `Update()` only (reading and generating the mesh "
+        "are not counted). For meshoptimizer: copying the points to float and the ids to 32 "
+        "bits, then `meshopt_simplify` (target error 1, i.e. unbounded, so that it stops at "
+        "the triangle target; no vtkPolyData is built from its result).\n"
+        "- *vtkQD attr on ÷ this*, *vtkQD attr off ÷ this*: vtkQuadricDecimation's time "
+        "(AttributeErrorMetric on with the colour array as the only attribute, resp. off) "
+        "divided by the row's time: how many times faster the row is.\n"
+        "- *peak memory*: before each run the heap is trimmed (`malloc_trim`), the resident "
+        "size is read (VmRSS) and the high-water mark is reset (writing `5` to "
+        "`/proc/self/clear_refs`); after the run, VmHWM minus that baseline. It counts what "
+        "the run allocated at its peak, output included, input excluded.\n"
+        "- *decimation state*: vtkColorHalfEdgeDecimation::GetStateMemory(), the bytes of "
+        "its own arrays (connectivity, metric, heap).\n"
+        "- *ns/triangle* in the sweep: seconds divided by the input triangles; flat means "
+        "linear-time (n log n shows as a slow rise).\n\n";
+
+  if (!cases.empty())
+  {
+    os << "## Meshes\n\n";
+    for (const CaseResult& c : cases)
+    {
+      os << CaseTable(c, options.Reduction) << "\n";
+    }
+  }
+  if (!sweep.empty())
+  {
+    os << "## Scale sweep (coloured UV spheres, SharpRegions)\n\n"
+       << "Target reduction " << Format("%g", options.Reduction) << "; vtkQuadricDecimation ";
+    if (options.NoQuadric)
+    {
+      os << "not run.\n\n";
+    }
+    else if (options.QuadricMax > 0)
+    {
+      os << "only up to " << Thousands(options.QuadricMax) << " input triangles.\n\n";
+    }
+    else
+    {
+      os << "at every size.\n\n";
+    }
+    os << SweepTable(sweep) << "\n";
+  }
+  return os.str();
+}
+
+std::string Now()
+{
+  const std::time_t t = std::time(nullptr);
+  char buffer[64];
+  std::strftime(buffer, sizeof(buffer), "%Y-%m-%d %H:%M %Z", std::localtime(&t));
+  return buffer;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  // VTK's messages are caught and reported in one line (MessageCatcher); its logger would
+  // print them to stderr a second time, with timestamps.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  Options options;
+  std::string error;
+  bool help = false;
+  if (!ParseOptions(argc, argv, options, error, help))
+  {
+    std::cerr << Program << ": " << error << "\nTry 'color-decimate-bench --help'." << std::endl;
+    return 2;
+  }
+  if (help)
+  {
+    PrintHelp(std::cout);
+    return 0;
+  }
+  if (!options.Markdown.empty())
+  {
+    std::ofstream probe(options.Markdown, std::ios::app);
+    if (!probe)
+    {
+      std::cerr << Program << ": cannot write '" << options.Markdown << "'" << std::endl;
+      return 1;
+    }
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const std::string date = Now();
+  const std::string loadBefore = LoadAverage();
+
+  // The meshes: given ones, or the defaults.
+  struct Input
+  {
+    std::string Name;   // shown in the table title
+    std::string Source; // path or demo spec, or "" for the default sphere
+  };
+  std::vector<Input> inputs;
+  if (!options.Meshes.empty())
+  {
+    for (const std::string& m : options.Meshes)
+    {
+      inputs.push_back({ m, m });
+    }
+  }
+  else if (!options.NoDefaultMeshes)
+  {
+    const std::string candidates[] = { std::string(COLORDECIMATION_SOURCE_DIR) + "/../" +
+                                         DefaultRealMesh,
+                                       std::string("../") + DefaultRealMesh };
+    for (const std::string& path : candidates)
+    {
+      if (FileExists(path))
+      {
+        inputs.push_back({ "redkitchen_tsdf_7mm.ply", path });
+        break;
+      }
+    }
+    if (inputs.empty())
+    {
+      std::fprintf(stderr, "[bench] ../%s not found: skipped\n", DefaultRealMesh);
+    }
+    inputs.push_back({ "Coloured UV sphere", "" });
+  }
+  const bool sweepOn = !options.NoSweep && (options.Meshes.empty() || options.SizesGiven);
+
+  std::vector<CaseResult> cases;
+  for (const Input& input : inputs)
+  {
+    std::string description;
+    vtkSmartPointer<vtkPolyData> mesh;
+    if (input.Source.empty())
+    {
+      mesh = meshes::UVSphere(DefaultSphereResolution, meshes::Pattern::SharpRegions);
+      description = "UVSphere(700), SharpRegions colours";
+    }
+    else
+    {
+      mesh = ReadMesh(input.Source, description, error);
+      if (!mesh)
+      {
+        std::cerr << Program << ": " << error << std::endl;
+        return 1;
+      }
+      // "icosphere level 4, SharpRegions colours (2,562 points, ...)": the counts are in the
+      // table's title line already.
+      description = IsDemoSpec(input.Source) ? description.substr(0, description.rfind(" ("))
+                                             : "`" + input.Source + "`";
+    }
+    if (!options.Array.empty())
+    {
+      if (!mesh->GetPointData()->GetArray(options.Array.c_str()))
+      {
+        std::cerr << Program << ": '" << input.Source << "' has no point array named '"
+                  << options.Array << "' (point arrays: " << PointArrayNames(mesh) << ")"
+                  << std::endl;
+        return 1;
+      }
+      mesh->GetPointData()->SetActiveScalars(options.Array.c_str());
+    }
+    mesh = Triangulated(mesh);
+    if (CountTriangles(mesh) == 0)
+    {
+      std::cerr << Program << ": '" << input.Source << "' has no triangles" << std::endl;
+      return 1;
+    }
+    if (!mesh->GetPointData()->GetScalars())
+    {
+      std::fprintf(
+        stderr,
+        "[bench] %s has no colour (active scalars): the colour-aware runs use geometry only\n",
+        input.Name.c_str());
+    }
+    cases.push_back(RunCase(input.Name, description, mesh, options, !options.NoQuadric));
+    std::cout << "\n" << CaseTable(cases.back(), options.Reduction) << std::endl;
+  }
+
+  std::vector<CaseResult> sweep;
+  if (sweepOn)
+  {
+    for (long long size : options.Sizes)
+    {
+      vtkSmartPointer<vtkPolyData> mesh =
+        meshes::UVSphereWithTriangles(size, meshes::Pattern::SharpRegions);
+      const bool quadric = !options.NoQuadric &&
+        (options.QuadricMax <= 0 || CountTriangles(mesh) <= options.QuadricMax);
+      sweep.push_back(RunCase("sphere " + SizeLabel(size), "UV sphere", mesh, options, quadric));
+    }
+    std::cout << "\n## Scale sweep (coloured UV spheres, SharpRegions)\n\n"
+              << SweepTable(sweep) << std::endl;
+  }
+
+  const double total =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::fprintf(stderr, "[bench] done in %.0f s\n", total);
+  if (!options.Markdown.empty())
+  {
+    std::ofstream out(options.Markdown);
+    out << Report(options, cases, sweep, date, total, loadBefore, LoadAverage());
+    out.close();
+    if (!out)
+    {
+      std::cerr << Program << ": cannot write '" << options.Markdown << "'" << std::endl;
+      return 1;
+    }
+    std::fprintf(stderr, "[bench] wrote %s\n", options.Markdown.c_str());
+  }
+  return 0;
+}

@@ -1,0 +1,682 @@
+#include "MeshIO.h"
+
+#include "ColorDecimationMeshes.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkGenericDataObjectReader.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkObjectFactory.h"
+#include "vtkPLYReader.h"
+#include "vtkPLYWriter.h"
+#include "vtkPointData.h"
+#include "vtkPolyDataWriter.h"
+#include "vtkSTLReader.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLPolyDataWriter.h"
+#include "vtkXMLUnstructuredGridReader.h"
+#if COLORDECIMATION_TOOLS_HAVE_SURFACE_FILTER
+#include "vtkDataSetSurfaceFilter.h"
+#endif
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+
+namespace colordecimation
+{
+namespace tools
+{
+namespace
+{
+using colordecimation::meshes::Pattern;
+
+std::string Lower(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+std::string WithThousands(long long value)
+{
+  std::string digits = std::to_string(value < 0 ? -value : value);
+  std::string out;
+  for (size_t i = 0; i < digits.size(); ++i)
+  {
+    if (i > 0 && (digits.size() - i) % 3 == 0)
+    {
+      out += ',';
+    }
+    out += digits[i];
+  }
+  return value < 0 ? "-" + out : out;
+}
+
+bool ParsePattern(const std::string& name, Pattern& pattern, std::string& label)
+{
+  const std::string n = Lower(name);
+  if (n == "sharp" || n == "sharpregions")
+  {
+    pattern = Pattern::SharpRegions;
+    label = "SharpRegions";
+  }
+  else if (n == "smooth" || n == "smoothgradient")
+  {
+    pattern = Pattern::SmoothGradient;
+    label = "SmoothGradient";
+  }
+  else if (n == "fine" || n == "finedetail")
+  {
+    pattern = Pattern::FineDetail;
+    label = "FineDetail";
+  }
+  else if (n == "constant")
+  {
+    pattern = Pattern::Constant;
+    label = "Constant";
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}
+
+/// "ico7" -> ("ico", 7); false when the text is not letters followed by a positive number
+/// with an optional k/M suffix.
+bool SplitShape(const std::string& text, std::string& shape, long long& number)
+{
+  size_t i = 0;
+  while (i < text.size() && std::isalpha(static_cast<unsigned char>(text[i])))
+  {
+    ++i;
+  }
+  shape = Lower(text.substr(0, i));
+  std::string rest = text.substr(i);
+  if (rest.empty())
+  {
+    number = -1;
+    return true;
+  }
+  double scale = 1;
+  const char last = rest.back();
+  if (last == 'k' || last == 'K')
+  {
+    scale = 1e3;
+    rest.pop_back();
+  }
+  else if (last == 'm' || last == 'M')
+  {
+    scale = 1e6;
+    rest.pop_back();
+  }
+  char* end = nullptr;
+  const double value = std::strtod(rest.c_str(), &end);
+  if (rest.empty() || end != rest.c_str() + rest.size() || !(value > 0) || value * scale > 1e9)
+  {
+    return false;
+  }
+  number = static_cast<long long>(std::llround(value * scale));
+  return number > 0;
+}
+
+std::string Describe(vtkPolyData* mesh)
+{
+  return WithThousands(mesh->GetNumberOfPoints()) + " points, " +
+    WithThousands(CountTriangles(mesh)) + " triangles";
+}
+
+/// A uchar copy of a colour array (3 or 4 components) for the PLY writer.
+vtkSmartPointer<vtkUnsignedCharArray> ToUnsignedChar(vtkDataArray* colors)
+{
+  const int in = colors->GetNumberOfComponents();
+  const int out = (in == 4) ? 4 : 3;
+  double lo = 0, hi = 1;
+  bool unit = true;
+  for (int c = 0; c < std::min(in, 3); ++c)
+  {
+    double range[2];
+    colors->GetRange(range, c);
+    unit = unit && range[0] >= 0 && range[1] <= 1;
+    lo = (c == 0) ? range[0] : std::min(lo, range[0]);
+    hi = (c == 0) ? range[1] : std::max(hi, range[1]);
+  }
+  if (unit)
+  {
+    lo = 0;
+    hi = 1;
+  }
+  const bool isChar = colors->GetDataType() == VTK_UNSIGNED_CHAR;
+  auto result = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  result->SetName(out == 4 ? "RGBA" : "RGB");
+  result->SetNumberOfComponents(out);
+  result->SetNumberOfTuples(colors->GetNumberOfTuples());
+  auto toByte = [&](double v)
+  {
+    if (isChar)
+    {
+      return static_cast<unsigned char>(v);
+    }
+    const double t = (hi > lo) ? (v - lo) / (hi - lo) : 0.0;
+    return static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, t))));
+  };
+  for (vtkIdType i = 0; i < colors->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      result->SetTypedComponent(i, c, toByte(colors->GetComponent(i, in >= 3 ? c : 0)));
+    }
+    if (out == 4)
+    {
+      const double a = colors->GetComponent(i, 3);
+      result->SetTypedComponent(
+        i, 3,
+        isChar ? static_cast<unsigned char>(a)
+               : static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, a)))));
+    }
+  }
+  return result;
+}
+
+/// The polydata of a reader's output, or the surface of another data set.
+vtkSmartPointer<vtkPolyData> AsPolyData(vtkDataObject* data, std::string& error)
+{
+  if (auto* poly = vtkPolyData::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkPolyData> copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->ShallowCopy(poly);
+    return copy;
+  }
+  auto* dataSet = vtkDataSet::SafeDownCast(data);
+  if (!dataSet)
+  {
+    error = std::string("holds no data set (") + (data ? data->GetClassName() : "nothing") + ")";
+    return nullptr;
+  }
+#if COLORDECIMATION_TOOLS_HAVE_SURFACE_FILTER
+  vtkNew<vtkDataSetSurfaceFilter> surface;
+  surface->SetInputData(dataSet);
+  surface->Update();
+  vtkSmartPointer<vtkPolyData> result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(surface->GetOutput());
+  return result;
+#else
+  error = std::string("holds a ") + dataSet->GetClassName() +
+    ", not polygonal data (this build has no surface extraction)";
+  return nullptr;
+#endif
+}
+} // namespace
+
+std::string Extension(const std::string& path)
+{
+  const size_t slash = path.find_last_of("/\\");
+  const size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+  {
+    return "";
+  }
+  return Lower(path.substr(dot));
+}
+
+bool IsDemoSpec(const std::string& input)
+{
+  return input == "--demo" || input == "demo" || input.compare(0, 5, "demo:") == 0;
+}
+
+const char* DefaultDemoSpec()
+{
+  return "demo:ico8:fine";
+}
+
+std::string DemoHelp()
+{
+  return "  --demo, demo:           the built-in demo mesh, made in code: an icosphere of level 8\n"
+         "                          (1,310,720 triangles, 655,362 points) with the FineDetail\n"
+         "                          colours (thin dark stripes and bars on a light ground);\n"
+         "                          the same as demo:ico8:fine\n"
+         "  demo:SHAPE[:PATTERN]    another generated mesh. SHAPE: ico<level> (20*4^level\n"
+         "                          triangles, level 0-10), uv<resolution> (latitude-longitude\n"
+         "                          sphere, 2r(r-2) triangles), sphere<count> (UV sphere with\n"
+         "                          about count triangles, e.g. sphere1M), torus<n> (n x n/2\n"
+         "                          quads), grid<n> (open n x n sheet with a boundary).\n"
+         "                          PATTERN: fine (default), sharp, smooth or constant.\n";
+}
+
+vtkSmartPointer<vtkPolyData> MakeDemo(const std::string& spec, std::string& description,
+                                      std::string& error)
+{
+  std::string body;
+  if (spec == "--demo" || spec == "demo" || spec == "demo:")
+  {
+    body = std::string(DefaultDemoSpec()).substr(5);
+  }
+  else
+  {
+    body = spec.substr(5);
+  }
+  std::string shapeText = body, patternText = "fine";
+  const size_t colon = body.find(':');
+  if (colon != std::string::npos)
+  {
+    shapeText = body.substr(0, colon);
+    patternText = body.substr(colon + 1);
+  }
+  if (shapeText.empty())
+  {
+    shapeText = "ico8";
+  }
+  Pattern pattern;
+  std::string patternLabel;
+  if (!ParsePattern(patternText, pattern, patternLabel))
+  {
+    error = "unknown demo colour pattern '" + patternText +
+      "' (expected fine, sharp, smooth or constant)";
+    return nullptr;
+  }
+  std::string shape;
+  long long n = 0;
+  if (!SplitShape(shapeText, shape, n))
+  {
+    error = "bad demo shape '" + shapeText + "' (e.g. ico8, uv700, sphere1M, torus400, grid300)";
+    return nullptr;
+  }
+  vtkSmartPointer<vtkPolyData> mesh;
+  std::string what;
+  if (shape == "ico" || shape == "icosphere")
+  {
+    n = n < 0 ? 8 : n;
+    if (n > 10)
+    {
+      error = "demo icosphere level must be 0 to 10";
+      return nullptr;
+    }
+    mesh = meshes::Icosphere(static_cast<int>(n), pattern);
+    what = "icosphere level " + std::to_string(n);
+  }
+  else if (shape == "uv")
+  {
+    n = n < 0 ? 700 : n;
+    if (n < 4 || n > 20000)
+    {
+      error = "demo UV sphere resolution must be 4 to 20000";
+      return nullptr;
+    }
+    mesh = meshes::UVSphere(static_cast<int>(n), pattern);
+    what = "UV sphere of resolution " + std::to_string(n);
+  }
+  else if (shape == "sphere")
+  {
+    n = n < 0 ? 1000000 : n;
+    mesh = meshes::UVSphereWithTriangles(n, pattern);
+    what = "UV sphere of about " + WithThousands(n) + " triangles";
+  }
+  else if (shape == "torus")
+  {
+    n = n < 0 ? 400 : n;
+    if (n < 6 || n > 20000)
+    {
+      error = "demo torus size must be 6 to 20000";
+      return nullptr;
+    }
+    mesh =
+      meshes::Torus(static_cast<int>(n), static_cast<int>(std::max<long long>(3, n / 2)), pattern);
+    what = "torus " + std::to_string(n) + " x " + std::to_string(std::max<long long>(3, n / 2));
+  }
+  else if (shape == "grid")
+  {
+    n = n < 0 ? 300 : n;
+    if (n > 20000)
+    {
+      error = "demo grid size must be 1 to 20000";
+      return nullptr;
+    }
+    mesh = meshes::Grid(static_cast<int>(n), static_cast<int>(n), pattern);
+    what = "open grid " + std::to_string(n) + " x " + std::to_string(n);
+  }
+  else
+  {
+    error = "unknown demo shape '" + shapeText + "' (expected ico, uv, sphere, torus or grid)";
+    return nullptr;
+  }
+  description = what + ", " + patternLabel + " colours (" + Describe(mesh) + ")";
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& description,
+                                      std::string& error)
+{
+  if (IsDemoSpec(path))
+  {
+    return MakeDemo(path, description, error);
+  }
+  struct stat info;
+  if (::stat(path.c_str(), &info) != 0)
+  {
+    error = "cannot open '" + path + "': " + std::strerror(errno);
+    return nullptr;
+  }
+  if (S_ISDIR(info.st_mode))
+  {
+    error = "'" + path + "' is a directory, not a mesh file";
+    return nullptr;
+  }
+  {
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe)
+    {
+      error = "cannot open '" + path + "': " + std::strerror(errno);
+      return nullptr;
+    }
+  }
+  const std::string ext = Extension(path);
+  MessageCatcher::Scope scope;
+  vtkSmartPointer<vtkPolyData> mesh;
+  std::string problem;
+  if (ext == ".ply")
+  {
+    if (!vtkPLYReader::CanReadFile(path.c_str()))
+    {
+      error = "'" + path + "' is not a PLY file (it does not start with a PLY header)";
+      return nullptr;
+    }
+    vtkNew<vtkPLYReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    mesh = AsPolyData(reader->GetOutput(), problem);
+  }
+  else if (ext == ".vtp" || ext == ".vtu")
+  {
+    vtkSmartPointer<vtkXMLReader> reader;
+    if (ext == ".vtp")
+    {
+      reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    }
+    else
+    {
+      reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    }
+    if (!reader->CanReadFile(path.c_str()))
+    {
+      error = "'" + path + "' is not a VTK XML " +
+        (ext == ".vtp" ? "PolyData" : "UnstructuredGrid") + " file";
+      return nullptr;
+    }
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    mesh = AsPolyData(reader->GetOutputDataObject(0), problem);
+  }
+  else if (ext == ".vtk")
+  {
+    vtkNew<vtkGenericDataObjectReader> reader;
+    reader->SetFileName(path.c_str());
+    if (!reader->OpenVTKFile() || !reader->ReadHeader())
+    {
+      reader->CloseVTKFile();
+      error = "'" + path + "' is not a legacy VTK file (no '# vtk DataFile' header)";
+      return nullptr;
+    }
+    reader->CloseVTKFile();
+    reader->Update();
+    mesh = AsPolyData(reader->GetOutput(), problem);
+  }
+  else if (ext == ".obj")
+  {
+    vtkNew<vtkOBJReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    mesh = AsPolyData(reader->GetOutput(), problem);
+  }
+  else if (ext == ".stl")
+  {
+    vtkNew<vtkSTLReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    mesh = AsPolyData(reader->GetOutput(), problem);
+  }
+  else
+  {
+    error = "unsupported input type '" + (ext.empty() ? std::string("(no extension)") : ext) +
+      "' for '" + path + "' (expected .ply, .vtp, .vtu, .vtk, .obj, .stl or demo:)";
+    return nullptr;
+  }
+  if (!scope.Get()->Errors.empty())
+  {
+    error = "cannot read '" + path + "': " + scope.Get()->FirstError();
+    return nullptr;
+  }
+  if (!mesh)
+  {
+    error = "cannot read '" + path + "': " + (problem.empty() ? "the reader failed" : problem);
+    return nullptr;
+  }
+  if (mesh->GetNumberOfPoints() == 0)
+  {
+    error = "'" + path + "' holds no points: it is not a mesh, or an empty one";
+    return nullptr;
+  }
+  description = Describe(mesh);
+  return mesh;
+}
+
+bool IsWritableExtension(const std::string& path)
+{
+  const std::string ext = Extension(path);
+  return ext == ".ply" || ext == ".vtp" || ext == ".vtk";
+}
+
+bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& colorArrayName,
+               std::string& error)
+{
+  const std::string ext = Extension(path);
+  MessageCatcher::Scope scope;
+  int ok = 0;
+  if (ext == ".ply")
+  {
+    vtkNew<vtkPLYWriter> writer;
+    writer->SetFileName(path.c_str());
+    writer->SetFileTypeToBinary();
+    vtkSmartPointer<vtkPolyData> out = mesh;
+    vtkDataArray* colors = FindColorArray(mesh, colorArrayName);
+    if (colors && colors->GetNumberOfTuples() == mesh->GetNumberOfPoints())
+    {
+      const int comps = colors->GetNumberOfComponents();
+      vtkDataArray* written = colors;
+      if (colors->GetDataType() != VTK_UNSIGNED_CHAR || (comps != 3 && comps != 4) ||
+          !colors->GetName() || !*colors->GetName())
+      {
+        auto converted = ToUnsignedChar(colors);
+        out = vtkSmartPointer<vtkPolyData>::New();
+        out->ShallowCopy(mesh);
+        out->GetPointData()->AddArray(converted);
+        written = converted;
+      }
+      writer->SetArrayName(written->GetName());
+      writer->SetColorModeToDefault();
+      writer->SetEnableAlpha(written->GetNumberOfComponents() == 4);
+    }
+    else
+    {
+      writer->SetColorModeToOff();
+    }
+    writer->SetInputData(out);
+    ok = writer->Write();
+  }
+  else if (ext == ".vtp")
+  {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetFileName(path.c_str());
+    writer->SetDataModeToAppended();
+    writer->SetCompressorTypeToZLib();
+    writer->SetInputData(mesh);
+    ok = writer->Write();
+  }
+  else if (ext == ".vtk")
+  {
+    vtkNew<vtkPolyDataWriter> writer;
+    writer->SetFileName(path.c_str());
+    writer->SetFileTypeToBinary();
+    writer->SetInputData(mesh);
+    ok = writer->Write();
+  }
+  else
+  {
+    error = "unsupported output type '" + (ext.empty() ? std::string("(no extension)") : ext) +
+      "' for '" + path + "' (expected .ply, .vtp or .vtk)";
+    return false;
+  }
+  if (!ok || !scope.Get()->Errors.empty())
+  {
+    error = "cannot write '" + path + "'" +
+      (scope.Get()->Errors.empty() ? std::string() : ": " + scope.Get()->FirstError());
+    return false;
+  }
+  return true;
+}
+
+long long CountTriangles(vtkPolyData* mesh)
+{
+  long long count = 0;
+  for (vtkCellArray* cells : { mesh->GetPolys(), mesh->GetStrips() })
+  {
+    if (!cells || cells->GetNumberOfCells() == 0)
+    {
+      continue;
+    }
+    if (cells == mesh->GetPolys() && cells->IsHomogeneous() == 3)
+    {
+      count += cells->GetNumberOfCells();
+      continue;
+    }
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType npts;
+      const vtkIdType* pts;
+      it->GetCurrentCell(npts, pts);
+      count += npts >= 3 ? npts - 2 : 0;
+    }
+  }
+  return count;
+}
+
+std::string PointArrayNames(vtkPolyData* mesh)
+{
+  std::string names;
+  vtkPointData* pd = mesh->GetPointData();
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+  {
+    const char* name = pd->GetArrayName(i);
+    if (!name)
+    {
+      continue;
+    }
+    names += (names.empty() ? "" : ", ") + std::string(name);
+  }
+  return names.empty() ? std::string("none") : names;
+}
+
+vtkDataArray* FindColorArray(vtkPolyData* mesh, const std::string& name)
+{
+  if (name.empty())
+  {
+    return mesh->GetPointData()->GetScalars();
+  }
+  return mesh->GetPointData()->GetArray(name.c_str());
+}
+
+//------------------------------------------------------------------------------
+vtkStandardNewMacro(MessageCatcher);
+
+void MessageCatcher::DisplayText(const char* text)
+{
+  // Plain text from VTK objects (PrintSelf and the like): not expected here, kept quiet.
+  (void)text;
+}
+
+void MessageCatcher::DisplayErrorText(const char* text)
+{
+  this->Errors.emplace_back(text ? text : "");
+}
+
+void MessageCatcher::DisplayWarningText(const char* text)
+{
+  this->Warnings.emplace_back(text ? text : "");
+}
+
+void MessageCatcher::DisplayGenericWarningText(const char* text)
+{
+  this->Warnings.emplace_back(text ? text : "");
+}
+
+void MessageCatcher::DisplayDebugText(const char* text)
+{
+  (void)text;
+}
+
+std::string MessageCatcher::FirstError() const
+{
+  return this->Errors.empty() ? std::string() : Clean(this->Errors.front());
+}
+
+std::string MessageCatcher::Clean(const std::string& text)
+{
+  std::string message = text;
+  // VTK 9: "ERROR: In /path/file.cxx, line 123\nvtkClass (0x1234): message\n\n"
+  if (message.compare(0, 7, "ERROR: ") == 0 || message.compare(0, 9, "Warning: ") == 0 ||
+      message.compare(0, 16, "Generic Warning:") == 0)
+  {
+    const size_t newline = message.find('\n');
+    message = (newline == std::string::npos) ? std::string() : message.substr(newline + 1);
+  }
+  const size_t object = message.find("): ");
+  if (object != std::string::npos && message.find(" (0x") != std::string::npos &&
+      message.find(" (0x") < object)
+  {
+    message = message.substr(object + 3);
+  }
+  while (!message.empty() && std::isspace(static_cast<unsigned char>(message.back())))
+  {
+    message.pop_back();
+  }
+  for (char& c : message)
+  {
+    c = (c == '\n') ? ' ' : c;
+  }
+  return message.empty() ? text : message;
+}
+
+MessageCatcher::Scope::Scope()
+  : Catcher(MessageCatcher::New())
+  , Previous(vtkOutputWindow::GetInstance())
+{
+  if (this->Previous)
+  {
+    this->Previous->Register(nullptr);
+  }
+  vtkOutputWindow::SetInstance(this->Catcher);
+}
+
+MessageCatcher::Scope::~Scope()
+{
+  vtkOutputWindow::SetInstance(this->Previous);
+  if (this->Previous)
+  {
+    this->Previous->UnRegister(nullptr);
+  }
+  this->Catcher->Delete();
+}
+
+} // namespace tools
+} // namespace colordecimation

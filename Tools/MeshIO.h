@@ -1,0 +1,132 @@
+/**
+ * @file MeshIO.h
+ * @brief Reading, writing and generating coloured meshes for the command-line tools.
+ *
+ * Inputs: .ply (vtkPLYReader), .vtp (vtkXMLPolyDataReader), .vtu (surface of an
+ * unstructured grid), .vtk (legacy: polydata, or the surface of any other data set), .obj
+ * (vtkOBJReader), .stl (vtkSTLReader), and "demo:" specifications that build a coloured
+ * mesh in code with ColorDecimation::Meshes (see DemoHelp()). Outputs: .ply (binary, with
+ * the colour array as uchar red/green/blue[/alpha]), .vtp (binary, every array kept) and
+ * .vtk (legacy binary polydata).
+ *
+ * VTK's own error and warning messages are caught (MessageCatcher) so that the tools can
+ * report them in one clear line instead of VTK's multi-line output.
+ */
+#ifndef MeshIO_h
+#define MeshIO_h
+
+#include "vtkOutputWindow.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+class vtkDataArray;
+
+namespace colordecimation
+{
+namespace tools
+{
+
+/// The extension of `path`, lower case, with its dot (".ply"), or "" when none.
+std::string Extension(const std::string& path);
+
+/// True for "--demo", "demo" and "demo:..." inputs.
+bool IsDemoSpec(const std::string& input);
+
+/// The text that --help prints about demo specifications.
+std::string DemoHelp();
+
+/// The default demo ("demo:" alone), as a full specification.
+const char* DefaultDemoSpec();
+
+/**
+ * Builds the mesh of a demo specification "demo:[SHAPE][:PATTERN]". Returns nullptr and
+ * sets `error` when the specification is wrong. `description` says what was built.
+ */
+vtkSmartPointer<vtkPolyData> MakeDemo(const std::string& spec, std::string& description,
+                                      std::string& error);
+
+/**
+ * Reads a mesh file (or builds a demo mesh). Returns nullptr and sets `error` (one line,
+ * no trailing newline) when the file is missing, unreadable, of an unsupported type, or
+ * not a mesh. Triangles are not checked here (see CountTriangles).
+ */
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& description,
+                                      std::string& error);
+
+/// True when `path` has an extension WriteMesh() accepts.
+bool IsWritableExtension(const std::string& path);
+
+/**
+ * Writes `mesh` to .ply, .vtp or .vtk. For .ply, `colorArrayName` (a point array; may be
+ * empty: the active scalars) is written as uchar colours; non-uchar colour arrays are
+ * converted (values in [0,1] times 255, otherwise scaled by the array's range).
+ */
+bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& colorArrayName,
+               std::string& error);
+
+/// Number of triangles of the mesh's polygons and strips, counted as after triangulation.
+long long CountTriangles(vtkPolyData* mesh);
+
+/// Names of the point-data arrays, comma separated (for messages).
+std::string PointArrayNames(vtkPolyData* mesh);
+
+/// The colour array: the named point array, or the active point scalars when `name` is empty.
+vtkDataArray* FindColorArray(vtkPolyData* mesh, const std::string& name);
+
+/**
+ * A vtkOutputWindow that keeps VTK's error and warning messages instead of printing them.
+ * Install with a MessageCatcher::Scope; the previous output window comes back when the scope
+ * ends.
+ */
+class MessageCatcher : public vtkOutputWindow
+{
+public:
+  static MessageCatcher* New();
+  vtkTypeMacro(MessageCatcher, vtkOutputWindow);
+
+  void DisplayText(const char* text) override;
+  void DisplayErrorText(const char* text) override;
+  void DisplayWarningText(const char* text) override;
+  void DisplayGenericWarningText(const char* text) override;
+  void DisplayDebugText(const char* text) override;
+
+  std::vector<std::string> Errors;
+  std::vector<std::string> Warnings;
+
+  /// The first error (cleaned of VTK's file/line/object prefix), or "".
+  std::string FirstError() const;
+
+  /// Installs a catcher for the lifetime of the scope.
+  class Scope
+  {
+  public:
+    Scope();
+    ~Scope();
+    Scope(const Scope&) = delete;
+    Scope& operator=(const Scope&) = delete;
+    MessageCatcher* Get() const { return this->Catcher; }
+
+  private:
+    MessageCatcher* Catcher;
+    vtkOutputWindow* Previous;
+  };
+
+  /// "ERROR: In file, line N\nvtkClass (0x...): message" -> "message".
+  static std::string Clean(const std::string& text);
+
+protected:
+  MessageCatcher() = default;
+  ~MessageCatcher() override = default;
+
+private:
+  MessageCatcher(const MessageCatcher&) = delete;
+  void operator=(const MessageCatcher&) = delete;
+};
+
+} // namespace tools
+} // namespace colordecimation
+
+#endif
