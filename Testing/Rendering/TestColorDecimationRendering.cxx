@@ -1,0 +1,175 @@
+// Image regression test of vtkColorHalfEdgeDecimation: decimates a generated coloured
+// mesh (a scene of ColorDecimationRenderingScenes), renders the result offscreen and
+// compares the picture with a committed baseline through VTK's regression machinery
+// (vtkRegressionTestImageThreshold, which reads -V BASELINE.png and -T TEMPDIR from the
+// command line, and accepts alternates BASELINE_1.png, BASELINE_2.png, ...).
+//
+// usage: TestColorDecimationRendering SCENE [--reduction R] [--threshold T] [--tamper]
+//          [--expect-mismatch] [--write-baseline FILE.png] -V BASELINE.png -T TEMPDIR
+//   --reduction R        decimate to R instead of the scene's own reduction
+//   --tamper             paint a magenta rectangle over the picture before comparing
+//   --expect-mismatch    succeed only when the comparison FAILS (tests that the image
+//                        test can fail: a tampered picture, or another reduction)
+//   --write-baseline F   write the picture to F and compare nothing (refresh baselines)
+#include "ColorDecimationRenderingScenes.h"
+
+#include "vtkActor2D.h"
+#include "vtkCellArray.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper2D.h"
+#include "vtkProperty2D.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+namespace
+{
+
+void PaintRectangle(vtkRenderWindow* window)
+{
+  // A magenta rectangle over a fifth of the left panel, on top of the mesh.
+  const int* size = window->GetSize();
+  const double x0 = 0.15 * size[0], x1 = 0.30 * size[0];
+  const double y0 = 0.30 * size[1], y1 = 0.65 * size[1];
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(x0, y0, 0.0);
+  points->InsertNextPoint(x1, y0, 0.0);
+  points->InsertNextPoint(x1, y1, 0.0);
+  points->InsertNextPoint(x0, y1, 0.0);
+  vtkNew<vtkCellArray> quad;
+  const vtkIdType ids[4] = { 0, 1, 2, 3 };
+  quad->InsertNextCell(4, ids);
+  vtkNew<vtkPolyData> rectangle;
+  rectangle->SetPoints(points);
+  rectangle->SetPolys(quad);
+  vtkNew<vtkPolyDataMapper2D> mapper;
+  mapper->SetInputData(rectangle);
+  vtkNew<vtkActor2D> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(1.0, 0.0, 1.0);
+  vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
+  renderer->AddActor2D(actor);
+}
+
+std::string ArgumentAfter(int argc, char* argv[], const char* flag)
+{
+  for (int i = 1; i + 1 < argc; ++i)
+  {
+    if (std::strcmp(argv[i], flag) == 0)
+    {
+      return argv[i + 1];
+    }
+  }
+  return std::string();
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  namespace cr = colordecimation::rendering;
+  if (argc < 2)
+  {
+    std::cerr << "usage: " << argv[0] << " SCENE [options] -V BASELINE.png -T TEMPDIR\n";
+    return EXIT_FAILURE;
+  }
+  const cr::Scene* scene = cr::FindScene(argv[1]);
+  if (!scene)
+  {
+    std::cerr << "unknown scene " << argv[1] << "\n";
+    return EXIT_FAILURE;
+  }
+  double reduction = scene->Reduction;
+  double threshold = 0.15; // vtkRegressionTestImage's own default
+  bool tamper = false, expectMismatch = false;
+  std::string writeBaseline;
+  for (int i = 2; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--reduction" && i + 1 < argc)
+    {
+      reduction = std::atof(argv[++i]);
+    }
+    else if (arg == "--threshold" && i + 1 < argc)
+    {
+      threshold = std::atof(argv[++i]);
+    }
+    else if (arg == "--tamper")
+    {
+      tamper = true;
+    }
+    else if (arg == "--expect-mismatch")
+    {
+      expectMismatch = true;
+    }
+    else if (arg == "--write-baseline" && i + 1 < argc)
+    {
+      writeBaseline = argv[++i];
+    }
+  }
+
+  auto input = cr::MakeInput(*scene);
+  auto output = cr::Decimate(input, reduction);
+  const double actual =
+    1.0 - static_cast<double>(output->GetNumberOfPolys()) / input->GetNumberOfPolys();
+  std::cout << scene->Name << ": " << input->GetNumberOfPolys() << " -> "
+            << output->GetNumberOfPolys() << " triangles (reduction " << actual << ", target "
+            << reduction << "), " << (scene->Lit ? "lit" : "unlit") << "\n";
+  if (output->GetNumberOfPolys() == 0 || actual < reduction - 0.02)
+  {
+    std::cerr << "the decimation did not reach its target\n";
+    return EXIT_FAILURE;
+  }
+
+  auto window = cr::MakeWindow(input, output, scene->Lit);
+  if (tamper)
+  {
+    PaintRectangle(window);
+  }
+  window->Render();
+
+  if (!writeBaseline.empty())
+  {
+    vtkNew<vtkWindowToImageFilter> grabber;
+    grabber->SetInput(window);
+    grabber->SetInputBufferTypeToRGB();
+    grabber->ReadFrontBufferOff();
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetFileName(writeBaseline.c_str());
+    writer->SetInputConnection(grabber->GetOutputPort());
+    writer->Write();
+    std::cout << "wrote baseline " << writeBaseline << "\n";
+    return writer->GetErrorCode() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  }
+
+  const std::string baseline = ArgumentAfter(argc, argv, "-V");
+  if (baseline.empty() || !std::ifstream(baseline).good())
+  {
+    // Without a baseline vtkTesting fails too: an expected mismatch must not pass so.
+    std::cerr << "missing baseline (-V): '" << baseline << "'\n";
+    return EXIT_FAILURE;
+  }
+  const int result = vtkRegressionTestImageThreshold(window, threshold);
+  if (expectMismatch)
+  {
+    if (result == vtkTesting::FAILED)
+    {
+      std::cout << "the changed picture was rejected, as expected\n";
+      return EXIT_SUCCESS;
+    }
+    std::cerr << "the changed picture was ACCEPTED: the image test cannot fail\n";
+    return EXIT_FAILURE;
+  }
+  return result == vtkTesting::PASSED ? EXIT_SUCCESS : EXIT_FAILURE;
+}

@@ -1,0 +1,197 @@
+// Checks the render-based fidelity measures of ColorDecimation::Fidelity on cases whose
+// answer is known: identical meshes, a uniform colour shift, a moved copy, float colours,
+// colours lost and restored by TransferNearestColors, the snapshot PNG and the JSON.
+//
+// usage: TestFidelityMeasures TEMPDIR
+#include "ColorDecimationFidelity.h"
+#include "ColorDecimationMeshes.h"
+
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPNGReader.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+namespace fid = colordecimation::fidelity;
+namespace meshes = colordecimation::meshes;
+
+namespace
+{
+
+int Failures = 0;
+
+void Check(bool condition, const std::string& what)
+{
+  std::cout << (condition ? "ok      " : "FAILED  ") << what << "\n";
+  if (!condition)
+  {
+    ++Failures;
+  }
+}
+
+vtkSmartPointer<vtkPolyData> Copy(vtkPolyData* mesh)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(mesh);
+  return copy;
+}
+
+void SetConstantColor(vtkPolyData* mesh, int r, int g, int b)
+{
+  auto* rgb = vtkUnsignedCharArray::SafeDownCast(mesh->GetPointData()->GetScalars());
+  for (vtkIdType i = 0; i < rgb->GetNumberOfTuples(); ++i)
+  {
+    rgb->SetTypedComponent(i, 0, static_cast<unsigned char>(r));
+    rgb->SetTypedComponent(i, 1, static_cast<unsigned char>(g));
+    rgb->SetTypedComponent(i, 2, static_cast<unsigned char>(b));
+  }
+}
+
+void ToFloatColors(vtkPolyData* mesh)
+{
+  vtkDataArray* rgb = mesh->GetPointData()->GetScalars();
+  vtkNew<vtkFloatArray> colors;
+  colors->SetName("RGB");
+  colors->SetNumberOfComponents(3);
+  colors->SetNumberOfTuples(rgb->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < rgb->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      colors->SetComponent(i, c, rgb->GetComponent(i, c) / 255.0);
+    }
+  }
+  mesh->GetPointData()->RemoveArray("RGB");
+  mesh->GetPointData()->SetScalars(colors);
+}
+
+bool Near(double a, double b, double tolerance)
+{
+  return std::fabs(a - b) <= tolerance;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const std::string temporary = argc > 1 ? argv[1] : ".";
+  std::string why;
+  if (!fid::CanRender(&why))
+  {
+    std::cerr << "cannot render: " << why << "\n";
+    return 1;
+  }
+  fid::Options options;
+  options.Size = 200;
+
+  // 1. Identical meshes: nothing differs; PSNR is infinite.
+  auto sphere = meshes::Icosphere(4, meshes::Pattern::SmoothGradient);
+  fid::Result same = fid::CompareRenders(sphere, sphere, options);
+  Check(same.Ok, "identical meshes render");
+  Check(same.Unlit.All.CoveredPixels > 6 * 200 * 200 / 4, "the sphere covers its views");
+  Check(same.Unlit.Views.size() == 6 && same.Lit.Views.size() == 6, "six views per pass");
+  Check(same.Unlit.All.Rms == 0.0 && same.Lit.All.Rms == 0.0, "identical meshes: RMS 0");
+  Check(std::isinf(same.Unlit.All.Psnr), "identical meshes: PSNR +inf");
+  const std::string json = fid::ToJson(same);
+  Check(json.find("\"psnr\": null") != std::string::npos &&
+          json.find("\"color_array\": \"RGB\"") != std::string::npos,
+        "JSON writes an infinite PSNR as null and names the colour array");
+
+  // 2. A uniform colour shift of (10, -20, 5) on a constant mesh: every covered pixel is
+  //    off by sqrt(525); the shape is unchanged.
+  auto constant = meshes::Icosphere(4, meshes::Pattern::Constant);
+  auto shifted = Copy(constant);
+  SetConstantColor(constant, 180, 140, 100);
+  SetConstantColor(shifted, 190, 120, 105);
+  fid::Result shift = fid::CompareRenders(constant, shifted, options);
+  const double expectedRms = std::sqrt(525.0);
+  const double expectedPsnr = 10.0 * std::log10(255.0 * 255.0 / (525.0 / 3.0));
+  std::cout << "        shift: unlit RMS " << shift.Unlit.All.Rms << " (expected " << expectedRms
+            << "), PSNR " << shift.Unlit.All.Psnr << " (expected " << expectedPsnr << ")\n";
+  Check(Near(shift.Unlit.All.Rms, expectedRms, 0.05), "colour shift: RMS = sqrt(10^2+20^2+5^2)");
+  Check(Near(shift.Unlit.All.Psnr, expectedPsnr, 0.02), "colour shift: PSNR = 25.70 dB");
+  Check(shift.Lit.All.Rms == 0.0, "colour shift: the lit (shape) pass sees no change");
+
+  // 3. A copy moved by a fifth of the radius: shape and colour both differ, and the pixels
+  //    covered by either mesh outnumber those of one mesh.
+  auto moved = Copy(sphere);
+  for (vtkIdType i = 0; i < moved->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    moved->GetPoint(i, p);
+    p[0] += 0.2;
+    moved->GetPoints()->SetPoint(i, p);
+  }
+  fid::Result move = fid::CompareRenders(sphere, moved, options);
+  std::cout << "        moved: unlit RMS " << move.Unlit.All.Rms << ", lit RMS " << move.Lit.All.Rms
+            << "\n";
+  Check(move.Unlit.All.Rms > 10.0 && move.Lit.All.Rms > 10.0, "moved copy: both passes differ");
+  Check(move.Unlit.All.CoveredPixels > same.Unlit.All.CoveredPixels,
+        "moved copy: the union of the silhouettes is counted");
+
+  // 4. Float colours in [0,1] are scaled to 0..255: same figures as unsigned char.
+  auto floatA = Copy(constant);
+  auto floatB = Copy(shifted);
+  ToFloatColors(floatA);
+  ToFloatColors(floatB);
+  fid::Result floats = fid::CompareRenders(floatA, floatB, options);
+  Check(Near(floats.Unlit.All.Rms, shift.Unlit.All.Rms, 0.05), "float colours in [0,1]");
+
+  // 5. Colours lost (the mesh renders white), then restored from the nearest points.
+  auto bare = Copy(sphere);
+  bare->GetPointData()->RemoveArray("RGB");
+  fid::Result lost = fid::CompareRenders(sphere, bare, options);
+  Check(lost.Unlit.All.Rms > 50.0, "a mesh without colours is far from the original");
+  Check(fid::TransferNearestColors(sphere, bare), "TransferNearestColors succeeds");
+  fid::Result restored = fid::CompareRenders(sphere, bare, options);
+  Check(restored.Unlit.All.Rms == 0.0, "nearest-point colours of the same points: RMS 0");
+
+  // 6. The per-view images and the snapshot.
+  options.ImageDirectory = temporary;
+  fid::CompareRenders(sphere, moved, options);
+  Check(std::ifstream(temporary + "/unlit_-Z_difference.png").good() &&
+          std::ifstream(temporary + "/lit_+X_original.png").good(),
+        "per-view images are written");
+  const std::string snapshot = temporary + "/fidelity_snapshot.png";
+  std::remove(snapshot.c_str());
+  Check(fid::WriteSnapshot(sphere, moved, snapshot, 100, {}, &why), "WriteSnapshot succeeds");
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(snapshot.c_str());
+  reader->Update();
+  int dims[3];
+  reader->GetOutput()->GetDimensions(dims);
+  Check(dims[0] == 2 * 100 + 2 && dims[1] == 2 * 100 + 2, "snapshot: 2 x 2 panels of 100 px");
+  // Each panel shows the mesh: its centre pixel is not the black background.
+  bool panelsDrawn = true;
+  for (int px : { 50, 152 })
+  {
+    for (int py : { 50, 152 })
+    {
+      double sum = 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        sum += reader->GetOutput()->GetScalarComponentAsDouble(px, py, 0, c);
+      }
+      panelsDrawn = panelsDrawn && sum > 30.0;
+    }
+  }
+  Check(panelsDrawn, "snapshot: the mesh is drawn in all four panels");
+
+  // 7. Errors are reported, not crashed on.
+  fid::Options badArray = options;
+  badArray.ColorArray = "NoSuchArray";
+  fid::Result bad = fid::CompareRenders(sphere, sphere, badArray);
+  Check(!bad.Ok && !bad.Error.empty(), "an unknown colour array is an error");
+  Check(!fid::ReadMesh(temporary + "/missing.ply"), "ReadMesh of a missing file is null");
+
+  std::cout << (Failures ? "FAILED: " : "all passed: ") << Failures << " failure(s)\n";
+  return Failures ? 1 : 0;
+}
