@@ -1,0 +1,895 @@
+#include "ColorDecimationTestUtilities.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkColorHalfEdgeDecimation.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkStringArray.h"
+
+#include <algorithm>
+#include <cstring>
+#include <iostream>
+#include <limits>
+#include <map>
+
+namespace colordecimation
+{
+namespace testing
+{
+namespace
+{
+int Failures = 0;
+constexpr int MaximumPrintedFailures = 40;
+
+double Length(const double v[3])
+{
+  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
+void Cross(const double a[3], const double b[3], double c[3])
+{
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/// Bytes of tuple `i` of an array (AOS layout), compared with memcmp.
+bool SameTupleBytes(vtkDataArray* a, vtkIdType i, vtkDataArray* b, vtkIdType j)
+{
+  const int comps = a->GetNumberOfComponents();
+  const int size = a->GetDataTypeSize();
+  return std::memcmp(a->GetVoidPointer(i * comps), b->GetVoidPointer(j * comps),
+                     static_cast<size_t>(comps) * size) == 0;
+}
+
+/// Same tuple of two abstract arrays of the same kind (data arrays bit-exactly).
+bool SameTuple(vtkAbstractArray* a, vtkIdType i, vtkAbstractArray* b, vtkIdType j)
+{
+  auto* da = vtkDataArray::SafeDownCast(a);
+  auto* db = vtkDataArray::SafeDownCast(b);
+  if (da && db)
+  {
+    return SameTupleBytes(da, i, db, j);
+  }
+  auto* sa = vtkStringArray::SafeDownCast(a);
+  auto* sb = vtkStringArray::SafeDownCast(b);
+  if (sa && sb)
+  {
+    const int comps = sa->GetNumberOfComponents();
+    for (int k = 0; k < comps; ++k)
+    {
+      if (sa->GetValue(i * comps + k) != sb->GetValue(j * comps + k))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+  return false;
+}
+
+bool SameKind(vtkAbstractArray* a, vtkAbstractArray* b)
+{
+  return a && b && a->GetDataType() == b->GetDataType() &&
+    a->GetNumberOfComponents() == b->GetNumberOfComponents();
+}
+
+const char* NameOf(vtkAbstractArray* a)
+{
+  return (a && a->GetName()) ? a->GetName() : "(null)";
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+void ReportFailure(const char* file, int line, const char* condition, const std::string& message)
+{
+  ++Failures;
+  if (Failures <= MaximumPrintedFailures)
+  {
+    std::cerr << file << ":" << line << ": check failed: " << condition;
+    if (!message.empty())
+    {
+      std::cerr << " -- " << message;
+    }
+    std::cerr << std::endl;
+  }
+  else if (Failures == MaximumPrintedFailures + 1)
+  {
+    std::cerr << "(further failures not printed)" << std::endl;
+  }
+}
+
+int GetNumberOfFailures()
+{
+  return Failures;
+}
+
+int RunTestCases(int argc, char* argv[], const std::vector<TestCase>& cases)
+{
+  if (argc < 2)
+  {
+    std::cerr << "usage: " << argv[0] << " CaseName | all | --list" << std::endl;
+    return 2;
+  }
+  const std::string wanted = argv[1];
+  if (wanted == "--list")
+  {
+    for (const TestCase& c : cases)
+    {
+      std::cout << c.Name << "\n";
+    }
+    return 0;
+  }
+  bool found = false;
+  for (const TestCase& c : cases)
+  {
+    if (wanted != "all" && wanted != c.Name)
+    {
+      continue;
+    }
+    found = true;
+    const int before = Failures;
+    try
+    {
+      c.Function();
+    }
+    catch (const std::exception& e)
+    {
+      ReportFailure(__FILE__, __LINE__, c.Name, std::string("exception: ") + e.what());
+    }
+    std::cout << (Failures == before ? "PASS " : "FAIL ") << c.Name;
+    if (Failures != before)
+    {
+      std::cout << " (" << Failures - before << " failed checks)";
+    }
+    std::cout << std::endl;
+  }
+  if (!found)
+  {
+    std::cerr << "no test case named '" << wanted << "'" << std::endl;
+    return 2;
+  }
+  return Failures == 0 ? 0 : 1;
+}
+
+//------------------------------------------------------------------------------
+void EventRecorder::Execute(vtkObject*, unsigned long event, void* callData)
+{
+  const char* text = callData ? static_cast<const char*>(callData) : "";
+  if (event == vtkCommand::ErrorEvent)
+  {
+    ++this->Errors;
+    this->ErrorText += text;
+  }
+  else if (event == vtkCommand::WarningEvent)
+  {
+    ++this->Warnings;
+    this->WarningText += text;
+  }
+}
+
+void EventRecorder::Watch(vtkObject* object)
+{
+  object->AddObserver(vtkCommand::ErrorEvent, this);
+  object->AddObserver(vtkCommand::WarningEvent, this);
+}
+
+void EventRecorder::Clear()
+{
+  this->Errors = this->Warnings = 0;
+  this->ErrorText.clear();
+  this->WarningText.clear();
+}
+
+//------------------------------------------------------------------------------
+RunResult Decimate(vtkPolyData* input, double reduction,
+                   const std::function<void(vtkColorHalfEdgeDecimation*)>& configure)
+{
+  vtkNew<vtkColorHalfEdgeDecimation> filter;
+  vtkNew<EventRecorder> recorder;
+  recorder->Watch(filter);
+  filter->SetInputData(input);
+  filter->SetTargetReduction(reduction);
+  if (configure)
+  {
+    configure(filter);
+  }
+  filter->Update();
+  RunResult result;
+  result.Output = vtkSmartPointer<vtkPolyData>::New();
+  result.Output->ShallowCopy(filter->GetOutput());
+  result.ActualReduction = filter->GetActualReduction();
+  result.Collapses = filter->GetNumberOfCollapses();
+  result.Errors = recorder->Errors;
+  result.Warnings = recorder->Warnings;
+  result.ErrorText = recorder->ErrorText;
+  result.WarningText = recorder->WarningText;
+  return result;
+}
+
+//------------------------------------------------------------------------------
+std::vector<Tri> GetTriangles(vtkPolyData* mesh)
+{
+  std::vector<Tri> tris;
+  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    it->GetCurrentCell(npts, pts);
+    if (npts == 3)
+    {
+      tris.push_back({ pts[0], pts[1], pts[2] });
+    }
+    else
+    {
+      tris.push_back({ -1, -1, -1 });
+    }
+  }
+  return tris;
+}
+
+std::vector<Tri> GetOriginalTriangles(vtkPolyData* output)
+{
+  auto* ids = vtkIdTypeArray::SafeDownCast(output->GetPointData()->GetArray("vtkOriginalPointIds"));
+  if (!ids)
+  {
+    ReportFailure(__FILE__, __LINE__, "vtkOriginalPointIds", "the output has no such array");
+    return {};
+  }
+  std::vector<Tri> tris = GetTriangles(output);
+  for (Tri& t : tris)
+  {
+    for (vtkIdType& v : t)
+    {
+      v = (v >= 0 && v < ids->GetNumberOfValues()) ? ids->GetValue(v) : -1;
+    }
+  }
+  return tris;
+}
+
+Tri Canonical(const Tri& t)
+{
+  const int k = (t[0] <= t[1] && t[0] <= t[2]) ? 0 : (t[1] <= t[2] ? 1 : 2);
+  return { t[k], t[(k + 1) % 3], t[(k + 2) % 3] };
+}
+
+std::set<Tri> CanonicalSet(const std::vector<Tri>& tris)
+{
+  std::set<Tri> s;
+  for (const Tri& t : tris)
+  {
+    s.insert(Canonical(t));
+  }
+  return s;
+}
+
+std::set<vtkIdType> OriginalIds(vtkPolyData* output)
+{
+  std::set<vtkIdType> s;
+  auto* ids = vtkIdTypeArray::SafeDownCast(output->GetPointData()->GetArray("vtkOriginalPointIds"));
+  if (ids)
+  {
+    for (vtkIdType i = 0; i < ids->GetNumberOfValues(); ++i)
+    {
+      s.insert(ids->GetValue(i));
+    }
+  }
+  return s;
+}
+
+//------------------------------------------------------------------------------
+std::ostream& operator<<(std::ostream& os, const Topology& t)
+{
+  return os << "V " << t.Vertices << " E " << t.Edges << " F " << t.Faces << " (chi " << t.Euler()
+            << "), boundary edges " << t.BoundaryEdges << " in " << t.BoundaryLoops
+            << " loops, non-manifold edges " << t.NonManifoldEdges << ", misoriented edges "
+            << t.MisorientedEdges << ", non-manifold vertices " << t.NonManifoldVertices
+            << ", triangles repeating an id " << t.RepeatedIdTriangles;
+}
+
+Topology AnalyseTopology(const std::vector<Tri>& tris)
+{
+  Topology topo;
+  struct EdgeUse
+  {
+    int Forward = 0;  ///< used as (min, max)
+    int Backward = 0; ///< used as (max, min)
+  };
+  std::map<std::pair<vtkIdType, vtkIdType>, EdgeUse> edges;
+  std::map<vtkIdType, std::vector<std::pair<vtkIdType, vtkIdType>>> links;
+  for (const Tri& t : tris)
+  {
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || t[0] < 0)
+    {
+      ++topo.RepeatedIdTriangles;
+      continue;
+    }
+    ++topo.Faces;
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
+      EdgeUse& use = edges[{ std::min(a, b), std::max(a, b) }];
+      (a < b ? use.Forward : use.Backward) += 1;
+      links[a].emplace_back(b, c);
+    }
+  }
+  topo.Vertices = static_cast<long long>(links.size());
+  topo.Edges = static_cast<long long>(edges.size());
+  std::map<vtkIdType, std::vector<vtkIdType>> boundaryNext;
+  for (const auto& e : edges)
+  {
+    const int uses = e.second.Forward + e.second.Backward;
+    if (uses == 1)
+    {
+      ++topo.BoundaryEdges;
+      if (e.second.Forward)
+      {
+        boundaryNext[e.first.first].push_back(e.first.second);
+      }
+      else
+      {
+        boundaryNext[e.first.second].push_back(e.first.first);
+      }
+    }
+    else if (uses > 2)
+    {
+      ++topo.NonManifoldEdges;
+    }
+    else if (e.second.Forward != 1)
+    {
+      ++topo.MisorientedEdges;
+    }
+  }
+  // Boundary loops: follow each boundary edge to the boundary edge leaving its end.
+  std::set<std::pair<vtkIdType, vtkIdType>> seen;
+  for (const auto& start : boundaryNext)
+  {
+    for (vtkIdType b : start.second)
+    {
+      if (seen.count({ start.first, b }))
+      {
+        continue;
+      }
+      ++topo.BoundaryLoops;
+      vtkIdType a = start.first;
+      while (!seen.count({ a, b }))
+      {
+        seen.insert({ a, b });
+        auto next = boundaryNext.find(b);
+        if (next == boundaryNext.end())
+        {
+          break;
+        }
+        a = b;
+        b = next->second.front();
+      }
+    }
+  }
+  // A manifold vertex's link (the edges opposite it, oriented) is one path or one cycle.
+  for (const auto& link : links)
+  {
+    std::map<vtkIdType, vtkIdType> next;
+    std::map<vtkIdType, int> indegree;
+    bool ok = true;
+    for (const auto& e : link.second)
+    {
+      ok = ok && next.emplace(e.first, e.second).second;
+      ok = ok && ++indegree[e.second] == 1;
+    }
+    if (ok)
+    {
+      std::set<vtkIdType> visited;
+      int components = 0;
+      auto walk = [&](vtkIdType s)
+      {
+        ++components;
+        for (vtkIdType v = s; !visited.count(v);)
+        {
+          visited.insert(v);
+          auto it = next.find(v);
+          if (it == next.end())
+          {
+            break;
+          }
+          v = it->second;
+        }
+      };
+      for (const auto& e : next)
+      {
+        if (!indegree.count(e.first))
+        {
+          walk(e.first); // a path starts here
+        }
+      }
+      for (const auto& e : next)
+      {
+        if (!visited.count(e.first))
+        {
+          walk(e.first); // a cycle
+        }
+      }
+      ok = components == 1;
+    }
+    topo.NonManifoldVertices += ok ? 0 : 1;
+  }
+  return topo;
+}
+
+std::set<std::pair<vtkIdType, vtkIdType>> BoundaryEdges(const std::vector<Tri>& tris)
+{
+  std::map<std::pair<vtkIdType, vtkIdType>, int> directed;
+  for (const Tri& t : tris)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ++directed[{ t[k], t[(k + 1) % 3] }];
+    }
+  }
+  std::set<std::pair<vtkIdType, vtkIdType>> boundary;
+  for (const auto& e : directed)
+  {
+    if (!directed.count({ e.first.second, e.first.first }))
+    {
+      boundary.insert(e.first);
+    }
+  }
+  return boundary;
+}
+
+long long CountDegenerate(vtkPolyData* mesh, double relative)
+{
+  long long count = 0;
+  for (const Tri& t : GetTriangles(mesh))
+  {
+    if (t[0] < 0 || t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+    {
+      ++count;
+      continue;
+    }
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      mesh->GetPoint(t[k], p[k]);
+    }
+    double e[3][3], n[3];
+    double longest2 = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        e[k][j] = p[(k + 1) % 3][j] - p[k][j];
+      }
+      longest2 = std::max(longest2, e[k][0] * e[k][0] + e[k][1] * e[k][1] + e[k][2] * e[k][2]);
+    }
+    Cross(e[0], e[1], n);
+    if (!(Length(n) > relative * longest2))
+    {
+      ++count;
+    }
+  }
+  return count;
+}
+
+long long CountFlipped(vtkPolyData* mesh,
+                       const std::function<void(const double centroid[3], double n[3])>& reference)
+{
+  long long count = 0;
+  for (const Tri& t : GetTriangles(mesh))
+  {
+    if (t[0] < 0)
+    {
+      ++count;
+      continue;
+    }
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      mesh->GetPoint(t[k], p[k]);
+    }
+    double a[3], b[3], n[3], c[3], r[3];
+    for (int j = 0; j < 3; ++j)
+    {
+      a[j] = p[1][j] - p[0][j];
+      b[j] = p[2][j] - p[0][j];
+      c[j] = (p[0][j] + p[1][j] + p[2][j]) / 3.0;
+    }
+    Cross(a, b, n);
+    reference(c, r);
+    // Beyond 90 degrees (a triangle standing exactly perpendicular to the surface, which
+    // can happen when its three points lie on one great circle of a sphere, is not flipped).
+    if (!(n[0] * r[0] + n[1] * r[1] + n[2] * r[2] >= -1e-6 * Length(n) * Length(r)))
+    {
+      ++count;
+    }
+  }
+  return count;
+}
+
+void SphereNormal(const double c[3], double n[3])
+{
+  n[0] = c[0];
+  n[1] = c[1];
+  n[2] = c[2];
+}
+
+void TorusNormal(const double c[3], double n[3])
+{
+  const double u = std::atan2(c[1], c[0]);
+  n[0] = c[0] - std::cos(u);
+  n[1] = c[1] - std::sin(u);
+  n[2] = c[2];
+}
+
+void UpNormal(const double*, double n[3])
+{
+  n[0] = 0;
+  n[1] = 0;
+  n[2] = 1;
+}
+
+//------------------------------------------------------------------------------
+long long CheckPointDataCopied(vtkPolyData* input, vtkPolyData* output)
+{
+  long long bad = 0;
+  auto fail = [&](const std::string& what)
+  {
+    if (++bad <= 10)
+    {
+      ReportFailure(__FILE__, __LINE__, "point data copied", what);
+    }
+  };
+  const vtkIdType nIn = input->GetNumberOfPoints();
+  const vtkIdType nOut = output->GetNumberOfPoints();
+  auto* ids = vtkIdTypeArray::SafeDownCast(output->GetPointData()->GetArray("vtkOriginalPointIds"));
+  if (!ids || ids->GetNumberOfValues() != nOut)
+  {
+    fail("no valid vtkOriginalPointIds");
+    return bad;
+  }
+  if (nOut > 0 && input->GetPoints()->GetDataType() != output->GetPoints()->GetDataType())
+  {
+    fail("point coordinates changed type");
+    return bad;
+  }
+  std::vector<char> used(nIn, 0);
+  for (vtkIdType i = 0; i < nOut; ++i)
+  {
+    const vtkIdType o = ids->GetValue(i);
+    if (o < 0 || o >= nIn || used[o])
+    {
+      fail("vtkOriginalPointIds[" + std::to_string(i) + "] = " + std::to_string(o) +
+           " is out of range or repeated");
+      return bad;
+    }
+    used[o] = 1;
+    if (!SameTupleBytes(input->GetPoints()->GetData(), o, output->GetPoints()->GetData(), i))
+    {
+      fail("coordinates of output point " + std::to_string(i) + " differ from input point " +
+           std::to_string(o));
+    }
+  }
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* in = inPD->GetAbstractArray(a);
+    vtkAbstractArray* out = outPD->GetAbstractArray(in->GetName());
+    if (!SameKind(in, out))
+    {
+      fail(std::string("point array ") + NameOf(in) + " missing or of another type");
+      continue;
+    }
+    if (out->GetNumberOfTuples() != nOut)
+    {
+      fail(std::string("point array ") + NameOf(in) + " has the wrong number of tuples");
+      continue;
+    }
+    for (vtkIdType i = 0; i < nOut; ++i)
+    {
+      if (!SameTuple(in, ids->GetValue(i), out, i))
+      {
+        fail(std::string("point array ") + NameOf(in) + " tuple " + std::to_string(i) +
+             " is not a copy of input tuple " + std::to_string(ids->GetValue(i)));
+      }
+    }
+  }
+  if (outPD->GetNumberOfArrays() != inPD->GetNumberOfArrays() + 1)
+  {
+    fail("the output has " + std::to_string(outPD->GetNumberOfArrays()) +
+         " point arrays, expected the input's " + std::to_string(inPD->GetNumberOfArrays()) +
+         " + vtkOriginalPointIds");
+  }
+  if (inPD->GetScalars() &&
+      (!outPD->GetScalars() ||
+       std::string(NameOf(outPD->GetScalars())) != NameOf(inPD->GetScalars())))
+  {
+    fail("the active scalars are not the input's");
+  }
+  if (inPD->GetNormals() &&
+      (!outPD->GetNormals() ||
+       std::string(NameOf(outPD->GetNormals())) != NameOf(inPD->GetNormals())))
+  {
+    fail("the active normals are not the input's");
+  }
+  return bad;
+}
+
+long long CheckCellDataCopied(vtkPolyData* input, vtkPolyData* output, long long* untouched)
+{
+  long long bad = 0;
+  auto fail = [&](const std::string& what)
+  {
+    if (++bad <= 10)
+    {
+      ReportFailure(__FILE__, __LINE__, "cell data copied", what);
+    }
+  };
+  auto* inSource = vtkIdTypeArray::SafeDownCast(input->GetCellData()->GetArray("SourceId"));
+  auto* outSource = vtkIdTypeArray::SafeDownCast(output->GetCellData()->GetArray("SourceId"));
+  if (!inSource || !outSource)
+  {
+    fail("no SourceId cell array (Decorate the input)");
+    return bad;
+  }
+  const vtkIdType nInCells = input->GetNumberOfCells();
+  const vtkIdType nOutCells = output->GetNumberOfCells();
+  if (outSource->GetNumberOfValues() != nOutCells)
+  {
+    fail("SourceId has the wrong number of tuples");
+    return bad;
+  }
+  std::vector<char> used(nInCells, 0);
+  for (vtkIdType t = 0; t < nOutCells; ++t)
+  {
+    const vtkIdType s = outSource->GetValue(t);
+    if (s < 0 || s >= nInCells || inSource->GetValue(s) != s)
+    {
+      fail("SourceId[" + std::to_string(t) + "] = " + std::to_string(s) + " is not an input cell");
+      return bad;
+    }
+    if (input->GetCellType(s) == VTK_TRIANGLE && used[s]++)
+    {
+      fail("input triangle " + std::to_string(s) + " gave two output triangles");
+    }
+  }
+  vtkCellData* inCD = input->GetCellData();
+  vtkCellData* outCD = output->GetCellData();
+  for (int a = 0; a < inCD->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* in = inCD->GetAbstractArray(a);
+    vtkAbstractArray* out = outCD->GetAbstractArray(in->GetName());
+    if (!SameKind(in, out) || out->GetNumberOfTuples() != nOutCells)
+    {
+      fail(std::string("cell array ") + NameOf(in) + " missing or of another type or size");
+      continue;
+    }
+    for (vtkIdType t = 0; t < nOutCells; ++t)
+    {
+      if (!SameTuple(in, outSource->GetValue(t), out, t))
+      {
+        fail(std::string("cell array ") + NameOf(in) + " tuple " + std::to_string(t) +
+             " is not its source cell's");
+      }
+    }
+  }
+  // Output triangles identical to an input triangle come from that triangle.
+  std::map<Tri, vtkIdType> inputTriangles;
+  const vtkIdType polyOffset = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  const std::vector<Tri> inTris = GetTriangles(input);
+  for (size_t i = 0; i < inTris.size(); ++i)
+  {
+    if (inTris[i][0] >= 0)
+    {
+      inputTriangles[Canonical(inTris[i])] = polyOffset + static_cast<vtkIdType>(i);
+    }
+  }
+  const std::vector<Tri> outTris = GetOriginalTriangles(output);
+  long long identical = 0;
+  for (size_t t = 0; t < outTris.size(); ++t)
+  {
+    auto it = inputTriangles.find(Canonical(outTris[t]));
+    if (it != inputTriangles.end())
+    {
+      ++identical;
+      if (outSource->GetValue(static_cast<vtkIdType>(t)) != it->second)
+      {
+        fail("output triangle " + std::to_string(t) + " is input triangle " +
+             std::to_string(it->second) + " but its cell data comes from cell " +
+             std::to_string(outSource->GetValue(static_cast<vtkIdType>(t))));
+      }
+    }
+  }
+  if (untouched)
+  {
+    *untouched = identical;
+  }
+  return bad;
+}
+
+long long CheckFieldDataPassed(vtkPolyData* input, vtkPolyData* output)
+{
+  long long bad = 0;
+  vtkFieldData* in = input->GetFieldData();
+  vtkFieldData* out = output->GetFieldData();
+  for (int a = 0; a < in->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* x = in->GetAbstractArray(a);
+    vtkAbstractArray* y = out->GetAbstractArray(x->GetName());
+    bool same = SameKind(x, y) && x->GetNumberOfTuples() == y->GetNumberOfTuples();
+    for (vtkIdType i = 0; same && i < x->GetNumberOfTuples(); ++i)
+    {
+      same = SameTuple(x, i, y, i);
+    }
+    if (!same)
+    {
+      ++bad;
+      ReportFailure(__FILE__, __LINE__, "field data passed",
+                    std::string("field array ") + NameOf(x));
+    }
+  }
+  return bad;
+}
+
+//------------------------------------------------------------------------------
+int CheckDecimatedMesh(vtkPolyData* input, vtkPolyData* output, const Expectation& expected,
+                       const std::string& label)
+{
+  const int before = GetNumberOfFailures();
+  CD_CHECK_MSG(output->GetNumberOfVerts() == 0 && output->GetNumberOfLines() == 0 &&
+                 output->GetNumberOfStrips() == 0,
+               label << ": the output has cells other than triangles");
+  const std::vector<Tri> tris = GetOriginalTriangles(output);
+  const Topology topo = AnalyseTopology(tris);
+  CD_CHECK_MSG(topo.NonManifoldEdges == 0 && topo.NonManifoldVertices == 0 &&
+                 topo.MisorientedEdges == 0 && topo.RepeatedIdTriangles == 0,
+               label << ": " << topo);
+  CD_CHECK_MSG(topo.Euler() == expected.Euler, label << ": " << topo);
+  if (expected.Closed)
+  {
+    CD_CHECK_MSG(topo.BoundaryEdges == 0, label << ": " << topo);
+  }
+  else
+  {
+    CD_CHECK_MSG(topo.BoundaryLoops == expected.BoundaryLoops, label << ": " << topo);
+  }
+  CD_CHECK_MSG(topo.Vertices == output->GetNumberOfPoints(),
+               label << ": " << output->GetNumberOfPoints() << " output points, " << topo.Vertices
+                     << " used by triangles");
+  const long long degenerate = CountDegenerate(output);
+  CD_CHECK_MSG(degenerate == 0, label << ": " << degenerate << " degenerate triangles");
+  if (expected.Normal)
+  {
+    const long long flipped = CountFlipped(output, expected.Normal);
+    CD_CHECK_MSG(flipped == 0, label << ": " << flipped << " flipped triangles");
+  }
+  CD_CHECK_MSG(CheckPointDataCopied(input, output) == 0, label << ": point data");
+  if (expected.Decorated)
+  {
+    CD_CHECK_MSG(CheckCellDataCopied(input, output) == 0, label << ": cell data");
+    CD_CHECK_MSG(CheckFieldDataPassed(input, output) == 0, label << ": field data");
+  }
+  return GetNumberOfFailures() - before;
+}
+
+//------------------------------------------------------------------------------
+void Decorate(vtkPolyData* mesh)
+{
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(n);
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetName("TCoords");
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetNumberOfTuples(n);
+  vtkNew<vtkIntArray> label;
+  label->SetName("Label");
+  label->SetNumberOfTuples(n);
+  vtkNew<vtkDoubleArray> bits;
+  bits->SetName("Bits");
+  bits->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    const double r = Length(p) > 0 ? Length(p) : 1.0;
+    normals->SetTuple3(i, p[0] / r, p[1] / r, p[2] / r);
+    tcoords->SetTuple2(i, 0.5 + 0.5 * p[0], std::atan2(p[1], p[2]) + 1e-3 * i);
+    label->SetValue(i, static_cast<int>((i * 7919) % 1000) - 500);
+    switch (i % 4)
+    {
+      case 0:
+        bits->SetValue(i, std::numeric_limits<double>::quiet_NaN());
+        break;
+      case 1:
+        bits->SetValue(i, -0.0);
+        break;
+      case 2:
+        bits->SetValue(i, std::numeric_limits<double>::denorm_min() * static_cast<double>(i));
+        break;
+      default:
+        bits->SetValue(i, 1e300 * static_cast<double>(i));
+    }
+  }
+  mesh->GetPointData()->SetNormals(normals);
+  mesh->GetPointData()->SetTCoords(tcoords);
+  mesh->GetPointData()->AddArray(label);
+  mesh->GetPointData()->AddArray(bits);
+
+  const vtkIdType cells = mesh->GetNumberOfCells();
+  vtkNew<vtkIdTypeArray> source;
+  source->SetName("SourceId");
+  source->SetNumberOfValues(cells);
+  vtkNew<vtkFloatArray> material;
+  material->SetName("Material");
+  material->SetNumberOfValues(cells);
+  for (vtkIdType c = 0; c < cells; ++c)
+  {
+    source->SetValue(c, c);
+    material->SetValue(c, static_cast<float>(100.0 * std::sin(0.37 * static_cast<double>(c))));
+  }
+  mesh->GetCellData()->AddArray(source);
+  mesh->GetCellData()->AddArray(material);
+
+  vtkNew<vtkDoubleArray> provenance;
+  provenance->SetName("Provenance");
+  provenance->InsertNextValue(1.5);
+  provenance->InsertNextValue(-2.25);
+  provenance->InsertNextValue(1e-300);
+  vtkNew<vtkStringArray> note;
+  note->SetName("Note");
+  note->InsertNextValue("generated by the ColorDecimation tests");
+  mesh->GetFieldData()->AddArray(provenance);
+  mesh->GetFieldData()->AddArray(note);
+}
+
+vtkSmartPointer<vtkPolyData> Transformed(vtkPolyData* mesh, double scale,
+                                         const double translation[3])
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(mesh);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    for (int k = 0; k < 3; ++k)
+    {
+      p[k] = p[k] * scale + translation[k];
+    }
+    points->SetPoint(i, p);
+  }
+  copy->SetPoints(points);
+  return copy;
+}
+
+vtkSmartPointer<vtkPolyData> WithFloatPoints(vtkPolyData* mesh)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(mesh);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    points->SetPoint(i, mesh->GetPoint(i));
+  }
+  copy->SetPoints(points);
+  return copy;
+}
+
+} // namespace testing
+} // namespace colordecimation

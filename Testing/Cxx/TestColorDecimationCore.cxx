@@ -1,0 +1,973 @@
+// Unit tests of the algorithm core (Filters/Core): cost terms against hand-computed values,
+// the vertex heap against a reference, the corner table and the collapse rules.
+#include "ColorDecimationTestUtilities.h"
+
+#include "CollapseRules.h"
+#include "ColorMetric.h"
+#include "Decimator.h"
+#include "HalfEdgeMesh.h"
+#include "Quadric.h"
+#include "VertexHeap.h"
+
+#include "ColorDecimationMeshes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <map>
+#include <random>
+#include <set>
+
+using namespace colordecimation;
+using namespace colordecimation::testing;
+
+namespace
+{
+const double Sqrt2 = std::sqrt(2.0);
+const double Sqrt3 = std::sqrt(3.0);
+
+double Dot(const double a[3], const double b[3])
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/// Triangles (as int32) and float positions of a generated mesh.
+struct PlainMesh
+{
+  std::vector<int32_t> Triangles;
+  std::vector<float> Positions;
+  std::vector<double> Points;
+  int32_t NumberOfPoints() const { return static_cast<int32_t>(this->Points.size() / 3); }
+  int32_t NumberOfTriangles() const { return static_cast<int32_t>(this->Triangles.size() / 3); }
+};
+
+PlainMesh ToPlain(vtkPolyData* mesh)
+{
+  PlainMesh plain;
+  for (const Tri& t : GetTriangles(mesh))
+  {
+    for (vtkIdType v : t)
+    {
+      plain.Triangles.push_back(static_cast<int32_t>(v));
+    }
+  }
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    for (double x : p)
+    {
+      plain.Points.push_back(x);
+      plain.Positions.push_back(static_cast<float>(x));
+    }
+  }
+  return plain;
+}
+
+/**
+ * The square pyramid used for hand computations: apex 0 at (0,0,1), ring 1..4 at (1,0,0),
+ * (0,1,0), (-1,0,0), (0,-1,0); four triangles (0,i,i+1) seen counter-clockwise from above,
+ * no base (open, the ring is the boundary). Every one of its 8 edges has length sqrt(2), so
+ * the normalised frame is: subtract the bounding-box centre (0,0,1/2), divide by sqrt(2).
+ * Each face is equilateral with side 1 there (area sqrt(3)/4) and its unit normal is
+ * (+-1,+-1,1)/sqrt(3).
+ */
+const double PyramidPoints[15] = { 0, 0, 1, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0 };
+const int32_t PyramidTriangles[12] = { 0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 1 };
+/// Colours: apex black, ring (0.6,0,0), black, (0,0.8,0), black.
+const float PyramidColors[15] = { 0, 0, 0, 0.6f, 0, 0, 0, 0, 0, 0, 0.8f, 0, 0, 0, 0 };
+
+//------------------------------------------------------------------------------
+void TestQuadric()
+{
+  // One plane through the centre: Q(d) = w (n.d)^2.
+  Quadric q;
+  const double nz[3] = { 0, 0, 1 };
+  q.AddPlaneThroughCentre(nz, 2.0);
+  const double d1[3] = { 1, 2, 3 };
+  CD_CHECK_NEAR(q.Evaluate(d1), 18.0, 1e-12); // 2 * 3^2
+  const double zero[3] = { 0, 0, 0 };
+  CD_CHECK_NEAR(q.Evaluate(zero), 0.0, 1e-12);
+
+  // An oblique plane exercises the off-diagonal terms: n = (0.6, 0.8, 0), w = 0.5.
+  Quadric oblique;
+  const double n2[3] = { 0.6, 0.8, 0 };
+  oblique.AddPlaneThroughCentre(n2, 0.5);
+  const double d2[3] = { 1, -2, 7 };
+  // n.d = 0.6 - 1.6 = -1, so 0.5 * 1 = 0.5.
+  CD_CHECK_NEAR(oblique.Evaluate(d2), 0.5, 1e-6);
+  const double d3[3] = { 3, 4, -1 };
+  // n.d = 1.8 + 3.2 = 5, so 0.5 * 25 = 12.5.
+  CD_CHECK_NEAR(oblique.Evaluate(d3), 12.5, 1e-6);
+
+  // Sum of planes vs the direct sum of weighted squared plane distances, random points.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Quadric sum;
+  std::vector<std::array<double, 4>> planes;
+  for (int i = 0; i < 5; ++i)
+  {
+    double n[3] = { u(rng), u(rng), u(rng) };
+    const double l = std::sqrt(Dot(n, n));
+    for (double& x : n)
+    {
+      x /= l;
+    }
+    const double w = 0.5 + 0.5 * (u(rng) + 1);
+    sum.AddPlaneThroughCentre(n, w);
+    planes.push_back({ n[0], n[1], n[2], w });
+  }
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    const double d[3] = { 3 * u(rng), 3 * u(rng), 3 * u(rng) };
+    double direct = 0;
+    for (const auto& p : planes)
+    {
+      const double dist = p[0] * d[0] + p[1] * d[1] + p[2] * d[2];
+      direct += p[3] * dist * dist;
+    }
+    CD_CHECK_NEAR(sum.Evaluate(d), direct, 1e-6);
+  }
+
+  // AddShifted: v0 at p0 with the plane z = p0.z (w 2); v1 at p1 = p0 + (1,2,3) with the
+  // plane x = p1.x (w 3). The merged quadric, centred at p1, at offset y from p1 is
+  // 2 (3 + y_z)^2 + 3 y_x^2.
+  Quadric q0, q1;
+  q0.AddPlaneThroughCentre(nz, 2.0);
+  const double nx[3] = { 1, 0, 0 };
+  q1.AddPlaneThroughCentre(nx, 3.0);
+  const double shift[3] = { 1, 2, 3 }; // p1 - p0
+  q1.AddShifted(q0, shift);
+  CD_CHECK_NEAR(q1.Evaluate(zero), 18.0, 1e-6);
+  const double y1[3] = { 1, 1, 1 };
+  CD_CHECK_NEAR(q1.Evaluate(y1), 35.0, 1e-6); // 2 * 16 + 3
+  const double y2[3] = { -2, 5, -3 };
+  CD_CHECK_NEAR(q1.Evaluate(y2), 12.0, 1e-6); // 2 * 0 + 3 * 4
+
+  // AddShifted of random quadrics (with their own b and c) against evaluating both at the
+  // same absolute point.
+  for (int trial = 0; trial < 10; ++trial)
+  {
+    Quadric a, b;
+    double na[3] = { u(rng), u(rng), u(rng) }, nb[3] = { u(rng), u(rng), u(rng) };
+    a.AddPlaneThroughCentre(na, 1.3);
+    b.AddPlaneThroughCentre(nb, 0.7);
+    const double s1[3] = { u(rng), u(rng), u(rng) };
+    b.AddShifted(a, s1); // b now has a linear and a constant part
+    Quadric c;
+    double nc[3] = { u(rng), u(rng), u(rng) };
+    c.AddPlaneThroughCentre(nc, 2.1);
+    const double s2[3] = { u(rng), u(rng), u(rng) }; // p_c - p_b
+    Quadric merged = c;
+    merged.AddShifted(b, s2);
+    const double y[3] = { u(rng), u(rng), u(rng) }; // offset from p_c
+    const double yb[3] = { y[0] + s2[0], y[1] + s2[1], y[2] + s2[2] };
+    CD_CHECK_NEAR(merged.Evaluate(y), c.Evaluate(y) + b.Evaluate(yb), 1e-5);
+  }
+}
+
+//------------------------------------------------------------------------------
+void TestVisualImportance()
+{
+  CD_CHECK_NEAR(VisualImportance(0.0, 0.0), 0.0, 0.0);
+  CD_CHECK_NEAR(VisualImportance(3.0, 1.5), 2.0, 1e-15);
+
+  // On the pyramid. Apex black; its neighbours at colour distances 0.6, 0, 0.8, 0:
+  // I = (0.6 + 0 + 0.8 + 0) / 0.8 = 1.75, max 0.8.
+  HalfEdgeMesh mesh;
+  mesh.Build(5, PyramidTriangles, 4);
+  std::vector<float> positions(PyramidPoints, PyramidPoints + 15);
+  std::vector<VertexMetric> metrics;
+  InitializeVertexMetrics(mesh, positions.data(), PyramidColors, metrics);
+  CD_CHECK(metrics.size() == 5);
+  CD_CHECK_NEAR(metrics[0].Importance, 1.75, 1e-6);
+  CD_CHECK_NEAR(metrics[0].MaxColorDistance, 0.8, 1e-6);
+  // Ring vertex 1 (0.6,0,0): neighbours apex (0.6), 2 (0.6), 4 (0.6): I = 3.
+  CD_CHECK_NEAR(metrics[1].Importance, 3.0, 1e-6);
+  // Ring vertex 2 (black): neighbours apex (0), 1 (0.6), 3 (0.8): I = 1.4 / 0.8 = 1.75.
+  CD_CHECK_NEAR(metrics[2].Importance, 1.75, 1e-6);
+  // Ring vertex 3 (0,0.8,0): neighbours apex, 2, 4, all at 0.8: I = 3.
+  CD_CHECK_NEAR(metrics[3].Importance, 3.0, 1e-6);
+
+  // The 0 case: one colour everywhere gives I = 0, not NaN.
+  const float grey[15] = { 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f,
+                           0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f };
+  InitializeVertexMetrics(mesh, positions.data(), grey, metrics);
+  for (const VertexMetric& m : metrics)
+  {
+    CD_CHECK(m.Importance == 0.0f);
+    CD_CHECK(m.MaxColorDistance == 0.0f);
+  }
+  // No colours at all: importance 0.
+  InitializeVertexMetrics(mesh, positions.data(), nullptr, metrics);
+  CD_CHECK(metrics[0].Importance == 0.0f);
+
+  // The area-weighted quadric (eq. 8) of the apex in the input's units: each face has area
+  // sqrt(3)/2 and normal (+-1,+-1,1)/sqrt(3). At d = (0,0,1): each face gives
+  // sqrt(3)/2 * 1/3, the four sqrt(3) * 2/3 = 1.1547.
+  InitializeVertexMetrics(mesh, positions.data(), PyramidColors, metrics);
+  const double up[3] = { 0, 0, 1 };
+  CD_CHECK_NEAR(metrics[0].Q.Evaluate(up), 2.0 * Sqrt3 / 3.0, 1e-6);
+  // Ring vertex 1 has faces (0,1,2) and (0,4,1), normals (1,1,1)/sqrt3 and (1,-1,1)/sqrt3;
+  // at d = (0,0,1) each gives sqrt(3)/2 * 1/3: total 1/sqrt(3).
+  CD_CHECK_NEAR(metrics[1].Q.Evaluate(up), 1.0 / Sqrt3, 1e-6);
+}
+
+//------------------------------------------------------------------------------
+void TestCollapseColorError()
+{
+  // v0 at the origin, black. Ring: i0 at (2,0,0) red, i1 at (0,1,0) black, i2 at (-1,0,0) green.
+  const double p0[3] = { 0, 0, 0 }, c0[3] = { 0, 0, 0 };
+  Ring ring;
+  const double pa[3] = { 2, 0, 0 }, ca[3] = { 1, 0, 0 };
+  const double pb[3] = { 0, 1, 0 }, cb[3] = { 0, 0, 0 };
+  const double pc[3] = { -1, 0, 0 }, cc[3] = { 0, 1, 0 };
+  ring.Add(10, pa, ca, true);
+  ring.Add(11, pb, cb, true);
+  ring.Add(12, pc, cc, true);
+
+  // Collapse onto i0: sum_i | |c0-ci||p0-pi| - |c1-ci||p1-pi| |
+  //   i0: |1*2 - 0|                 = 2
+  //   i1: |0*1 - 1*sqrt5|           = sqrt5
+  //   i2: |1*1 - sqrt2*3|           = 3 sqrt2 - 1
+  // total 1 + sqrt5 + 3 sqrt2 = 7.4787. The paper's misprint (|c1-ci|^2 for the second
+  // product) would give 2 + 1 + 1 = 4.
+  const double expected0 = 1.0 + std::sqrt(5.0) + 3.0 * Sqrt2;
+  const double misprint0 = 4.0;
+  CD_CHECK_NEAR(CollapseColorError(p0, c0, ring, 0), expected0, 1e-12);
+  CD_CHECK(std::abs(expected0 - misprint0) > 1.0);
+  // Onto i2: i0: |2 - sqrt2*3| = 3 sqrt2 - 2; i1: |0 - 1*sqrt2| = sqrt2; i2: |1 - 0| = 1:
+  // total 4 sqrt2 - 1 = 4.6569 (misprint: |2 - 2| + |0 - 1| + 1 = 2).
+  CD_CHECK_NEAR(CollapseColorError(p0, c0, ring, 2), 4.0 * Sqrt2 - 1.0, 1e-12);
+  // Onto i1 (black, at (0,1,0)): i0: |2 - 1*sqrt5| = sqrt5 - 2; i1: 0; i2: |1 - 1*sqrt2|:
+  // total sqrt5 + sqrt2 - 3.
+  CD_CHECK_NEAR(CollapseColorError(p0, c0, ring, 1), std::sqrt(5.0) + Sqrt2 - 3.0, 1e-12);
+
+  // The batch version agrees with the reference for every member of the ring.
+  double errors[3] = { -1, -1, -1 };
+  CollapseColorErrors(p0, c0, ring, errors);
+  for (int j = 0; j < 3; ++j)
+  {
+    CD_CHECK_NEAR(errors[j], CollapseColorError(p0, c0, ring, j), 1e-12);
+  }
+
+  // A ring of one colour around a vertex of the same colour: no colour error.
+  Ring flat;
+  flat.Add(0, pa, c0, true);
+  flat.Add(1, pb, c0, true);
+  CD_CHECK(CollapseColorError(p0, c0, flat, 0) == 0.0);
+}
+
+//------------------------------------------------------------------------------
+void TestTotalCost()
+{
+  // eq. 17: (1 + Q)(1 + I)(1 + C).
+  CD_CHECK_NEAR(TotalCost(0.5, 2.0, 3.0), 18.0, 1e-15);
+  CD_CHECK_NEAR(TotalCost(0.0, 0.0, 0.0), 1.0, 1e-15);
+  CD_CHECK_NEAR(TotalCost(1.0 / Sqrt3, 1.75, 1.0 + Sqrt2),
+                (1.0 + 1.0 / Sqrt3) * 2.75 * (2.0 + Sqrt2), 1e-14);
+  // Not a sum: (1+1)(1+1)(1+1) = 8, the sum of the terms + 1 would be 4.
+  CD_CHECK_NEAR(TotalCost(1.0, 1.0, 1.0), 8.0, 1e-15);
+}
+
+//------------------------------------------------------------------------------
+/// The hand-computed cost of the apex -> ring vertex 1 collapse of the pyramid.
+void CheckPyramidCosts(double scale, const double translation[3])
+{
+  std::vector<double> points(PyramidPoints, PyramidPoints + 15);
+  for (int i = 0; i < 15; ++i)
+  {
+    points[i] = points[i] * scale + translation[i % 3];
+  }
+  DecimatorInput input;
+  input.NumberOfPoints = 5;
+  input.Points = points.data();
+  input.Colors = PyramidColors;
+  input.NumberOfTriangles = 4;
+  input.Triangles = PyramidTriangles;
+
+  DecimatorOptions options;
+  Decimator decimator(options);
+  const DecimatorStatistics stats = decimator.Run(input, 4); // target met: no collapse
+  CD_CHECK(stats.Collapses == 0);
+  CD_CHECK_NEAR(stats.MeanEdgeLength, Sqrt2 * scale, 1e-12);
+  // The frame: apex at (0,0,1/2)/sqrt2, ring vertex 1 at (1,0,-1/2)/sqrt2.
+  const std::vector<float>& p = decimator.GetNormalizedPositions();
+  CD_CHECK_NEAR(p[2], 0.5 / Sqrt2, 1e-6);
+  CD_CHECK_NEAR(p[3], 1.0 / Sqrt2, 1e-6);
+  CD_CHECK_NEAR(p[5], -0.5 / Sqrt2, 1e-6);
+
+  // Q(apex -> 1): d = p1 - p0 = (1,0,-1)/sqrt2, faces of area sqrt3/4 with n.d = 0, -2/sqrt6,
+  // -2/sqrt6, 0: Q = 2 * sqrt3/4 * 4/6 = 1/sqrt3 (Q(v1) is 0 at p1).
+  const double q = 1.0 / Sqrt3;
+  // I(apex) = 1.75 (see TestVisualImportance).
+  const double importance = 1.75;
+  // C(apex -> 1): all spokes have length 1, rim 1-2 and 1-4 length 1, 1-3 length sqrt2.
+  //   i=1: |0.6*1 - 0| = 0.6; i=2: |0 - 0.6*1| = 0.6; i=3: |0.8*1 - 1.0*sqrt2| = sqrt2 - 0.8;
+  //   i=4: |0 - 0.6*1| = 0.6: C = 1 + sqrt2.
+  const double c = 1.0 + Sqrt2;
+  // The misprint would give 0.6 + 0.36 + |0.8 - 1| + 0.36 = 1.52.
+  const double expected = (1.0 + q) * (1.0 + importance) * (1.0 + c); // 14.8097
+  const double misprinted = (1.0 + q) * (1.0 + importance) * (1.0 + 1.52);
+  CD_CHECK(std::abs(expected - misprinted) > 1.0);
+  CD_CHECK_NEAR(decimator.CollapseCost(0, 1), expected, 1e-5);
+  CD_CHECK_NEAR(decimator.GetMetrics()[0].Importance, importance, 1e-6);
+  const double d[3] = { 1 / Sqrt2, 0, -1 / Sqrt2 };
+  CD_CHECK_NEAR(decimator.GetMetrics()[0].Q.Evaluate(d), q, 1e-5);
+
+  // Apex -> 3 (the mirror image: same Q; colour: i=3: |0.8 - 0| = 0.8; i=1: |0.6*1 - 1.0*sqrt2|;
+  // i=2: |0 - 0.8| ; i=4: |0 - 0.8|): C = 2.4 + sqrt2 - 0.6 = 1.8 + sqrt2.
+  CD_CHECK_NEAR(decimator.CollapseCost(0, 3), (1.0 + q) * 2.75 * (2.8 + Sqrt2), 1e-5);
+  // Not neighbours (1 and 3): negative.
+  CD_CHECK(decimator.CollapseCost(1, 3) < 0);
+
+  // GeometryWeight scales Q: w = 3 gives (1 + sqrt3) (1 + I) (1 + C).
+  DecimatorOptions weighted;
+  weighted.GeometryWeight = 3.0;
+  Decimator heavy(weighted);
+  heavy.Run(input, 4);
+  CD_CHECK_NEAR(heavy.CollapseCost(0, 1), (1.0 + Sqrt3) * 2.75 * (2.0 + Sqrt2), 1e-5);
+
+  // The Geometry metric is Q alone.
+  DecimatorOptions geometric;
+  geometric.Metric = ErrorMetric::Geometry;
+  Decimator geometry(geometric);
+  geometry.Run(input, 4);
+  CD_CHECK_NEAR(geometry.CollapseCost(0, 1), q, 1e-5);
+  // Ring vertex 2 -> 1 is a boundary collapse along the rim: the faces of 2 are (0,1,2) and
+  // (0,2,3); (0,1,2) disappears. Q(2) at p1 - p2 = (1,-1,0)/sqrt2: face (0,1,2) normal
+  // (1,1,1)/sqrt3 gives 0, face (0,2,3) normal (-1,1,1)/sqrt3 gives sqrt3/4 * (2/sqrt6)^2
+  // = sqrt3/6. Q(1) at p1 is 0.
+  CD_CHECK_NEAR(geometry.CollapseCost(2, 1), Sqrt3 / 6.0, 1e-5);
+}
+
+void TestCollapseCost()
+{
+  const double none[3] = { 0, 0, 0 };
+  CheckPyramidCosts(1.0, none);
+}
+
+void TestCollapseCostFrame()
+{
+  // The same costs whatever the input's unit and position (normalised frame).
+  const double shift1[3] = { 0.02, -0.01, 0.005 };
+  CheckPyramidCosts(1e-3, shift1);
+  const double shift2[3] = { 1e5, -5e4, 3e4 };
+  CheckPyramidCosts(1e4, shift2);
+  const double shift3[3] = { 10, -20, 5 };
+  CheckPyramidCosts(1.0, shift3);
+}
+
+//------------------------------------------------------------------------------
+void TestVertexHeap()
+{
+  const int32_t n = 400;
+  VertexHeap heap(n);
+  std::map<int32_t, double> reference; // vertex -> key
+  std::mt19937 rng(12345);
+  std::uniform_int_distribution<int32_t> vertex(0, n - 1);
+  std::uniform_int_distribution<int> op(0, 9);
+  std::uniform_int_distribution<int> coarse(0, 20); // many equal keys
+  std::uniform_real_distribution<double> fine(-1e3, 1e3);
+  auto smallest = [&]()
+  {
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& e : reference)
+    {
+      best = std::min(best, e.second);
+    }
+    return best;
+  };
+  long long pops = 0;
+  for (int step = 0; step < 30000; ++step)
+  {
+    const int o = op(rng);
+    if (o < 5)
+    {
+      const int32_t v = vertex(rng);
+      const double key = (step % 2) ? fine(rng) : 0.25 * coarse(rng);
+      heap.Set(v, key);
+      reference[v] = key;
+    }
+    else if (o < 8)
+    {
+      const int32_t v = vertex(rng);
+      heap.Remove(v);
+      reference.erase(v);
+    }
+    else if (!reference.empty())
+    {
+      const double best = smallest();
+      const int32_t v = heap.Pop();
+      ++pops;
+      CD_CHECK_MSG(reference.count(v) && reference[v] == best,
+                   "popped " << v << " with key " << (reference.count(v) ? reference[v] : -1e300)
+                             << ", smallest is " << best);
+      reference.erase(v);
+      CD_CHECK(!heap.Contains(v));
+    }
+    CD_CHECK(heap.Size() == reference.size());
+    CD_CHECK(heap.Empty() == reference.empty());
+    if (!reference.empty())
+    {
+      CD_CHECK(heap.GetKey(heap.Top()) == smallest());
+    }
+    if (step % 997 == 0)
+    {
+      for (int32_t v = 0; v < n; ++v)
+      {
+        CD_CHECK(heap.Contains(v) == (reference.count(v) > 0));
+        if (reference.count(v))
+        {
+          CD_CHECK(heap.GetKey(v) == reference[v]);
+        }
+      }
+    }
+    if (GetNumberOfFailures() > 20)
+    {
+      return;
+    }
+  }
+  CD_CHECK(pops > 1000);
+  // Drain: keys come out sorted, as the sorted reference.
+  std::vector<double> expected;
+  for (const auto& e : reference)
+  {
+    expected.push_back(e.second);
+  }
+  std::sort(expected.begin(), expected.end());
+  std::vector<double> drained;
+  while (!heap.Empty())
+  {
+    const int32_t v = heap.Top();
+    drained.push_back(heap.GetKey(v));
+    CD_CHECK(heap.Pop() == v);
+  }
+  CD_CHECK(drained == expected);
+  // Reset empties it.
+  heap.Set(3, 1.0);
+  heap.Reset(10);
+  CD_CHECK(heap.Empty() && !heap.Contains(3));
+}
+
+//------------------------------------------------------------------------------
+/// Every structural invariant of a corner table; returns the number of violations.
+long long CheckMeshConsistency(const HalfEdgeMesh& mesh, bool closed)
+{
+  long long bad = 0;
+  auto fail = [&](const std::string& what)
+  {
+    if (++bad <= 5)
+    {
+      ReportFailure(__FILE__, __LINE__, "half-edge mesh consistent", what);
+    }
+  };
+  const int32_t faces = mesh.GetNumberOfFaceSlots();
+  const int32_t n = mesh.GetNumberOfVertices();
+  std::vector<int> corners(n, 0);
+  long long live = 0;
+  for (int32_t f = 0; f < faces; ++f)
+  {
+    if (!mesh.IsFaceAlive(f))
+    {
+      continue;
+    }
+    ++live;
+    int32_t tri[3];
+    mesh.GetFace(f, tri);
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
+    {
+      fail("face " + std::to_string(f) + " repeats a vertex");
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const int32_t h = 3 * f + k;
+      if (tri[k] < 0 || mesh.IsRemoved(tri[k]))
+      {
+        fail("face " + std::to_string(f) + " uses a removed vertex");
+        continue;
+      }
+      ++corners[tri[k]];
+      const int32_t t = mesh.Twin(h);
+      if (t < 0)
+      {
+        if (closed)
+        {
+          fail("half-edge " + std::to_string(h) + " has no twin on a closed mesh");
+        }
+        continue;
+      }
+      if (!mesh.IsFaceAlive(t / 3) || mesh.Twin(t) != h || mesh.Origin(t) != mesh.Target(h) ||
+          mesh.Target(t) != mesh.Origin(h))
+      {
+        fail("twin of half-edge " + std::to_string(h) + " is inconsistent");
+      }
+    }
+  }
+  if (live != mesh.GetNumberOfLiveFaces())
+  {
+    fail("live face count");
+  }
+  for (int32_t v = 0; v < n; ++v)
+  {
+    if (mesh.IsRemoved(v))
+    {
+      if (mesh.Outgoing(v) != -1 || corners[v] != 0)
+      {
+        fail("removed vertex " + std::to_string(v) + " still used");
+      }
+      continue;
+    }
+    if (corners[v] == 0)
+    {
+      continue;
+    }
+    const int32_t out = mesh.Outgoing(v);
+    if (out < 0 || !mesh.IsFaceAlive(out / 3) || mesh.Origin(out) != v)
+    {
+      fail("outgoing half-edge of vertex " + std::to_string(v));
+      continue;
+    }
+    if (mesh.IsLocked(v))
+    {
+      continue;
+    }
+    int visited = 0;
+    bool hasBoundary = false;
+    mesh.ForEachOutgoing(v,
+                         [&](int32_t h)
+                         {
+                           ++visited;
+                           hasBoundary = hasBoundary || mesh.Twin(h) < 0;
+                           if (mesh.Origin(h) != v)
+                           {
+                             fail("circulation left vertex " + std::to_string(v));
+                           }
+                         });
+    if (visited != corners[v])
+    {
+      fail("circulating vertex " + std::to_string(v) + " visits " + std::to_string(visited) +
+           " of its " + std::to_string(corners[v]) + " corners");
+    }
+    if (hasBoundary && mesh.Twin(out) >= 0)
+    {
+      fail("boundary vertex " + std::to_string(v) + " does not start at its boundary");
+    }
+  }
+  return bad;
+}
+
+/// V - E + F of the live faces.
+long long Euler(const HalfEdgeMesh& mesh)
+{
+  std::vector<Tri> tris;
+  for (int32_t f = 0; f < mesh.GetNumberOfFaceSlots(); ++f)
+  {
+    if (mesh.IsFaceAlive(f))
+    {
+      int32_t t[3];
+      mesh.GetFace(f, t);
+      tris.push_back({ t[0], t[1], t[2] });
+    }
+  }
+  return AnalyseTopology(tris).Euler();
+}
+
+void TestHalfEdgeBuildClosed()
+{
+  for (auto poly : { meshes::Icosphere(3, meshes::Pattern::Constant),
+                     meshes::Torus(24, 10, meshes::Pattern::Constant) })
+  {
+    const PlainMesh m = ToPlain(poly);
+    HalfEdgeMesh mesh;
+    const MeshBuildReport report =
+      mesh.Build(m.NumberOfPoints(), m.Triangles.data(), m.NumberOfTriangles());
+    CD_CHECK(report.BoundaryEdges == 0);
+    CD_CHECK(report.NonManifoldEdges == 0);
+    CD_CHECK(report.NonManifoldVertices == 0);
+    CD_CHECK(report.LockedVertices == 0);
+    CD_CHECK(report.IsolatedVertices == 0);
+    CD_CHECK(mesh.GetNumberOfLiveFaces() == m.NumberOfTriangles());
+    CD_CHECK(CheckMeshConsistency(mesh, true) == 0);
+    // Sum of valences = twice the number of edges = 3 F.
+    long long valences = 0;
+    for (int32_t v = 0; v < m.NumberOfPoints(); ++v)
+    {
+      CD_CHECK(!mesh.IsBoundaryVertex(v) && mesh.IsCollapsible(v));
+      valences += mesh.Valence(v);
+      // FindHalfEdge agrees with the face list.
+      mesh.ForEachNeighbor(v,
+                           [&](int32_t u)
+                           {
+                             const int32_t h = mesh.FindHalfEdge(v, u);
+                             CD_CHECK(h >= 0 && mesh.Origin(h) == v && mesh.Target(h) == u);
+                           });
+    }
+    CD_CHECK(valences == 3LL * m.NumberOfTriangles());
+  }
+}
+
+void TestHalfEdgeBuildOpen()
+{
+  const int nx = 12, ny = 7;
+  const PlainMesh m = ToPlain(meshes::Grid(nx, ny, meshes::Pattern::Constant));
+  HalfEdgeMesh mesh;
+  const MeshBuildReport report =
+    mesh.Build(m.NumberOfPoints(), m.Triangles.data(), m.NumberOfTriangles());
+  CD_CHECK(report.BoundaryEdges == 2 * (nx + ny));
+  CD_CHECK(report.LockedVertices == 0);
+  CD_CHECK(CheckMeshConsistency(mesh, false) == 0);
+  int boundaryVertices = 0;
+  long long valences = 0;
+  for (int32_t v = 0; v < m.NumberOfPoints(); ++v)
+  {
+    const int i = v % (nx + 1), j = v / (nx + 1);
+    const bool onBorder = i == 0 || j == 0 || i == nx || j == ny;
+    CD_CHECK(mesh.IsBoundaryVertex(v) == onBorder);
+    boundaryVertices += mesh.IsBoundaryVertex(v) ? 1 : 0;
+    valences += mesh.Valence(v);
+  }
+  CD_CHECK(boundaryVertices == 2 * (nx + ny));
+  // 2E = sum of valences; E = (3F + boundary edges) / 2.
+  CD_CHECK(valences == 3LL * m.NumberOfTriangles() + 2 * (nx + ny));
+  // The interior vertex (1,1) has valence 6; the corner (0,0) valence 3; (nx,0) valence 2.
+  CD_CHECK(mesh.Valence((nx + 1) + 1) == 6);
+  CD_CHECK(mesh.Valence(0) == 3);
+  CD_CHECK(mesh.Valence(nx) == 2);
+  // A single triangle: three boundary edges.
+  const int32_t one[3] = { 0, 1, 2 };
+  HalfEdgeMesh single;
+  CD_CHECK(single.Build(3, one, 1).BoundaryEdges == 3);
+  CD_CHECK(single.IsBoundaryVertex(0) && single.Valence(0) == 2);
+}
+
+void TestHalfEdgeNonManifold()
+{
+  // Three triangles on the edge 0-1 (a fin), plus an unrelated triangle.
+  const int32_t fin[12] = { 0, 1, 2, 1, 0, 3, 0, 1, 4, 5, 6, 7 };
+  HalfEdgeMesh mesh;
+  MeshBuildReport report = mesh.Build(8, fin, 4);
+  CD_CHECK(report.NonManifoldEdges == 1);
+  CD_CHECK(mesh.IsLocked(0) && mesh.IsLocked(1));
+  CD_CHECK(!mesh.IsLocked(2) && !mesh.IsLocked(3) && !mesh.IsLocked(4) && !mesh.IsLocked(5));
+  CD_CHECK(!mesh.IsCollapsible(0) && mesh.IsCollapsible(5));
+
+  // Two triangles on an edge with the same orientation (inconsistent): locked.
+  const int32_t twisted[6] = { 0, 1, 2, 0, 1, 3 };
+  report = mesh.Build(4, twisted, 2);
+  CD_CHECK(report.NonManifoldEdges == 1);
+  CD_CHECK(mesh.IsLocked(0) && mesh.IsLocked(1) && !mesh.IsLocked(2));
+
+  // A bow-tie: two fans (0,1,2),(0,2,3) and (0,4,5),(0,5,6) meet only at vertex 0.
+  const int32_t bowtie[12] = { 0, 1, 2, 0, 2, 3, 0, 4, 5, 0, 5, 6 };
+  report = mesh.Build(7, bowtie, 4);
+  CD_CHECK(report.NonManifoldEdges == 0);
+  CD_CHECK(report.NonManifoldVertices == 1);
+  CD_CHECK(report.LockedVertices == 1);
+  CD_CHECK(mesh.IsLocked(0));
+  for (int32_t v = 1; v < 7; ++v)
+  {
+    CD_CHECK(!mesh.IsLocked(v));
+  }
+  // A bow-tie of two closed-around fans (vertex 0 interior to both): two tetrahedra
+  // sharing a vertex.
+  const int32_t tetras[24] = { 0, 2, 1, 0, 3, 2, 0, 1, 3, 1, 2, 3,
+                               0, 5, 4, 0, 6, 5, 0, 4, 6, 4, 5, 6 };
+  report = mesh.Build(7, tetras, 8);
+  CD_CHECK(report.NonManifoldVertices == 1);
+  CD_CHECK(mesh.IsLocked(0) && !mesh.IsLocked(1) && !mesh.IsLocked(4));
+  // An isolated vertex is reported and not collapsible.
+  const int32_t tri[3] = { 0, 1, 2 };
+  report = mesh.Build(4, tri, 1);
+  CD_CHECK(report.IsolatedVertices == 1);
+  CD_CHECK(!mesh.IsCollapsible(3));
+}
+
+void TestHalfEdgeCollapse()
+{
+  struct Case
+  {
+    vtkSmartPointer<vtkPolyData> Poly;
+    bool Closed;
+  };
+  const Case cases[] = { { meshes::Icosphere(3, meshes::Pattern::Constant), true },
+                         { meshes::Torus(30, 12, meshes::Pattern::Constant), true },
+                         { meshes::Grid(20, 14, meshes::Pattern::Constant), false } };
+  for (const Case& c : cases)
+  {
+    const PlainMesh m = ToPlain(c.Poly);
+    HalfEdgeMesh mesh;
+    mesh.Build(m.NumberOfPoints(), m.Triangles.data(), m.NumberOfTriangles());
+    const long long euler = Euler(mesh);
+    CollapseRuleOptions options;
+    options.MinimumNormalCosine = -1.0; // topology only: many different collapses
+    CollapseRules rules(options);
+    std::mt19937 rng(99);
+    std::uniform_int_distribution<int32_t> pick(0, m.NumberOfPoints() - 1);
+    int collapses = 0, refused = 0, boundaryCollapses = 0;
+    for (int attempt = 0; attempt < 20000 && mesh.GetNumberOfLiveFaces() > 40; ++attempt)
+    {
+      const int32_t v0 = pick(rng);
+      if (!mesh.IsCollapsible(v0))
+      {
+        continue;
+      }
+      std::vector<int32_t> ring;
+      mesh.ForEachNeighbor(v0, [&](int32_t u) { ring.push_back(u); });
+      const int32_t v1 = ring[rng() % ring.size()];
+      if (!rules.IsLegal(mesh, m.Positions.data(), v0, v1))
+      {
+        ++refused;
+        continue;
+      }
+      const bool interiorEdge = mesh.FindHalfEdge(v0, v1) >= 0 && mesh.FindHalfEdge(v1, v0) >= 0;
+      const int64_t before = mesh.GetNumberOfLiveFaces();
+      const int removed = mesh.Collapse(v0, v1);
+      CD_CHECK(removed == (interiorEdge ? 2 : 1));
+      CD_CHECK(mesh.GetNumberOfLiveFaces() == before - removed);
+      CD_CHECK(mesh.IsRemoved(v0) && !mesh.IsCollapsible(v0));
+      boundaryCollapses += interiorEdge ? 0 : 1;
+      ++collapses;
+      if (CheckMeshConsistency(mesh, c.Closed) != 0)
+      {
+        ReportFailure(__FILE__, __LINE__, "consistent after collapse",
+                      "after collapse " + std::to_string(collapses) + ": " + std::to_string(v0) +
+                        " -> " + std::to_string(v1));
+        return;
+      }
+      CD_CHECK(Euler(mesh) == euler);
+    }
+    std::cout << "  " << m.NumberOfTriangles() << " -> " << mesh.GetNumberOfLiveFaces()
+              << " triangles in " << collapses << " collapses (" << boundaryCollapses
+              << " on the boundary), " << refused << " refused" << std::endl;
+    CD_CHECK(collapses > m.NumberOfTriangles() / 4);
+    CD_CHECK(refused > 0);
+    CD_CHECK(c.Closed || boundaryCollapses > 0);
+  }
+}
+
+//------------------------------------------------------------------------------
+void TestRulesLinkCondition()
+{
+  CollapseRules rules{ CollapseRuleOptions() };
+  // A tetrahedron: every collapse would make two triangles share all three vertices.
+  const int32_t tetra[12] = { 0, 2, 1, 0, 3, 2, 0, 1, 3, 1, 2, 3 };
+  const float tetraPositions[12] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  HalfEdgeMesh mesh;
+  mesh.Build(4, tetra, 4);
+  for (int32_t a = 0; a < 4; ++a)
+  {
+    for (int32_t b = 0; b < 4; ++b)
+    {
+      if (a != b)
+      {
+        CD_CHECK(rules.Check(mesh, tetraPositions, a, b) == CollapseVerdict::LinkCondition);
+      }
+    }
+  }
+
+  // An open annulus with 3 vertices on each boundary loop: collapsing along the inner loop
+  // would pinch it (a0 and a1 share a2 besides the opposite vertex b1).
+  // a_i = i, b_i = 3 + i; triangles (a_i, b_i, b_i+1), (a_i, b_i+1, a_i+1).
+  auto annulus = [](int k, std::vector<int32_t>& tris, std::vector<float>& pos)
+  {
+    tris.clear();
+    pos.clear();
+    for (int i = 0; i < k; ++i)
+    {
+      const int32_t a = i, a1 = (i + 1) % k, b = k + i, b1 = k + (i + 1) % k;
+      const int32_t t[6] = { a, b, b1, a, b1, a1 };
+      tris.insert(tris.end(), t, t + 6);
+    }
+    for (int ring = 0; ring < 2; ++ring)
+    {
+      for (int i = 0; i < k; ++i)
+      {
+        const double angle = 2.0 * 3.14159265358979 * i / k;
+        const double r = ring == 0 ? 1.0 : 2.0;
+        pos.push_back(static_cast<float>(r * std::cos(angle)));
+        pos.push_back(static_cast<float>(r * std::sin(angle)));
+        pos.push_back(0.0f);
+      }
+    }
+  };
+  std::vector<int32_t> tris;
+  std::vector<float> pos;
+  annulus(3, tris, pos);
+  MeshBuildReport report = mesh.Build(6, tris.data(), 6);
+  CD_CHECK(report.LockedVertices == 0 && report.BoundaryEdges == 6);
+  CD_CHECK(mesh.IsBoundaryVertex(0) && mesh.IsBoundaryVertex(1));
+  CD_CHECK(rules.Check(mesh, pos.data(), 0, 1) == CollapseVerdict::LinkCondition);
+  CD_CHECK(rules.Check(mesh, pos.data(), 1, 0) == CollapseVerdict::LinkCondition);
+  // With 4 vertices per loop the same collapse is fine.
+  annulus(4, tris, pos);
+  mesh.Build(8, tris.data(), 8);
+  CD_CHECK(rules.Check(mesh, pos.data(), 0, 1) == CollapseVerdict::Legal);
+
+  // A single triangle: collapsing an edge would leave it hanging by a vertex.
+  const int32_t one[3] = { 0, 1, 2 };
+  const float onePositions[9] = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+  mesh.Build(3, one, 1);
+  CD_CHECK(rules.Check(mesh, onePositions, 0, 1) == CollapseVerdict::LinkCondition);
+
+  // An octahedron: collapsing +x onto +y is fine and gives a triangular bipyramid whose
+  // apexes (+z, -z) have valence 3. There an equator edge is refused (its opposite vertices
+  // have valence 3), an apex -> equator collapse is fine (a tetrahedron results), and then
+  // nothing collapses any more.
+  const int32_t octa[24] = {
+    0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5
+  };
+  mesh.Build(6, octa, 8);
+  CD_CHECK(CheckMeshConsistency(mesh, true) == 0);
+  CD_CHECK(rules.CheckTopology(mesh, 0, 2) == CollapseVerdict::Legal);
+  CD_CHECK(mesh.Collapse(0, 2) == 2);
+  CD_CHECK(CheckMeshConsistency(mesh, true) == 0);
+  CD_CHECK(Euler(mesh) == 2);
+  CD_CHECK(mesh.Valence(4) == 3 && mesh.Valence(5) == 3 && mesh.Valence(1) == 4);
+  CD_CHECK(rules.CheckTopology(mesh, 1, 2) == CollapseVerdict::LinkCondition);
+  CD_CHECK(rules.CheckTopology(mesh, 2, 3) == CollapseVerdict::LinkCondition);
+  CD_CHECK(rules.CheckTopology(mesh, 3, 1) == CollapseVerdict::LinkCondition);
+  CD_CHECK(rules.CheckTopology(mesh, 4, 1) == CollapseVerdict::Legal);
+  CD_CHECK(mesh.Collapse(4, 1) == 2);
+  CD_CHECK(CheckMeshConsistency(mesh, true) == 0);
+  CD_CHECK(mesh.GetNumberOfLiveFaces() == 4 && Euler(mesh) == 2);
+  for (int32_t a : { 1, 2, 3, 5 })
+  {
+    mesh.ForEachNeighbor(
+      a, [&](int32_t b) { CD_CHECK(rules.CheckTopology(mesh, a, b) != CollapseVerdict::Legal); });
+  }
+
+  // Locked and removed vertices, and non-neighbours, are not collapsible.
+  const int32_t fin[9] = { 0, 1, 2, 1, 0, 3, 0, 1, 4 };
+  const float finPositions[15] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1 };
+  mesh.Build(5, fin, 3);
+  CD_CHECK(rules.Check(mesh, finPositions, 2, 0) == CollapseVerdict::NotCollapsible);
+  CD_CHECK(rules.Check(mesh, finPositions, 0, 2) == CollapseVerdict::NotCollapsible);
+  CD_CHECK(rules.Check(mesh, finPositions, 2, 3) == CollapseVerdict::NotCollapsible);
+}
+
+/// The pyramid with the apex at height h, as float positions.
+std::vector<float> PyramidPositions(double h)
+{
+  std::vector<float> p(PyramidPoints, PyramidPoints + 15);
+  p[2] = static_cast<float>(h);
+  return p;
+}
+
+void TestRulesFlip()
+{
+  // Collapsing the pyramid's apex onto ring vertex 1 lays faces (0,2,3) and (0,3,4) flat:
+  // their normals (-1,1,1)/sqrt3 and (-1,-1,1)/sqrt3 turn to (0,0,1), by acos(1/sqrt3) =
+  // 54.7356 degrees.
+  HalfEdgeMesh mesh;
+  mesh.Build(5, PyramidTriangles, 4);
+  const std::vector<float> p = PyramidPositions(1.0);
+  const double turn = std::acos(1.0 / Sqrt3) * 180.0 / 3.14159265358979323846;
+  CD_CHECK_NEAR(turn, 54.7356, 1e-4);
+  auto options = [](double degrees)
+  {
+    CollapseRuleOptions o;
+    o.MinimumNormalCosine = std::cos(degrees * 3.14159265358979323846 / 180.0);
+    return o;
+  };
+  CollapseRules strict(options(54.0)), loose(options(55.5));
+  CD_CHECK(strict.Check(mesh, p.data(), 0, 1) == CollapseVerdict::Flip);
+  CD_CHECK(loose.Check(mesh, p.data(), 0, 1) == CollapseVerdict::Legal);
+  CD_CHECK(strict.CheckTopology(mesh, 0, 1) == CollapseVerdict::Legal);
+
+  // A planar fan that is not star-shaped from ring vertex A: collapsing the centre onto A
+  // turns triangle (c,B,C) upside down (180 degrees). Refused at 90 degrees and even at
+  // 179; allowed only when the guard is off (180).
+  // c = 0 at the origin; ring A(1,0) B(0.2,0.2) C(-1,1) D(-1,-1) E(0.2,-0.2).
+  const int32_t fan[15] = { 0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5, 0, 5, 1 };
+  const float fanPositions[18] = { 0,  0, 0, 1,  0,  0, 0.2f, 0.2f,  0,
+                                   -1, 1, 0, -1, -1, 0, 0.2f, -0.2f, 0 };
+  mesh.Build(6, fan, 5);
+  CD_CHECK(CollapseRules(options(90)).Check(mesh, fanPositions, 0, 1) == CollapseVerdict::Flip);
+  CD_CHECK(CollapseRules(options(179)).Check(mesh, fanPositions, 0, 1) == CollapseVerdict::Flip);
+  CD_CHECK(CollapseRules(options(180)).Check(mesh, fanPositions, 0, 1) == CollapseVerdict::Legal);
+  // The same centre collapses onto B without any flip: B sees every edge of the ring
+  // (triangles (B,C,D), (B,D,E), (B,E,A) stay counter-clockwise), but not onto C, which
+  // would turn (A,B) around.
+  CD_CHECK(CollapseRules(options(90)).CheckGeometry(mesh, fanPositions, 0, 2) ==
+           CollapseVerdict::Legal);
+  CD_CHECK(CollapseRules(options(90)).CheckGeometry(mesh, fanPositions, 0, 3) ==
+           CollapseVerdict::Flip);
+}
+
+void TestRulesDegenerate()
+{
+  // Centre at the origin, ring A(1,0) B(0,1) C(-1,2) D(-1,-1) E(0.5,-1): A, B and C are
+  // collinear, so collapsing the centre onto A gives triangle (A,B,C) no area.
+  const int32_t fan[15] = { 0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5, 0, 5, 1 };
+  const float positions[18] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, -1, 2, 0, -1, -1, 0, 0.5f, -1, 0 };
+  HalfEdgeMesh mesh;
+  mesh.Build(6, fan, 5);
+  for (double degrees : { 90.0, 180.0 })
+  {
+    CollapseRuleOptions o;
+    o.MinimumNormalCosine = std::cos(degrees * 3.14159265358979323846 / 180.0);
+    CollapseRules rules(o);
+    CD_CHECK(rules.Check(mesh, positions, 0, 1) == CollapseVerdict::Degenerate);
+    CD_CHECK(rules.CheckTopology(mesh, 0, 1) == CollapseVerdict::Legal);
+    // Onto D nothing degenerates or flips.
+    CD_CHECK(rules.Check(mesh, positions, 0, 4) == CollapseVerdict::Legal);
+  }
+  // Two ring vertices at the same place: collapsing the centre onto one of them would
+  // leave a triangle with a zero-length edge.
+  std::vector<float> coincident(positions, positions + 18);
+  coincident[6] = 1; // B moves onto A
+  coincident[7] = 0;
+  CollapseRules rules{ CollapseRuleOptions() };
+  CD_CHECK(rules.Check(mesh, coincident.data(), 0, 1) == CollapseVerdict::Degenerate);
+}
+
+void TestRulesBoundary()
+{
+  const int nx = 6, ny = 4;
+  const PlainMesh m = ToPlain(meshes::Grid(nx, ny, meshes::Pattern::Constant));
+  HalfEdgeMesh mesh;
+  mesh.Build(m.NumberOfPoints(), m.Triangles.data(), m.NumberOfTriangles());
+  auto id = [](int i, int j) { return j * (nx + 1) + i; };
+  CollapseRules free{ CollapseRuleOptions() };
+  CollapseRuleOptions keep;
+  keep.PreserveBoundary = true;
+  CollapseRules preserve(keep);
+  // A boundary vertex of the bottom side along the side: allowed, unless preserved.
+  CD_CHECK(free.Check(mesh, m.Positions.data(), id(2, 0), id(3, 0)) == CollapseVerdict::Legal);
+  CD_CHECK(preserve.Check(mesh, m.Positions.data(), id(2, 0), id(3, 0)) ==
+           CollapseVerdict::Boundary);
+  // A boundary vertex into the interior: never.
+  CD_CHECK(free.Check(mesh, m.Positions.data(), id(2, 0), id(2, 1)) == CollapseVerdict::Boundary);
+  // An interior vertex onto the boundary: allowed both ways of the option.
+  CD_CHECK(free.Check(mesh, m.Positions.data(), id(2, 1), id(2, 0)) == CollapseVerdict::Legal);
+  CD_CHECK(preserve.Check(mesh, m.Positions.data(), id(2, 1), id(2, 0)) == CollapseVerdict::Legal);
+  // Interior into interior.
+  CD_CHECK(free.Check(mesh, m.Positions.data(), id(2, 2), id(3, 2)) == CollapseVerdict::Legal);
+  // An interior vertex onto a corner along a diagonal: the opposite vertices are on the
+  // boundary, so the valence rule does not apply.
+  CD_CHECK(free.CheckTopology(mesh, id(1, 1), id(0, 0)) == CollapseVerdict::Legal);
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  return RunTestCases(argc, argv,
+                      { { "Quadric", TestQuadric },
+                        { "VisualImportance", TestVisualImportance },
+                        { "CollapseColorError", TestCollapseColorError },
+                        { "TotalCost", TestTotalCost },
+                        { "CollapseCost", TestCollapseCost },
+                        { "CollapseCostFrame", TestCollapseCostFrame },
+                        { "VertexHeap", TestVertexHeap },
+                        { "HalfEdgeBuildClosed", TestHalfEdgeBuildClosed },
+                        { "HalfEdgeBuildOpen", TestHalfEdgeBuildOpen },
+                        { "HalfEdgeNonManifold", TestHalfEdgeNonManifold },
+                        { "HalfEdgeCollapse", TestHalfEdgeCollapse },
+                        { "RulesLinkCondition", TestRulesLinkCondition },
+                        { "RulesFlip", TestRulesFlip },
+                        { "RulesDegenerate", TestRulesDegenerate },
+                        { "RulesBoundary", TestRulesBoundary } });
+}

@@ -1,0 +1,518 @@
+// Tests of vtkColorHalfEdgeDecimation on generated meshes: the invariants of real
+// decimations, scale/translation invariance, the extreme targets, boundary preservation,
+// abort and progress, and the properties.
+#include "ColorDecimationTestUtilities.h"
+
+#include "ColorDecimationMeshes.h"
+#include "vtkColorHalfEdgeDecimation.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <sstream>
+
+using namespace colordecimation;
+using namespace colordecimation::testing;
+using meshes::Pattern;
+
+namespace
+{
+const double Reductions[3] = { 0.5, 0.9, 0.97 };
+
+/// Decimate a decorated copy of `mesh` at 0.5, 0.9 and 0.97 and check every invariant.
+void CheckInvariants(vtkPolyData* mesh, const Expectation& expected, const std::string& name)
+{
+  Decorate(mesh);
+  const vtkIdType input = mesh->GetNumberOfPolys();
+  for (double reduction : Reductions)
+  {
+    std::ostringstream label;
+    label << name << " at " << reduction;
+    const RunResult r = Decimate(mesh, reduction);
+    const vtkIdType output = r.Output->GetNumberOfPolys();
+    std::cout << "  " << label.str() << ": " << input << " -> " << output << " triangles, "
+              << r.Collapses << " collapses, actual " << r.ActualReduction << std::endl;
+    CD_CHECK_MSG(r.Errors == 0 && r.Warnings == 0,
+                 label.str() << ": unexpected messages: " << r.ErrorText << r.WarningText);
+    CD_CHECK_NEAR(r.ActualReduction, 1.0 - double(output) / double(input), 1e-12);
+    CD_CHECK_MSG(std::abs(r.ActualReduction - reduction) <= 0.01,
+                 label.str() << ": actual reduction " << r.ActualReduction);
+    // Each collapse removes one vertex and one (boundary) or two triangles.
+    CD_CHECK_MSG(r.Collapses == mesh->GetNumberOfPoints() - r.Output->GetNumberOfPoints(),
+                 label.str() << ": " << r.Collapses << " collapses, "
+                             << mesh->GetNumberOfPoints() - r.Output->GetNumberOfPoints()
+                             << " points removed");
+    CheckDecimatedMesh(mesh, r.Output, expected, label.str());
+    if (reduction == 0.5)
+    {
+      // Enough untouched triangles for the cell-data mapping to be checked on them.
+      long long untouched = 0;
+      CheckCellDataCopied(mesh, r.Output, &untouched);
+      CD_CHECK_MSG(untouched > output / 10, label.str() << ": " << untouched << " untouched");
+    }
+  }
+}
+
+Expectation Closed(long long euler, void (*normal)(const double*, double*))
+{
+  Expectation e;
+  e.Closed = true;
+  e.Euler = euler;
+  e.Normal = normal;
+  return e;
+}
+
+/// The same without the flip check, for tests about something else (the Invariants tests
+/// check flips).
+Expectation WithoutFlipCheck(Expectation e)
+{
+  e.Normal = nullptr;
+  return e;
+}
+
+Expectation OpenDisk()
+{
+  Expectation e;
+  e.Closed = false;
+  e.Euler = 1;
+  e.BoundaryLoops = 1;
+  e.Normal = UpNormal;
+  return e;
+}
+
+void TestInvariantsIcosphereSharp()
+{
+  CheckInvariants(meshes::Icosphere(5, Pattern::SharpRegions), Closed(2, SphereNormal),
+                  "Icosphere(5)");
+}
+
+void TestInvariantsUVSphereSmooth()
+{
+  CheckInvariants(meshes::UVSphere(100, Pattern::SmoothGradient), Closed(2, SphereNormal),
+                  "UVSphere(100)");
+}
+
+void TestInvariantsTorusSharp()
+{
+  // Float points: their type and bits must be kept too.
+  auto torus = WithFloatPoints(meshes::Torus(150, 60, Pattern::SharpRegions));
+  CheckInvariants(torus, Closed(0, TorusNormal), "Torus(150,60) float");
+}
+
+void TestInvariantsTorusFineDetail()
+{
+  CheckInvariants(meshes::Torus(120, 48, Pattern::FineDetail), Closed(0, TorusNormal),
+                  "Torus(120,48)");
+}
+
+void TestInvariantsGridSmooth()
+{
+  CheckInvariants(meshes::Grid(80, 60, Pattern::SmoothGradient), OpenDisk(), "Grid(80,60)");
+}
+
+void TestInvariantsGridSharp()
+{
+  CheckInvariants(meshes::Grid(90, 70, Pattern::SharpRegions), OpenDisk(), "Grid(90,70)");
+}
+
+//------------------------------------------------------------------------------
+void CheckScaleInvariance(vtkPolyData* mesh, int metric, const std::string& name)
+{
+  const auto configure = [metric](vtkColorHalfEdgeDecimation* f) { f->SetErrorMetric(metric); };
+  const RunResult reference = Decimate(mesh, 0.9, configure);
+  const std::set<Tri> expected = CanonicalSet(GetOriginalTriangles(reference.Output));
+  CD_CHECK(reference.Collapses > 0);
+  struct Transform
+  {
+    double Scale;
+    double Shift[3];
+  };
+  const Transform transforms[] = { { 1e-3, { 0.02, -0.01, 0.005 } },
+                                   { 1e4, { 1e5, -5e4, 3e4 } },
+                                   { 1.0, { 10, -20, 5 } },
+                                   { 1e-3, { 0, 0, 0 } } };
+  for (const Transform& t : transforms)
+  {
+    auto moved = Transformed(mesh, t.Scale, t.Shift);
+    const RunResult r = Decimate(moved, 0.9, configure);
+    const std::set<Tri> got = CanonicalSet(GetOriginalTriangles(r.Output));
+    size_t common = 0;
+    for (const Tri& x : got)
+    {
+      common += expected.count(x);
+    }
+    CD_CHECK_MSG(got == expected,
+                 name << " metric " << metric << " scaled by " << t.Scale << ", shifted by ("
+                      << t.Shift[0] << "," << t.Shift[1] << "," << t.Shift[2] << "): " << got.size()
+                      << " triangles, " << common << " in common with the " << expected.size()
+                      << " of the original");
+    CD_CHECK(r.Collapses == reference.Collapses);
+  }
+}
+
+/**
+ * The generated meshes are symmetric, so many collapses cost exactly the same; translating
+ * a point set in floating point perturbs coordinates near 0 by an ulp of the offset, which
+ * would break such exact ties one way or the other. A small jitter (1/100 of an edge) makes
+ * costs distinct, so that the test sees the frame, not tie-breaking.
+ */
+vtkSmartPointer<vtkPolyData> Jittered(vtkSmartPointer<vtkPolyData> mesh, double amount)
+{
+  std::mt19937 rng(2024);
+  std::uniform_real_distribution<double> u(-amount, amount);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    mesh->GetPoints()->SetPoint(i, p[0] + u(rng), p[1] + u(rng), p[2] + u(rng));
+  }
+  return mesh;
+}
+
+void TestScaleTranslationInvariance()
+{
+  auto sphere = Jittered(meshes::Icosphere(4, Pattern::SharpRegions), 5e-4);
+  auto torus = Jittered(meshes::Torus(60, 24, Pattern::SmoothGradient), 5e-4);
+  auto grid = Jittered(meshes::Grid(40, 30, Pattern::SharpRegions), 5e-4);
+  for (int metric : { 0, 1 })
+  {
+    CheckScaleInvariance(sphere, metric, "Icosphere(4)");
+    CheckScaleInvariance(torus, metric, "Torus(60,24)");
+    CheckScaleInvariance(grid, metric, "Grid(40,30)");
+  }
+}
+
+//------------------------------------------------------------------------------
+void TestTargetReductionZero()
+{
+  for (auto mesh : { meshes::Icosphere(3, Pattern::SharpRegions),
+                     meshes::Grid(30, 20, Pattern::SmoothGradient) })
+  {
+    Decorate(mesh);
+    const RunResult r = Decimate(mesh, 0.0);
+    CD_CHECK(r.Errors == 0 && r.Warnings == 0);
+    CD_CHECK(r.Collapses == 0);
+    CD_CHECK(r.ActualReduction == 0.0);
+    // The same triangles, in the same order and orientation, on the same points.
+    const std::vector<Tri> in = GetTriangles(mesh);
+    const std::vector<Tri> out = GetOriginalTriangles(r.Output);
+    CD_CHECK(in == out);
+    CD_CHECK(r.Output->GetNumberOfPoints() == mesh->GetNumberOfPoints());
+    CD_CHECK(CheckPointDataCopied(mesh, r.Output) == 0);
+    CD_CHECK(CheckCellDataCopied(mesh, r.Output) == 0);
+    CD_CHECK(CheckFieldDataPassed(mesh, r.Output) == 0);
+  }
+}
+
+void TestTargetReductionOne()
+{
+  struct Case
+  {
+    vtkSmartPointer<vtkPolyData> Mesh;
+    Expectation Expected;
+    const char* Name;
+  };
+  const Case cases[] = {
+    { meshes::Icosphere(3, Pattern::SharpRegions), Closed(2, SphereNormal), "Icosphere(3)" },
+    { meshes::Torus(40, 16, Pattern::SmoothGradient), Closed(0, TorusNormal), "Torus(40,16)" },
+    { meshes::Grid(24, 18, Pattern::SharpRegions), OpenDisk(), "Grid(24,18)" }
+  };
+  for (const Case& c : cases)
+  {
+    Decorate(c.Mesh);
+    const RunResult r = Decimate(c.Mesh, 1.0);
+    const vtkIdType in = c.Mesh->GetNumberOfPolys(), out = r.Output->GetNumberOfPolys();
+    std::cout << "  " << c.Name << ": " << in << " -> " << out << " triangles" << std::endl;
+    CD_CHECK(r.Errors == 0 && r.Warnings == 0);
+    CD_CHECK(out > 0);
+    CD_CHECK_MSG(out <= in / 20, c.Name << ": only down to " << out << " of " << in);
+    CheckDecimatedMesh(c.Mesh, r.Output, WithoutFlipCheck(c.Expected), c.Name);
+    // As far as it can go: decimating the result again finds no valid collapse.
+    const RunResult again = Decimate(r.Output, 1.0);
+    CD_CHECK_MSG(again.Collapses == 0,
+                 c.Name << ": " << again.Collapses << " more collapses were possible");
+  }
+}
+
+//------------------------------------------------------------------------------
+void TestPreserveBoundary()
+{
+  auto grid = meshes::Grid(60, 40, Pattern::SharpRegions);
+  Decorate(grid);
+  const std::vector<Tri> in = GetTriangles(grid);
+  const auto boundary = BoundaryEdges(in);
+  std::set<vtkIdType> boundaryPoints;
+  for (const auto& e : boundary)
+  {
+    boundaryPoints.insert(e.first);
+  }
+  CD_CHECK(boundary.size() == 200 && boundaryPoints.size() == 200);
+
+  for (double reduction : { 0.5, 0.9 })
+  {
+    const RunResult kept =
+      Decimate(grid, reduction, [](vtkColorHalfEdgeDecimation* f) { f->PreserveBoundaryOn(); });
+    CD_CHECK(kept.Errors == 0 && kept.Warnings == 0);
+    std::cout << "  preserved, " << reduction << ": actual " << kept.ActualReduction << std::endl;
+    CD_CHECK_MSG(std::abs(kept.ActualReduction - reduction) <= 0.01,
+                 "actual reduction " << kept.ActualReduction);
+    const std::set<vtkIdType> ids = OriginalIds(kept.Output);
+    long long missing = 0;
+    for (vtkIdType p : boundaryPoints)
+    {
+      missing += ids.count(p) ? 0 : 1;
+    }
+    CD_CHECK_MSG(missing == 0, missing << " boundary points removed");
+    CD_CHECK(BoundaryEdges(GetOriginalTriangles(kept.Output)) == boundary);
+    CheckDecimatedMesh(grid, kept.Output, WithoutFlipCheck(OpenDisk()), "preserved boundary");
+  }
+
+  // Without the option the boundary is simplified too (along itself).
+  const RunResult free = Decimate(grid, 0.9);
+  const std::set<vtkIdType> ids = OriginalIds(free.Output);
+  long long removed = 0;
+  for (vtkIdType p : boundaryPoints)
+  {
+    removed += ids.count(p) ? 0 : 1;
+  }
+  std::cout << "  free boundary: " << removed << " of 200 boundary points removed" << std::endl;
+  CD_CHECK(removed > 0);
+  CheckDecimatedMesh(grid, free.Output, WithoutFlipCheck(OpenDisk()), "free boundary");
+}
+
+//------------------------------------------------------------------------------
+struct ProgressLog
+{
+  std::vector<double> Values;
+  double AbortAt = 2.0; ///< set AbortExecute at the first progress >= this
+};
+
+void OnProgress(vtkObject* caller, unsigned long, void* clientData, void* callData)
+{
+  auto* log = static_cast<ProgressLog*>(clientData);
+  const double progress = *static_cast<double*>(callData);
+  log->Values.push_back(progress);
+  if (progress >= log->AbortAt)
+  {
+    static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
+  }
+}
+
+RunResult RunWithProgress(vtkPolyData* mesh, double reduction, ProgressLog& log)
+{
+  return Decimate(mesh, reduction,
+                  [&log](vtkColorHalfEdgeDecimation* f)
+                  {
+                    vtkNew<vtkCallbackCommand> callback;
+                    callback->SetCallback(OnProgress);
+                    callback->SetClientData(&log);
+                    f->AddObserver(vtkCommand::ProgressEvent, callback);
+                  });
+}
+
+void TestProgress()
+{
+  auto mesh = meshes::Icosphere(5, Pattern::SmoothGradient);
+  ProgressLog log;
+  const RunResult r = RunWithProgress(mesh, 0.9, log);
+  CD_CHECK(std::abs(r.ActualReduction - 0.9) <= 0.01);
+  CD_CHECK(log.Values.size() >= 3);
+  int between = 0;
+  for (size_t i = 0; i < log.Values.size(); ++i)
+  {
+    CD_CHECK(log.Values[i] >= 0.0 && log.Values[i] <= 1.0);
+    if (i > 0)
+    {
+      CD_CHECK_MSG(log.Values[i] >= log.Values[i - 1],
+                   "progress went back from " << log.Values[i - 1] << " to " << log.Values[i]);
+    }
+    between += (log.Values[i] > 0.05 && log.Values[i] < 1.0) ? 1 : 0;
+  }
+  CD_CHECK_MSG(between >= 2, "only " << between << " progress reports during the decimation");
+  CD_CHECK(!log.Values.empty() && log.Values.back() == 1.0);
+}
+
+void TestAbort()
+{
+  auto mesh = meshes::Icosphere(5, Pattern::SharpRegions);
+  Decorate(mesh);
+  ProgressLog full;
+  const RunResult complete = RunWithProgress(mesh, 0.9, full);
+  CD_CHECK(std::abs(complete.ActualReduction - 0.9) <= 0.01);
+
+  // Abort in the middle (at the first report past 30 %) and right at the start.
+  for (double abortAt : { 0.3, 0.0 })
+  {
+    ProgressLog log;
+    log.AbortAt = abortAt;
+    const RunResult r = RunWithProgress(mesh, 0.9, log);
+    std::cout << "  abort at progress >= " << abortAt << ": " << r.Collapses << " of "
+              << complete.Collapses << " collapses, actual reduction " << r.ActualReduction
+              << std::endl;
+    CD_CHECK(r.Errors == 0);
+    CD_CHECK_MSG(r.Collapses < complete.Collapses,
+                 r.Collapses << " collapses after abort, " << complete.Collapses << " without");
+    CD_CHECK(r.ActualReduction < 0.89);
+    CD_CHECK(r.Output->GetNumberOfPolys() > complete.Output->GetNumberOfPolys());
+    CD_CHECK(r.Output->GetNumberOfPolys() > 0);
+    // What was done is a valid mesh.
+    CheckDecimatedMesh(mesh, r.Output, WithoutFlipCheck(Closed(2, SphereNormal)), "aborted");
+    CD_CHECK(r.Collapses == mesh->GetNumberOfPoints() - r.Output->GetNumberOfPoints());
+  }
+}
+
+//------------------------------------------------------------------------------
+void TestPrintSelf()
+{
+  vtkNew<vtkColorHalfEdgeDecimation> filter;
+  filter->SetTargetReduction(0.25);
+  filter->SetErrorMetricToGeometry();
+  filter->PreserveBoundaryOn();
+  filter->SetMaximumNormalAngle(33.5);
+  filter->SetGeometryWeight(7.25);
+  filter->GenerateOriginalPointIdsOff();
+  filter->SetOriginalPointIdsArrayName("SourcePoint");
+  std::ostringstream os;
+  filter->Print(os);
+  const std::string text = os.str();
+  for (const char* expected :
+       { "ErrorMetric: Geometry", "TargetReduction: 0.25", "PreserveBoundary: On",
+         "MaximumNormalAngle: 33.5", "GeometryWeight: 7.25", "GenerateOriginalPointIds: Off",
+         "OriginalPointIdsArrayName: SourcePoint",
+         "ActualReduction: ", "NumberOfCollapses: ", "StateMemory: " })
+  {
+    CD_CHECK_MSG(text.find(expected) != std::string::npos, "PrintSelf lacks '" << expected << "'");
+  }
+  // After a run the statistics are printed with their values.
+  auto mesh = meshes::Icosphere(3, Pattern::SharpRegions);
+  vtkNew<vtkColorHalfEdgeDecimation> run;
+  run->SetInputData(mesh);
+  run->SetTargetReduction(0.5);
+  run->Update();
+  std::ostringstream after;
+  run->Print(after);
+  std::ostringstream collapses;
+  collapses << "NumberOfCollapses: " << run->GetNumberOfCollapses() << "\n";
+  CD_CHECK(run->GetNumberOfCollapses() > 0);
+  CD_CHECK(after.str().find(collapses.str()) != std::string::npos);
+  CD_CHECK(after.str().find("ErrorMetric: HalfEdgeColor") != std::string::npos);
+}
+
+void TestProperties()
+{
+  vtkNew<vtkColorHalfEdgeDecimation> f;
+  CD_CHECK(f->GetTargetReduction() == 0.9);
+  CD_CHECK(f->GetErrorMetric() == vtkColorHalfEdgeDecimation::HalfEdgeColor);
+  CD_CHECK(std::string(f->GetErrorMetricAsString()) == "HalfEdgeColor");
+  CD_CHECK(!f->GetPreserveBoundary());
+  CD_CHECK(f->GetMaximumNormalAngle() == 90.0);
+  CD_CHECK(f->GetGeometryWeight() == 1.0);
+  CD_CHECK(f->GetGenerateOriginalPointIds());
+  CD_CHECK(std::string(f->GetOriginalPointIdsArrayName()) == "vtkOriginalPointIds");
+  f->SetTargetReduction(1.5);
+  CD_CHECK(f->GetTargetReduction() == 1.0);
+  f->SetTargetReduction(-0.5);
+  CD_CHECK(f->GetTargetReduction() == 0.0);
+  f->SetMaximumNormalAngle(400);
+  CD_CHECK(f->GetMaximumNormalAngle() == 180.0);
+  f->SetMaximumNormalAngle(-1);
+  CD_CHECK(f->GetMaximumNormalAngle() == 0.0);
+  f->SetGeometryWeight(-3);
+  CD_CHECK(f->GetGeometryWeight() == 0.0);
+  f->SetErrorMetric(5);
+  CD_CHECK(f->GetErrorMetric() == vtkColorHalfEdgeDecimation::Geometry);
+  CD_CHECK(std::string(f->GetErrorMetricAsString()) == "Geometry");
+
+  auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
+  // Re-execution follows property changes.
+  vtkNew<vtkColorHalfEdgeDecimation> g;
+  g->SetInputData(mesh);
+  g->SetTargetReduction(0.5);
+  g->Update();
+  const vtkIdType half = g->GetOutput()->GetNumberOfPolys();
+  g->SetTargetReduction(0.9);
+  g->Update();
+  const vtkIdType tenth = g->GetOutput()->GetNumberOfPolys();
+  CD_CHECK(half == mesh->GetNumberOfPolys() / 2);
+  CD_CHECK_MSG(std::abs(tenth - 0.1 * mesh->GetNumberOfPolys()) <= 0.01 * mesh->GetNumberOfPolys(),
+               tenth << " triangles");
+  CD_CHECK(g->GetStateMemory() > 48 * mesh->GetNumberOfPoints());
+  CD_CHECK(g->GetStateMemory() < 1000 * mesh->GetNumberOfPoints());
+
+  // No ids array when asked, another name when asked.
+  RunResult r =
+    Decimate(mesh, 0.5, [](vtkColorHalfEdgeDecimation* h) { h->GenerateOriginalPointIdsOff(); });
+  CD_CHECK(!r.Output->GetPointData()->GetArray("vtkOriginalPointIds"));
+  CD_CHECK(r.Output->GetPointData()->GetArray("RGB"));
+  r = Decimate(mesh, 0.5,
+               [](vtkColorHalfEdgeDecimation* h) { h->SetOriginalPointIdsArrayName("Origin"); });
+  CD_CHECK(r.Output->GetPointData()->GetArray("Origin"));
+  CD_CHECK(!r.Output->GetPointData()->GetArray("vtkOriginalPointIds"));
+
+  // An input that already has vtkOriginalPointIds (e.g. a decimated mesh decimated again):
+  // the ids are of this input, with a warning.
+  const RunResult first = Decimate(mesh, 0.5);
+  const RunResult second = Decimate(first.Output, 0.5);
+  CD_CHECK(second.Warnings == 1 && second.Errors == 0);
+  auto* ids =
+    vtkIdTypeArray::SafeDownCast(second.Output->GetPointData()->GetArray("vtkOriginalPointIds"));
+  CD_CHECK(ids && ids->GetNumberOfValues() == second.Output->GetNumberOfPoints());
+  bool inRange = ids != nullptr;
+  for (vtkIdType i = 0; ids && i < ids->GetNumberOfValues(); ++i)
+  {
+    inRange =
+      inRange && ids->GetValue(i) >= 0 && ids->GetValue(i) < first.Output->GetNumberOfPoints();
+    if (inRange)
+    {
+      double a[3], b[3];
+      second.Output->GetPoint(i, a);
+      first.Output->GetPoint(ids->GetValue(i), b);
+      inRange = a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+    }
+  }
+  CD_CHECK(inRange);
+
+  // MaximumNormalAngle limits how far a sphere can be decimated.
+  const RunResult tight =
+    Decimate(mesh, 0.99, [](vtkColorHalfEdgeDecimation* h) { h->SetMaximumNormalAngle(5); });
+  const RunResult loose = Decimate(mesh, 0.99);
+  std::cout << "  reduction at 5 degrees " << tight.ActualReduction << ", at 90 degrees "
+            << loose.ActualReduction << std::endl;
+  CD_CHECK(tight.ActualReduction < loose.ActualReduction - 0.05);
+
+  // GeometryWeight changes the choice of collapses.
+  const RunResult light =
+    Decimate(mesh, 0.9, [](vtkColorHalfEdgeDecimation* h) { h->SetGeometryWeight(0); });
+  const RunResult heavy =
+    Decimate(mesh, 0.9, [](vtkColorHalfEdgeDecimation* h) { h->SetGeometryWeight(1000); });
+  CD_CHECK(CanonicalSet(GetOriginalTriangles(light.Output)) !=
+           CanonicalSet(GetOriginalTriangles(heavy.Output)));
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  return RunTestCases(argc, argv,
+                      { { "InvariantsIcosphereSharp", TestInvariantsIcosphereSharp },
+                        { "InvariantsUVSphereSmooth", TestInvariantsUVSphereSmooth },
+                        { "InvariantsTorusSharp", TestInvariantsTorusSharp },
+                        { "InvariantsTorusFineDetail", TestInvariantsTorusFineDetail },
+                        { "InvariantsGridSmooth", TestInvariantsGridSmooth },
+                        { "InvariantsGridSharp", TestInvariantsGridSharp },
+                        { "ScaleTranslationInvariance", TestScaleTranslationInvariance },
+                        { "TargetReductionZero", TestTargetReductionZero },
+                        { "TargetReductionOne", TestTargetReductionOne },
+                        { "PreserveBoundary", TestPreserveBoundary },
+                        { "Progress", TestProgress },
+                        { "Abort", TestAbort },
+                        { "PrintSelf", TestPrintSelf },
+                        { "Properties", TestProperties } });
+}

@@ -1,0 +1,667 @@
+// Tests of vtkColorHalfEdgeDecimation's input handling: the colour array types and
+// selection, that the metric really uses colour, and bad or unusual input (each must give
+// a defined output, with the error or warning it announces).
+#include "ColorDecimationTestUtilities.h"
+
+#include "ColorDecimationMeshes.h"
+#include "vtkColorHalfEdgeDecimation.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkStripper.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+using namespace colordecimation;
+using namespace colordecimation::testing;
+using meshes::Pattern;
+
+namespace
+{
+
+std::set<Tri> Result(const RunResult& r)
+{
+  return CanonicalSet(GetOriginalTriangles(r.Output));
+}
+
+vtkUnsignedCharArray* RGB(vtkPolyData* mesh)
+{
+  return vtkUnsignedCharArray::SafeDownCast(mesh->GetPointData()->GetArray("RGB"));
+}
+
+/// Replace the active scalars by `array`.
+void SetColors(vtkPolyData* mesh, vtkDataArray* array)
+{
+  mesh->GetPointData()->RemoveArray("RGB");
+  mesh->GetPointData()->SetScalars(array);
+}
+
+vtkSmartPointer<vtkPolyData> Copy(vtkPolyData* mesh)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(mesh);
+  return copy;
+}
+
+void SetGeometry(vtkColorHalfEdgeDecimation* f)
+{
+  f->SetErrorMetricToGeometry();
+}
+
+/// Fraction of the output's area on triangles whose corners do not all have one colour.
+double MixedColorArea(vtkPolyData* output)
+{
+  vtkDataArray* colors = output->GetPointData()->GetArray("RGB");
+  double mixed = 0, total = 0;
+  for (const Tri& t : GetTriangles(output))
+  {
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      output->GetPoint(t[k], p[k]);
+    }
+    const double a[3] = { p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2] };
+    const double b[3] = { p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2] };
+    const double n[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                          a[0] * b[1] - a[1] * b[0] };
+    const double area = 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    total += area;
+    bool same = true;
+    for (int c = 0; c < 3; ++c)
+    {
+      same = same && colors->GetComponent(t[0], c) == colors->GetComponent(t[1], c) &&
+        colors->GetComponent(t[0], c) == colors->GetComponent(t[2], c);
+    }
+    mixed += same ? 0 : area;
+  }
+  return total > 0 ? mixed / total : 0;
+}
+
+//------------------------------------------------------------------------------
+// Colour arrays.
+
+void TestColorMetricKeepsBorders()
+{
+  // Sharp colour regions: the colour metric keeps the borders finely sampled, so far less
+  // of the surface is covered by triangles that blend two colours than with geometry alone.
+  struct Case
+  {
+    vtkSmartPointer<vtkPolyData> Mesh;
+    const char* Name;
+  };
+  const Case cases[] = { { meshes::Icosphere(5, Pattern::SharpRegions), "Icosphere(5)" },
+                         { meshes::Torus(120, 48, Pattern::SharpRegions), "Torus(120,48)" },
+                         { meshes::Grid(80, 60, Pattern::SharpRegions), "Grid(80,60)" } };
+  for (const Case& c : cases)
+  {
+    for (double reduction : { 0.9, 0.97 })
+    {
+      const RunResult color = Decimate(c.Mesh, reduction);
+      const RunResult geometry = Decimate(c.Mesh, reduction, SetGeometry);
+      const double mixedColor = MixedColorArea(color.Output);
+      const double mixedGeometry = MixedColorArea(geometry.Output);
+      std::cout << "  " << c.Name << " at " << reduction
+                << ": area on two-colour triangles, colour metric " << mixedColor << ", geometry "
+                << mixedGeometry << std::endl;
+      CD_CHECK(std::abs(color.ActualReduction - geometry.ActualReduction) < 0.01);
+      CD_CHECK_MSG(mixedColor < 0.6 * mixedGeometry,
+                   c.Name << " at " << reduction << ": " << mixedColor << " vs " << mixedGeometry);
+    }
+  }
+}
+
+void TestColorUnsignedCharRGBA()
+{
+  auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
+  Decorate(mesh);
+  const RunResult rgb = Decimate(mesh, 0.9);
+  const RunResult geometry = Decimate(mesh, 0.9, SetGeometry);
+  CD_CHECK(Result(rgb) != Result(geometry)); // colour matters on this mesh
+
+  // RGBA with an alpha that varies wildly: alpha is carried but not measured.
+  auto rgba = Copy(mesh);
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("RGBA");
+  colors->SetNumberOfComponents(4);
+  colors->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    unsigned char c[4];
+    RGB(mesh)->GetTypedTuple(i, c);
+    c[3] = static_cast<unsigned char>((i * 37) % 256);
+    colors->SetTypedTuple(i, c);
+  }
+  SetColors(rgba, colors);
+  const RunResult r = Decimate(rgba, 0.9);
+  CD_CHECK(r.Errors == 0 && r.Warnings == 0);
+  CD_CHECK(Result(r) == Result(rgb));
+  // Alpha (with every other point array) is a bit-exact copy.
+  CD_CHECK(CheckPointDataCopied(rgba, r.Output) == 0);
+  CD_CHECK(vtkUnsignedCharArray::SafeDownCast(r.Output->GetPointData()->GetScalars()) &&
+           r.Output->GetPointData()->GetScalars()->GetNumberOfComponents() == 4);
+}
+
+void TestColorFloatAndDouble()
+{
+  auto mesh = meshes::Torus(80, 30, Pattern::SharpRegions);
+  const RunResult reference = Decimate(mesh, 0.9);
+  const RunResult geometry = Decimate(mesh, 0.9, SetGeometry);
+  CD_CHECK(Result(reference) != Result(geometry));
+
+  // The same colours as float and double RGB in [0,1]: the same decimation.
+  auto asFloat = Copy(mesh);
+  auto asDouble = Copy(mesh);
+  vtkNew<vtkFloatArray> f;
+  vtkNew<vtkDoubleArray> d;
+  f->SetName("Colour");
+  d->SetName("Colour");
+  f->SetNumberOfComponents(3);
+  d->SetNumberOfComponents(3);
+  f->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  d->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const unsigned char c = RGB(mesh)->GetValue(3 * i + k);
+      f->SetValue(3 * i + k, c / 255.0f);
+      d->SetValue(3 * i + k, c / 255.0);
+    }
+  }
+  SetColors(asFloat, f);
+  SetColors(asDouble, d);
+  const RunResult rf = Decimate(asFloat, 0.9);
+  const RunResult rd = Decimate(asDouble, 0.9);
+  CD_CHECK(rf.Errors == 0 && rf.Warnings == 0 && rd.Errors == 0 && rd.Warnings == 0);
+  CD_CHECK(Result(rf) == Result(reference));
+  CD_CHECK(Result(rd) == Result(reference));
+  CD_CHECK(CheckPointDataCopied(asFloat, rf.Output) == 0);
+  CD_CHECK(CheckPointDataCopied(asDouble, rd.Output) == 0);
+}
+
+void TestColorFloatRange()
+{
+  // Colours quantised to multiples of 1/8 (exact in float), with black and white present.
+  // As float in [0,1] they are used as they are; multiplied by 1000 (range 0..1000) they
+  // must be scaled back by the range to the same values: the same decimation.
+  auto mesh = meshes::Icosphere(4, Pattern::SmoothGradient);
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  auto unit = Copy(mesh);
+  auto wide = Copy(mesh);
+  vtkNew<vtkFloatArray> u;
+  vtkNew<vtkFloatArray> w;
+  u->SetNumberOfComponents(3);
+  w->SetNumberOfComponents(3);
+  u->SetNumberOfTuples(n);
+  w->SetNumberOfTuples(n);
+  u->SetName("Unit");
+  w->SetName("Wide");
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      int q = static_cast<int>(std::lround(RGB(mesh)->GetValue(3 * i + k) / 255.0 * 8));
+      q = i == 0 ? 0 : (i == 1 ? 8 : q);
+      u->SetValue(3 * i + k, q / 8.0f);
+      w->SetValue(3 * i + k, 125.0f * q);
+    }
+  }
+  SetColors(unit, u);
+  SetColors(wide, w);
+  CD_CHECK(w->GetRange(0)[0] == 0 && w->GetRange(0)[1] == 1000);
+  const RunResult ru = Decimate(unit, 0.9);
+  const RunResult rw = Decimate(wide, 0.9);
+  const RunResult geometry = Decimate(mesh, 0.9, SetGeometry);
+  CD_CHECK(rw.Errors == 0 && rw.Warnings == 0);
+  CD_CHECK(Result(ru) != Result(geometry));
+  CD_CHECK(Result(rw) == Result(ru));
+  CD_CHECK(CheckPointDataCopied(wide, rw.Output) == 0);
+
+  // A range that does not start at 0: 200 + 100 q (q in 0..8) scales to q / 8 as well.
+  auto shifted = Copy(unit);
+  vtkNew<vtkDoubleArray> s;
+  s->SetNumberOfComponents(3);
+  s->SetNumberOfTuples(n);
+  s->SetName("Shifted");
+  for (vtkIdType i = 0; i < 3 * n; ++i)
+  {
+    s->SetValue(i, 200.0 + 800.0 * u->GetValue(i));
+  }
+  SetColors(shifted, s);
+  const RunResult rs = Decimate(shifted, 0.9);
+  CD_CHECK(Result(rs) == Result(ru));
+}
+
+void TestColorOneComponent()
+{
+  auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  // A grey value g as one unsigned char component is measured as the RGB colour (g, g, g).
+  auto grey = Copy(mesh);
+  auto greyRGB = Copy(mesh);
+  auto greyFloat = Copy(mesh);
+  vtkNew<vtkUnsignedCharArray> g1;
+  vtkNew<vtkUnsignedCharArray> g3;
+  vtkNew<vtkFloatArray> gf;
+  g1->SetName("Grey");
+  g3->SetName("Grey3");
+  gf->SetName("GreyFloat");
+  g3->SetNumberOfComponents(3);
+  g1->SetNumberOfTuples(n);
+  g3->SetNumberOfTuples(n);
+  gf->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    unsigned char c[3];
+    RGB(mesh)->GetTypedTuple(i, c);
+    const auto g = static_cast<unsigned char>((c[0] + c[1] + c[2]) / 3);
+    g1->SetValue(i, g);
+    const unsigned char ggg[3] = { g, g, g };
+    g3->SetTypedTuple(i, ggg);
+    gf->SetValue(i, g / 255.0f);
+  }
+  SetColors(grey, g1);
+  SetColors(greyRGB, g3);
+  SetColors(greyFloat, gf);
+  const RunResult r1 = Decimate(grey, 0.9);
+  const RunResult r3 = Decimate(greyRGB, 0.9);
+  const RunResult rf = Decimate(greyFloat, 0.9);
+  const RunResult geometry = Decimate(mesh, 0.9, SetGeometry);
+  CD_CHECK(r1.Errors == 0 && r1.Warnings == 0);
+  CD_CHECK(Result(r1) == Result(r3));
+  CD_CHECK(Result(rf) == Result(r3));
+  CD_CHECK(Result(r1) != Result(geometry));
+  CD_CHECK(CheckPointDataCopied(grey, r1.Output) == 0);
+}
+
+void TestColorArrayByName()
+{
+  // The active scalars are one flat colour; the sharp colours are in "Paint", a point array
+  // that is not the scalars, selected by name.
+  auto mesh = meshes::Icosphere(4, Pattern::Constant);
+  auto painted = meshes::Icosphere(4, Pattern::SharpRegions);
+  vtkNew<vtkUnsignedCharArray> paint;
+  paint->DeepCopy(RGB(painted));
+  paint->SetName("Paint");
+  mesh->GetPointData()->AddArray(paint);
+  CD_CHECK(mesh->GetPointData()->GetScalars() == RGB(mesh));
+
+  const RunResult byName =
+    Decimate(mesh, 0.9,
+             [](vtkColorHalfEdgeDecimation* f) {
+               f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Paint");
+             });
+  const RunResult byScalars = Decimate(mesh, 0.9);
+  const RunResult reference = Decimate(painted, 0.9);
+  CD_CHECK(byName.Errors == 0 && byName.Warnings == 0);
+  CD_CHECK(Result(byName) == Result(reference));
+  CD_CHECK(Result(byScalars) != Result(reference));
+  // Both arrays are carried through, and the active scalars stay the input's.
+  CD_CHECK(CheckPointDataCopied(mesh, byName.Output) == 0);
+
+  // A name that does not exist: no colour (warning), geometry alone.
+  const RunResult missing =
+    Decimate(mesh, 0.9,
+             [](vtkColorHalfEdgeDecimation* f) {
+               f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Nope");
+             });
+  CD_CHECK(missing.Warnings == 1 && missing.Errors == 0);
+  CD_CHECK(std::abs(missing.ActualReduction - 0.9) <= 0.01);
+}
+
+void TestColorNaN()
+{
+  // NaN colour values are measured as 0 (warning) and carried through bit-exactly.
+  auto mesh = meshes::Icosphere(4, Pattern::SmoothGradient);
+  vtkNew<vtkFloatArray> f;
+  f->SetName("Colour");
+  f->SetNumberOfComponents(3);
+  f->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < 3 * mesh->GetNumberOfPoints(); ++i)
+  {
+    f->SetValue(i, RGB(mesh)->GetValue(i) / 255.0f);
+  }
+  f->SetValue(3 * 17 + 1, std::numeric_limits<float>::quiet_NaN());
+  f->SetValue(3 * 100, std::numeric_limits<float>::infinity());
+  SetColors(mesh, f);
+  Decorate(mesh);
+  const RunResult r = Decimate(mesh, 0.9);
+  CD_CHECK(r.Errors == 0 && r.Warnings == 1);
+  CD_CHECK(std::abs(r.ActualReduction - 0.9) <= 0.01);
+  CheckDecimatedMesh(mesh, r.Output, Expectation(), "NaN colours");
+}
+
+//------------------------------------------------------------------------------
+// Bad or unusual input.
+
+void TestEmptyInput()
+{
+  vtkNew<vtkPolyData> empty;
+  RunResult r = Decimate(empty, 0.9);
+  CD_CHECK(r.Errors == 0);
+  CD_CHECK(r.Output->GetNumberOfPoints() == 0 && r.Output->GetNumberOfCells() == 0);
+  CD_CHECK(r.ActualReduction == 0 && r.Collapses == 0);
+
+  // Points but no cells: empty output.
+  vtkNew<vtkPolyData> cloud;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  cloud->SetPoints(points);
+  r = Decimate(cloud, 0.9);
+  CD_CHECK(r.Errors == 0);
+  CD_CHECK(r.Output->GetNumberOfCells() == 0);
+
+  // Only triangles that repeat a point: dropped with a warning, empty output.
+  vtkNew<vtkPolyData> degenerate;
+  degenerate->SetPoints(points);
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType tri[3] = { 0, 1, 1 };
+  polys->InsertNextCell(3, tri);
+  degenerate->SetPolys(polys);
+  r = Decimate(degenerate, 0.9);
+  CD_CHECK(r.Errors == 0 && r.Warnings >= 1);
+  CD_CHECK(r.Output->GetNumberOfCells() == 0);
+}
+
+void TestNoColorArray()
+{
+  auto mesh = meshes::Icosphere(5, Pattern::SharpRegions);
+  mesh->GetPointData()->Initialize();
+  Decorate(mesh); // normals, texture coordinates and others, but no scalars
+  const RunResult r = Decimate(mesh, 0.9);
+  CD_CHECK_MSG(r.Warnings == 1 && r.Errors == 0, r.WarningText << r.ErrorText);
+  CD_CHECK(std::abs(r.ActualReduction - 0.9) <= 0.01);
+  CheckDecimatedMesh(mesh, r.Output, Expectation{ true, 2, 0, nullptr, true }, "no colour");
+  // The Geometry metric needs no colour: no warning.
+  const RunResult g = Decimate(mesh, 0.9, SetGeometry);
+  CD_CHECK_MSG(g.Warnings == 0 && g.Errors == 0, g.WarningText << g.ErrorText);
+  CD_CHECK(std::abs(g.ActualReduction - 0.9) <= 0.01);
+}
+
+void TestQuads()
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(60, 40);
+  plane->SetOrigin(-1, -1, 0);
+  plane->SetPoint1(1, -1, 0);
+  plane->SetPoint2(-1, 1, 0);
+  plane->Update();
+  auto quads = Copy(plane->GetOutput());
+  meshes::ApplyPattern(quads, Pattern::SharpRegions);
+  Decorate(quads);
+  CD_CHECK(quads->GetNumberOfPolys() == 2400);
+
+  RunResult r = Decimate(quads, 0.0);
+  CD_CHECK(r.Warnings == 1 && r.Errors == 0);
+  CD_CHECK(r.Output->GetNumberOfPolys() == 4800);
+  CheckDecimatedMesh(quads, r.Output, Expectation{ false, 1, 1, UpNormal, true }, "quads, 0");
+  // Each quad gives two triangles that carry its cell data.
+  auto* source = vtkIdTypeArray::SafeDownCast(r.Output->GetCellData()->GetArray("SourceId"));
+  std::vector<int> uses(2400, 0);
+  for (vtkIdType t = 0; source && t < source->GetNumberOfValues(); ++t)
+  {
+    uses[source->GetValue(t)]++;
+  }
+  CD_CHECK(std::all_of(uses.begin(), uses.end(), [](int u) { return u == 2; }));
+
+  r = Decimate(quads, 0.9);
+  CD_CHECK(r.Warnings == 1 && r.Errors == 0);
+  std::cout << "  quads: " << r.Output->GetNumberOfPolys() << " triangles, actual "
+            << r.ActualReduction << std::endl;
+  CD_CHECK_NEAR(r.ActualReduction, 1.0 - r.Output->GetNumberOfPolys() / 4800.0, 1e-12);
+  CD_CHECK(std::abs(r.ActualReduction - 0.9) <= 0.01);
+  CheckDecimatedMesh(quads, r.Output, Expectation{ false, 1, 1, UpNormal, true }, "quads, 0.9");
+}
+
+void TestTriangleStrips()
+{
+  auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
+  vtkNew<vtkStripper> stripper;
+  stripper->SetInputData(mesh);
+  stripper->Update();
+  auto strips = Copy(stripper->GetOutput());
+  CD_CHECK(strips->GetNumberOfStrips() > 0);
+  CD_CHECK(strips->GetNumberOfPoints() == mesh->GetNumberOfPoints());
+
+  // At 0 the strips come back as the very triangles they were made of, with their
+  // orientation.
+  RunResult r = Decimate(strips, 0.0);
+  CD_CHECK(r.Warnings == 1 && r.Errors == 0);
+  CD_CHECK(Result(r) == CanonicalSet(GetTriangles(mesh)));
+
+  r = Decimate(strips, 0.9);
+  CD_CHECK(r.Warnings == 1 && r.Errors == 0);
+  CD_CHECK(std::abs(r.ActualReduction - 0.9) <= 0.01);
+  CD_CHECK(r.Output->GetNumberOfStrips() == 0);
+  CheckDecimatedMesh(strips, r.Output, Expectation{ true, 2, 0, nullptr, false }, "strips");
+}
+
+void TestVerticesAndLines()
+{
+  auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
+  vtkNew<vtkCellArray> verts;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); i += 10)
+  {
+    verts->InsertNextCell(1, &i);
+  }
+  vtkNew<vtkCellArray> lines;
+  std::vector<vtkIdType> polyline;
+  for (vtkIdType i = 0; i < 20; ++i)
+  {
+    polyline.push_back(3 * i);
+  }
+  lines->InsertNextCell(static_cast<vtkIdType>(polyline.size()), polyline.data());
+  const vtkIdType segment[2] = { 5, 6 };
+  lines->InsertNextCell(2, segment);
+  mesh->SetVerts(verts);
+  mesh->SetLines(lines);
+  Decorate(mesh); // cell data over vertices, lines and triangles, in VTK's cell order
+  const RunResult r = Decimate(mesh, 0.9);
+  CD_CHECK_MSG(r.Warnings == 1 && r.Errors == 0, r.WarningText << r.ErrorText);
+  CD_CHECK(r.Output->GetNumberOfVerts() == 0 && r.Output->GetNumberOfLines() == 0);
+  CD_CHECK(std::abs(r.ActualReduction - 0.9) <= 0.01);
+  // The cell data of each triangle is its source triangle's (cell ids after the vertices
+  // and lines).
+  CheckDecimatedMesh(mesh, r.Output, Expectation{ true, 2, 0, nullptr, true }, "verts+lines");
+}
+
+void TestNonManifoldEdge()
+{
+  // A fin: a third triangle on an interior edge (a, c) of a grid.
+  const int nx = 40, ny = 30;
+  auto grid = meshes::Grid(nx, ny, Pattern::SmoothGradient);
+  const vtkIdType a = 15 * (nx + 1) + 20, c = 16 * (nx + 1) + 21; // a diagonal (i,j)-(i+1,j+1)
+  double pa[3], pc[3];
+  grid->GetPoint(a, pa);
+  grid->GetPoint(c, pc);
+  const vtkIdType x = grid->GetPoints()->InsertNextPoint(
+    0.5 * (pa[0] + pc[0]), 0.5 * (pa[1] + pc[1]), 0.5 * (pa[2] + pc[2]) + 0.3);
+  const vtkIdType fin[3] = { a, c, x };
+  grid->GetPolys()->InsertNextCell(3, fin);
+  meshes::ApplyPattern(grid, Pattern::SmoothGradient);
+  Decorate(grid);
+  CD_CHECK(AnalyseTopology(GetTriangles(grid)).NonManifoldEdges == 1);
+
+  const RunResult r = Decimate(grid, 0.9);
+  CD_CHECK_MSG(r.Warnings == 1 && r.Errors == 0, r.WarningText << r.ErrorText);
+  CD_CHECK(r.WarningText.find("non-manifold") != std::string::npos);
+  const std::set<vtkIdType> ids = OriginalIds(r.Output);
+  CD_CHECK(ids.count(a) && ids.count(c) && ids.count(x));
+  const std::vector<Tri> tris = GetOriginalTriangles(r.Output);
+  CD_CHECK(CanonicalSet(tris).count(Canonical({ a, c, x })) == 1);
+  int onEdge = 0;
+  for (const Tri& t : tris)
+  {
+    const bool hasA = t[0] == a || t[1] == a || t[2] == a;
+    const bool hasC = t[0] == c || t[1] == c || t[2] == c;
+    onEdge += hasA && hasC ? 1 : 0;
+  }
+  CD_CHECK(onEdge == 3);
+  const Topology topo = AnalyseTopology(tris);
+  CD_CHECK_MSG(topo.NonManifoldEdges == 1 && topo.MisorientedEdges == 0, topo);
+  CD_CHECK(std::abs(r.ActualReduction - 0.9) <= 0.01);
+  CD_CHECK(CheckPointDataCopied(grid, r.Output) == 0);
+  CD_CHECK(CheckCellDataCopied(grid, r.Output) == 0);
+  CD_CHECK(CountDegenerate(r.Output) == 0);
+}
+
+void TestBowTie()
+{
+  // Two grids that touch at one corner: a bow-tie vertex.
+  const int n = 20;
+  auto first = meshes::Grid(n, n, Pattern::Constant);
+  auto second = meshes::Grid(n, n, Pattern::Constant);
+  const vtkIdType shared = (n + 1) * (n + 1) - 1; // first's corner (1, 1)
+  const vtkIdType offset = first->GetNumberOfPoints() - 1;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (vtkIdType i = 0; i < first->GetNumberOfPoints(); ++i)
+  {
+    points->InsertNextPoint(first->GetPoint(i));
+  }
+  for (vtkIdType i = 1; i < second->GetNumberOfPoints(); ++i) // its corner 0 is `shared`
+  {
+    double p[3];
+    second->GetPoint(i, p);
+    points->InsertNextPoint(p[0] + 2, p[1] + 2, -p[2]);
+  }
+  vtkNew<vtkCellArray> polys;
+  for (const Tri& t : GetTriangles(first))
+  {
+    polys->InsertNextCell(3, t.data());
+  }
+  for (const Tri& t : GetTriangles(second))
+  {
+    Tri u;
+    for (int k = 0; k < 3; ++k)
+    {
+      u[k] = t[k] == 0 ? shared : t[k] + offset;
+    }
+    polys->InsertNextCell(3, u.data());
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  meshes::ApplyPattern(mesh, Pattern::SharpRegions);
+  Decorate(mesh);
+  CD_CHECK(AnalyseTopology(GetTriangles(mesh)).NonManifoldVertices == 1);
+
+  const RunResult r = Decimate(mesh, 0.9);
+  CD_CHECK_MSG(r.Warnings == 1 && r.Errors == 0, r.WarningText << r.ErrorText);
+  CD_CHECK(OriginalIds(r.Output).count(shared) == 1);
+  const Topology topo = AnalyseTopology(GetOriginalTriangles(r.Output));
+  CD_CHECK_MSG(topo.NonManifoldVertices == 1 && topo.NonManifoldEdges == 0 &&
+                 topo.MisorientedEdges == 0 && topo.BoundaryLoops == 2,
+               topo);
+  CD_CHECK(std::abs(r.ActualReduction - 0.9) <= 0.01);
+  CD_CHECK(CheckPointDataCopied(mesh, r.Output) == 0);
+  CD_CHECK(CheckCellDataCopied(mesh, r.Output) == 0);
+  CD_CHECK(CountDegenerate(r.Output) == 0);
+}
+
+void CheckFailsEmpty(const RunResult& r, const char* what)
+{
+  CD_CHECK_MSG(r.Errors == 1, what << ": " << r.Errors << " errors");
+  CD_CHECK_MSG(r.Output->GetNumberOfPoints() == 0 && r.Output->GetNumberOfCells() == 0,
+               what << ": the output is not empty");
+  CD_CHECK(r.Collapses == 0);
+}
+
+void TestNaNPoint()
+{
+  for (double bad :
+       { std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })
+  {
+    auto mesh = meshes::Icosphere(3, Pattern::SharpRegions);
+    mesh->GetPoints()->SetPoint(7, bad, 0, 0);
+    CheckFailsEmpty(Decimate(mesh, 0.9), "non-finite point");
+  }
+}
+
+void TestWrongTupleCount()
+{
+  auto mesh = meshes::Icosphere(3, Pattern::SharpRegions);
+  vtkNew<vtkUnsignedCharArray> shortArray;
+  shortArray->SetName("Short");
+  shortArray->SetNumberOfComponents(3);
+  shortArray->SetNumberOfTuples(mesh->GetNumberOfPoints() - 1);
+  shortArray->FillValue(100);
+  mesh->GetPointData()->AddArray(shortArray);
+  CheckFailsEmpty(Decimate(mesh, 0.9,
+                           [](vtkColorHalfEdgeDecimation* f) {
+                             f->SetInputArrayToProcess(
+                               0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Short");
+                           }),
+                  "short colour array");
+
+  // Too long, as the active scalars.
+  auto other = meshes::Icosphere(3, Pattern::SharpRegions);
+  vtkNew<vtkFloatArray> longArray;
+  longArray->SetNumberOfComponents(3);
+  longArray->SetNumberOfTuples(other->GetNumberOfPoints() + 5);
+  longArray->FillValue(0.5f);
+  SetColors(other, longArray);
+  CheckFailsEmpty(Decimate(other, 0.9), "long colour array");
+}
+
+void TestCellDataColor()
+{
+  auto mesh = meshes::Icosphere(3, Pattern::SharpRegions);
+  vtkNew<vtkUnsignedCharArray> faces;
+  faces->SetName("FaceRGB");
+  faces->SetNumberOfComponents(3);
+  faces->SetNumberOfTuples(mesh->GetNumberOfCells());
+  faces->FillValue(200);
+  mesh->GetCellData()->AddArray(faces);
+  CheckFailsEmpty(Decimate(mesh, 0.9,
+                           [](vtkColorHalfEdgeDecimation* f) {
+                             f->SetInputArrayToProcess(
+                               0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "FaceRGB");
+                           }),
+                  "cell colour array");
+}
+
+void TestPointIdsOutOfRange()
+{
+  auto mesh = meshes::Icosphere(3, Pattern::SharpRegions);
+  const vtkIdType bad[3] = { 0, 1, mesh->GetNumberOfPoints() };
+  mesh->GetPolys()->InsertNextCell(3, bad);
+  CheckFailsEmpty(Decimate(mesh, 0.9), "point id out of range");
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  return RunTestCases(argc, argv,
+                      { { "ColorMetricKeepsBorders", TestColorMetricKeepsBorders },
+                        { "ColorUnsignedCharRGBA", TestColorUnsignedCharRGBA },
+                        { "ColorFloatAndDouble", TestColorFloatAndDouble },
+                        { "ColorFloatRange", TestColorFloatRange },
+                        { "ColorOneComponent", TestColorOneComponent },
+                        { "ColorArrayByName", TestColorArrayByName },
+                        { "ColorNaN", TestColorNaN },
+                        { "EmptyInput", TestEmptyInput },
+                        { "NoColorArray", TestNoColorArray },
+                        { "Quads", TestQuads },
+                        { "TriangleStrips", TestTriangleStrips },
+                        { "VerticesAndLines", TestVerticesAndLines },
+                        { "NonManifoldEdge", TestNonManifoldEdge },
+                        { "BowTie", TestBowTie },
+                        { "NaNPoint", TestNaNPoint },
+                        { "WrongTupleCount", TestWrongTupleCount },
+                        { "CellDataColor", TestCellDataColor },
+                        { "PointIdsOutOfRange", TestPointIdsOutOfRange } });
+}
