@@ -474,8 +474,7 @@ long long CheckMeshConsistency(const HalfEdgeMesh& mesh, bool closed)
       continue;
     }
     ++live;
-    int32_t tri[3];
-    mesh.GetFace(f, tri);
+    const int32_t tri[3] = { mesh.Origin(3 * f), mesh.Origin(3 * f + 1), mesh.Origin(3 * f + 2) };
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
     {
       fail("face " + std::to_string(f) + " repeats a vertex");
@@ -566,8 +565,7 @@ long long Euler(const HalfEdgeMesh& mesh)
   {
     if (mesh.IsFaceAlive(f))
     {
-      int32_t t[3];
-      mesh.GetFace(f, t);
+      const int32_t t[3] = { mesh.Origin(3 * f), mesh.Origin(3 * f + 1), mesh.Origin(3 * f + 2) };
       tris.push_back({ t[0], t[1], t[2] });
     }
   }
