@@ -9,14 +9,14 @@ namespace colordecimation
 {
 
 CollapseVerdict CollapseRules::Check(const HalfEdgeMesh& mesh, const float* positions, int32_t v0,
-                                     int32_t v1)
+                                     int32_t v1, int stride)
 {
   const CollapseVerdict topology = this->CheckTopology(mesh, v0, v1);
   if (topology != CollapseVerdict::Legal)
   {
     return topology;
   }
-  return this->CheckGeometry(mesh, positions, v0, v1);
+  return this->CheckGeometry(mesh, positions, v0, v1, stride);
 }
 
 CollapseVerdict CollapseRules::CheckTopology(const HalfEdgeMesh& mesh, int32_t v0, int32_t v1)
@@ -90,10 +90,10 @@ CollapseVerdict CollapseRules::CheckTopology(const HalfEdgeMesh& mesh, int32_t v
 }
 
 CollapseVerdict CollapseRules::CheckGeometry(const HalfEdgeMesh& mesh, const float* positions,
-                                             int32_t v0, int32_t v1) const
+                                             int32_t v0, int32_t v1, int stride) const
 {
-  const float* p0 = positions + 3 * v0;
-  const float* p1 = positions + 3 * v1;
+  const float* p0 = positions + stride * v0;
+  const float* p1 = positions + stride * v1;
   const double minCos = this->Options.MinimumNormalCosine;
   CollapseVerdict verdict = CollapseVerdict::Legal;
   mesh.ForEachOutgoing(
@@ -110,8 +110,8 @@ CollapseVerdict CollapseRules::CheckGeometry(const HalfEdgeMesh& mesh, const flo
       {
         return; // this triangle disappears
       }
-      const float* pa = positions + 3 * a;
-      const float* pb = positions + 3 * b;
+      const float* pa = positions + stride * a;
+      const float* pb = positions + stride * b;
       double oldN[3], newN[3], ea[3], eb[3], fa[3], fb[3];
       for (int k = 0; k < 3; ++k)
       {

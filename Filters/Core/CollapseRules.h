@@ -54,12 +54,17 @@ public:
 
   const CollapseRuleOptions& GetOptions() const { return this->Options; }
 
-  /// Full check of v0 -> v1. `positions` holds 3 floats per vertex.
-  CollapseVerdict Check(const HalfEdgeMesh& mesh, const float* positions, int32_t v0, int32_t v1);
+  /**
+   * Full check of v0 -> v1. The position of vertex v is positions[stride * v + 0..2] (so that
+   * positions can live inside a larger per-vertex record).
+   */
+  CollapseVerdict Check(const HalfEdgeMesh& mesh, const float* positions, int32_t v0, int32_t v1,
+                        int stride = 3);
 
-  bool IsLegal(const HalfEdgeMesh& mesh, const float* positions, int32_t v0, int32_t v1)
+  bool IsLegal(const HalfEdgeMesh& mesh, const float* positions, int32_t v0, int32_t v1,
+               int stride = 3)
   {
-    return this->Check(mesh, positions, v0, v1) == CollapseVerdict::Legal;
+    return this->Check(mesh, positions, v0, v1, stride) == CollapseVerdict::Legal;
   }
 
   /// The topological part alone.
@@ -67,7 +72,7 @@ public:
 
   /// The geometric part alone: triangles of v0 moved onto p1 stay non-degenerate, unflipped.
   CollapseVerdict CheckGeometry(const HalfEdgeMesh& mesh, const float* positions, int32_t v0,
-                                int32_t v1) const;
+                                int32_t v1, int stride = 3) const;
 
 private:
   CollapseRuleOptions Options;

@@ -9,50 +9,64 @@ namespace colordecimation
 
 double CollapseColorError(const double p0[3], const double c0[3], const Ring& ring, int j)
 {
-  const double* p1 = &ring.P[3 * j];
-  const double* c1 = &ring.C[3 * j];
+  double p1[3], c1[3];
+  ring.GetPosition(j, p1);
+  ring.GetColor(j, c1);
   double error = 0;
   for (int i = 0; i < ring.Size; ++i)
   {
-    const double* pi = &ring.P[3 * i];
-    const double* ci = &ring.C[3 * i];
-    const double before = Distance3(c0, ci) * Distance3(p0, pi);
-    const double after = (i == j) ? 0.0 : Distance3(c1, ci) * Distance3(p1, pi);
+    double pi[3], ci[3];
+    ring.GetPosition(i, pi);
+    ring.GetColor(i, ci);
+    const double before = ColorLengthProduct(c0, ci, p0, pi);
+    const double after = (i == j) ? 0.0 : ColorLengthProduct(c1, ci, p1, pi);
     error += std::abs(before - after);
   }
   return error;
 }
 
+COLORDECIMATION_VECTOR_CLONES
 void CollapseColorErrors(const double p0[3], const double c0[3], Ring& ring, double* errors)
 {
   const int n = ring.Size;
+  const int padded = ring.PaddedSize();
+  const double* x = ring.X.data();
+  const double* y = ring.Y.data();
+  const double* z = ring.Z.data();
+  const double* r = ring.R.data();
+  const double* g = ring.G.data();
+  const double* b = ring.B.data();
+  double* product = ring.Product.data();
+  for (int i = 0; i < padded; ++i)
+  {
+    const double dx = x[i] - p0[0], dy = y[i] - p0[1], dz = z[i] - p0[2];
+    const double dr = r[i] - c0[0], dg = g[i] - c0[1], db = b[i] - c0[2];
+    product[i] = std::sqrt((dr * dr + dg * dg + db * db) * (dx * dx + dy * dy + dz * dz));
+    errors[i] = 0.0;
+  }
+  // All pairs, branch-free, over whole blocks of 4 (the padding lanes are computed and
+  // ignored): the inner loop vectorises without a scalar tail.
   for (int i = 0; i < n; ++i)
   {
-    ring.Product[i] = Distance3(c0, &ring.C[3 * i]) * Distance3(p0, &ring.P[3 * i]);
-  }
-  for (int j = 0; j < n; ++j)
-  {
-    if (!ring.IsCandidate[j])
+    const double xi = x[i], yi = y[i], zi = z[i], ri = r[i], gi = g[i], bi = b[i];
+    const double before = product[i];
+    for (int j0 = 0; j0 < padded; j0 += 4)
     {
-      continue;
-    }
-    const double* p1 = &ring.P[3 * j];
-    const double* c1 = &ring.C[3 * j];
-    double error = ring.Product[j];
-    for (int i = 0; i < n; ++i)
-    {
-      if (i != j)
+      for (int j = j0; j < j0 + 4; ++j)
       {
-        const double after = Distance3(c1, &ring.C[3 * i]) * Distance3(p1, &ring.P[3 * i]);
-        error += std::abs(ring.Product[i] - after);
+        const double dx = x[j] - xi, dy = y[j] - yi, dz = z[j] - zi;
+        const double dr = r[j] - ri, dg = g[j] - gi, db = b[j] - bi;
+        const double after =
+          std::sqrt((dr * dr + dg * dg + db * db) * (dx * dx + dy * dy + dz * dz));
+        errors[j] += std::abs(before - after);
       }
     }
-    errors[j] = error;
   }
 }
 
 void InitializeVertexMetrics(const HalfEdgeMesh& mesh, const float* positions, const float* colors,
-                             std::vector<VertexMetric>& metrics)
+                             std::vector<VertexMetric>& metrics, int positionStride,
+                             int colorStride)
 {
   const int32_t numVertices = mesh.GetNumberOfVertices();
   metrics.assign(numVertices, VertexMetric());
@@ -66,10 +80,11 @@ void InitializeVertexMetrics(const HalfEdgeMesh& mesh, const float* positions, c
     {
       continue;
     }
-    const int32_t* tri = mesh.GetFace(f);
-    const float* a = positions + 3 * tri[0];
-    const float* b = positions + 3 * tri[1];
-    const float* c = positions + 3 * tri[2];
+    int32_t tri[3];
+    mesh.GetFace(f, tri);
+    const float* a = positions + positionStride * tri[0];
+    const float* b = positions + positionStride * tri[1];
+    const float* c = positions + positionStride * tri[2];
     const double e1[3] = { double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2] };
     const double e2[3] = { double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2] };
     double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
@@ -107,8 +122,10 @@ void InitializeVertexMetrics(const HalfEdgeMesh& mesh, const float* positions, c
     }
     const int32_t a = mesh.Origin(h);
     const int32_t b = mesh.Target(h);
-    const double ca[3] = { colors[3 * a], colors[3 * a + 1], colors[3 * a + 2] };
-    const double cb[3] = { colors[3 * b], colors[3 * b + 1], colors[3 * b + 2] };
+    const float* fa = colors + colorStride * a;
+    const float* fb = colors + colorStride * b;
+    const double ca[3] = { fa[0], fa[1], fa[2] };
+    const double cb[3] = { fb[0], fb[1], fb[2] };
     const double d = Distance3(ca, cb);
     sum[a] += d;
     sum[b] += d;

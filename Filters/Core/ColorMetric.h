@@ -22,6 +22,13 @@
 #include <cstdint>
 #include <vector>
 
+/// Hot all-pairs loops get an AVX2 clone next to the baseline one, picked at load time.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#define COLORDECIMATION_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define COLORDECIMATION_VECTOR_CLONES
+#endif
+
 namespace colordecimation
 {
 class HalfEdgeMesh;
@@ -41,6 +48,19 @@ inline double Distance3(const double* a, const double* b)
   return std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
 }
 
+inline double SquaredDistance3(const double* a, const double* b)
+{
+  const double d0 = a[0] - b[0], d1 = a[1] - b[1], d2 = a[2] - b[2];
+  return d0 * d0 + d1 * d1 + d2 * d2;
+}
+
+/// |ca - cb| |pa - pb|, the colour difference along an edge (eq. 16), with one square root.
+inline double ColorLengthProduct(const double* ca, const double* cb, const double* pa,
+                                 const double* pb)
+{
+  return std::sqrt(SquaredDistance3(ca, cb) * SquaredDistance3(pa, pb));
+}
+
 /// eq. 14 from the sum and the maximum of the colour distances to the neighbours.
 inline double VisualImportance(double sumOfDistances, double maxDistance)
 {
@@ -54,38 +74,75 @@ inline double TotalCost(double quadricError, double importance, double colorErro
 }
 
 /**
- * The 1-ring of v0 as the cost needs it: neighbour ids, positions and colours, and which
- * neighbours are admissible collapse targets. Reused between calls (no allocation once grown).
+ * The 1-ring of v0 as the cost needs it: neighbour ids, positions and colours (as separate
+ * coordinate arrays, so that the all-pairs loops of the cost vectorise), and which neighbours
+ * are admissible collapse targets. Reused between calls (no allocation once grown).
  */
 struct Ring
 {
   int Size = 0;
   std::vector<int32_t> Vertex;
-  std::vector<double> P; ///< 3 per neighbour
-  std::vector<double> C; ///< 3 per neighbour
+  std::vector<double> X, Y, Z; ///< positions
+  std::vector<double> R, G, B; ///< colours
+  std::vector<double> QC;      ///< Q(i) at its own position (the quadric's constant term)
   std::vector<uint8_t> IsCandidate;
-  std::vector<double> Product; ///< |c0-ci| |p0-pi|, filled by CollapseColorErrors
+  std::vector<double> Product; ///< scratch: |c0-ci| |p0-pi|
+
+  /// Size rounded up to a multiple of 4: the arrays hold zeros up to there after Pad().
+  int PaddedSize() const { return (this->Size + 3) & ~3; }
 
   void Clear() { this->Size = 0; }
-  void Add(int32_t v, const double p[3], const double c[3], bool candidate)
+  void Add(int32_t v, const double p[3], const double c[3], bool candidate, double qc = 0.0)
   {
-    if (static_cast<size_t>(this->Size) == this->Vertex.size())
+    if (static_cast<size_t>(this->Size + 4) >= this->Vertex.size())
     {
-      const size_t n = 2 * this->Vertex.size() + 16;
-      this->Vertex.resize(n);
-      this->P.resize(3 * n);
-      this->C.resize(3 * n);
-      this->IsCandidate.resize(n);
-      this->Product.resize(n);
+      this->Grow();
     }
     const int k = this->Size++;
     this->Vertex[k] = v;
-    for (int j = 0; j < 3; ++j)
-    {
-      this->P[3 * k + j] = p[j];
-      this->C[3 * k + j] = c[j];
-    }
+    this->X[k] = p[0];
+    this->Y[k] = p[1];
+    this->Z[k] = p[2];
+    this->R[k] = c[0];
+    this->G[k] = c[1];
+    this->B[k] = c[2];
+    this->QC[k] = qc;
     this->IsCandidate[k] = candidate ? 1 : 0;
+  }
+  /// Zero the entries between Size and PaddedSize (so whole vector lanes can be computed).
+  void Pad()
+  {
+    for (int k = this->Size; k < this->PaddedSize(); ++k)
+    {
+      this->X[k] = this->Y[k] = this->Z[k] = this->R[k] = this->G[k] = this->B[k] = 0.0;
+      this->QC[k] = this->Product[k] = 0.0;
+      this->IsCandidate[k] = 0;
+    }
+  }
+  void GetPosition(int k, double p[3]) const
+  {
+    p[0] = this->X[k];
+    p[1] = this->Y[k];
+    p[2] = this->Z[k];
+  }
+  void GetColor(int k, double c[3]) const
+  {
+    c[0] = this->R[k];
+    c[1] = this->G[k];
+    c[2] = this->B[k];
+  }
+
+private:
+  void Grow()
+  {
+    const size_t n = 2 * this->Vertex.size() + 16; // a multiple of 4
+    this->Vertex.resize(n);
+    for (auto* v :
+         { &this->X, &this->Y, &this->Z, &this->R, &this->G, &this->B, &this->QC, &this->Product })
+    {
+      v->resize(n);
+    }
+    this->IsCandidate.resize(n);
   }
 };
 
@@ -97,20 +154,23 @@ VTKCOLORDECIMATION_EXPORT double CollapseColorError(const double p0[3], const do
                                                     const Ring& ring, int j);
 
 /**
- * eq. 16 (mended) for every candidate j of the ring at once, written to `errors[j]`
- * (non-candidates are left untouched). The products |c0-ci| |p0-pi| are shared by all j.
+ * eq. 16 (mended) for every member j of the ring at once, written to `errors[j]` (at least
+ * ring.PaddedSize() entries; the ring must have been padded with Pad()). The products |c0-ci|
+ * |p0-pi| are shared by all j; the i = j term needs no special case since |cj-cj| |pj-pj| = 0.
  */
 VTKCOLORDECIMATION_EXPORT void CollapseColorErrors(const double p0[3], const double c0[3],
                                                    Ring& ring, double* errors);
 
 /**
  * Initial per-vertex state on the input mesh: the area-weighted quadric of the triangles
- * around each vertex (eq. 8) and the visual importance (eq. 14). `positions` and `colors`
- * hold 3 floats per vertex; `colors` may be null (importance 0).
+ * around each vertex (eq. 8) and the visual importance (eq. 14). Vertex v's position is
+ * positions[positionStride * v + 0..2], its colour colors[colorStride * v + 0..2]; `colors` may be
+ * null (importance 0).
  */
 VTKCOLORDECIMATION_EXPORT void InitializeVertexMetrics(const HalfEdgeMesh& mesh,
                                                        const float* positions, const float* colors,
-                                                       std::vector<VertexMetric>& metrics);
+                                                       std::vector<VertexMetric>& metrics,
+                                                       int positionStride = 3, int colorStride = 3);
 
 } // namespace colordecimation
 

@@ -26,6 +26,16 @@ Decimator::Decimator(const DecimatorOptions& options)
 {
 }
 
+std::vector<float> Decimator::GetNormalizedPositions() const
+{
+  std::vector<float> positions(3 * this->Hot.size());
+  for (size_t v = 0; v < this->Hot.size(); ++v)
+  {
+    std::copy(this->Hot[v].P, this->Hot[v].P + 3, positions.begin() + 3 * v);
+  }
+  return positions;
+}
+
 DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTriangles,
                                    const std::function<bool(double)>& progress)
 {
@@ -76,19 +86,24 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
   const double scale = (stats.MeanEdgeLength > 0 && std::isfinite(stats.MeanEdgeLength))
     ? 1.0 / stats.MeanEdgeLength
     : 1.0;
-  this->P.resize(3 * static_cast<size_t>(n));
+  this->UseColor = this->Options.Metric == ErrorMetric::HalfEdgeColor && input.Colors;
+  this->Hot.resize(n);
   for (int32_t v = 0; v < n; ++v)
   {
+    HotVertex& hot = this->Hot[v];
     for (int k = 0; k < 3; ++k)
     {
       const double centre = 0.5 * (lo[k] + hi[k]);
-      this->P[3 * v + k] = static_cast<float>((input.Points[3 * v + k] - centre) * scale);
+      hot.P[k] = static_cast<float>((input.Points[3 * v + k] - centre) * scale);
+      hot.C[k] = this->UseColor ? input.Colors[3 * v + k] : 0.0f;
     }
+    hot.QC = 0;
+    hot.Spare = 0;
   }
-  this->Colors = this->Options.Metric == ErrorMetric::Geometry ? nullptr : input.Colors;
 
   // 3. Per-vertex metric state.
-  InitializeVertexMetrics(this->Mesh, this->P.data(), this->Colors, this->Metrics);
+  InitializeVertexMetrics(this->Mesh, this->Positions(), this->UseColor ? this->Hot[0].C : nullptr,
+                          this->Metrics, HotStride, HotStride);
 
   // 4. Initial costs.
   this->Heap.Reset(n);
@@ -99,25 +114,29 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
   }
 
   // 5. Collapse.
-  const int64_t toRemove =
-    std::max<int64_t>(this->Mesh.GetNumberOfLiveFaces() - stats.TargetTriangles, 1);
   const int64_t startFaces = this->Mesh.GetNumberOfLiveFaces();
+  const int64_t toRemove = std::max<int64_t>(startFaces - stats.TargetTriangles, 1);
   int64_t nextReport = 0;
   while (this->Mesh.GetNumberOfLiveFaces() > stats.TargetTriangles && !this->Heap.Empty())
   {
     const int32_t v0 = this->Heap.Top();
     const int32_t v1 = this->Best[v0];
-    if (!this->Rules.IsLegal(this->Mesh, this->P.data(), v0, v1))
+    if (v1 < 0)
+    {
+      this->Heap.Pop(); // no collapse left for v0 (removed lazily)
+      continue;
+    }
+    if (!this->Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride))
     {
       ++stats.RejectedPops;
       const Choice legal = this->Evaluate(v0, true);
+      this->Best[v0] = legal.Target;
       if (legal.Target < 0)
       {
         this->Heap.Remove(v0);
       }
       else
       {
-        this->Best[v0] = legal.Target;
         this->Heap.Set(v0, legal.Cost);
       }
       continue;
@@ -127,20 +146,38 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
     // eq. 9 and 15: v1 takes over v0's quadric and importance.
     VertexMetric& m0 = this->Metrics[v0];
     VertexMetric& m1 = this->Metrics[v1];
-    const double d[3] = { double(this->P[3 * v1]) - this->P[3 * v0],
-                          double(this->P[3 * v1 + 1]) - this->P[3 * v0 + 1],
-                          double(this->P[3 * v1 + 2]) - this->P[3 * v0 + 2] };
+    const float* p0 = this->Hot[v0].P;
+    const float* p1 = this->Hot[v1].P;
+    const double d[3] = { double(p1[0]) - p0[0], double(p1[1]) - p0[1], double(p1[2]) - p0[2] };
     m1.Q.AddShifted(m0.Q, d);
     m1.Importance += m0.Importance;
     m1.MaxColorDistance = std::max(m1.MaxColorDistance, m0.MaxColorDistance);
+    this->Hot[v1].QC = m1.Q.C;
 
+    this->FormerNeighbors.clear();
+    this->Mesh.ForEachNeighbor(v0, [this](int32_t u) { this->FormerNeighbors.push_back(u); });
     this->Mesh.Collapse(v0, v1);
     ++stats.Collapses;
     this->Best[v0] = -1;
 
-    // Re-cost v1 and its new 1-ring: their outgoing half-edges changed.
+    // v1 and v0's former neighbours have a new 1-ring: re-cost them. The other neighbours
+    // of v1 only saw their cost towards v1 grow: re-cost those whose choice was v1.
     this->Update(v1);
-    this->Mesh.ForEachNeighbor(v1, [this](int32_t u) { this->Update(u); });
+    for (int32_t u : this->FormerNeighbors)
+    {
+      if (u != v1)
+      {
+        this->Update(u);
+      }
+    }
+    this->Mesh.ForEachNeighbor(v1,
+                               [this, v1](int32_t u)
+                               {
+                                 if (this->Best[u] == v1)
+                                 {
+                                   this->Update(u);
+                                 }
+                               });
 
     if (progress && stats.Collapses >= nextReport)
     {
@@ -154,8 +191,9 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
     }
   }
   stats.OutputTriangles = this->Mesh.GetNumberOfLiveFaces();
-  stats.StateBytes =
-    24 * size_t(input.NumberOfTriangles) + size_t(n) * (5 + 12 + sizeof(VertexMetric) + 16 + 4);
+  // Connectivity 24 B/triangle + 5 B/vertex; metric 48; hot record 32; heap 16; choice 4.
+  stats.StateBytes = 24 * size_t(input.NumberOfTriangles) +
+    size_t(n) * (5 + sizeof(VertexMetric) + sizeof(HotVertex) + 16 + 4);
   return stats;
 }
 
@@ -166,12 +204,11 @@ void Decimator::Update(int32_t v)
     return;
   }
   const Choice best = this->Evaluate(v, false);
+  this->Best[v] = best.Target;
   if (best.Target < 0)
   {
-    this->Heap.Remove(v);
-    return;
+    return; // left in the heap, if it is there, and dropped when it comes to the top
   }
-  this->Best[v] = best.Target;
   this->Heap.Set(v, best.Cost);
 }
 
@@ -180,61 +217,61 @@ void Decimator::GatherRing(int32_t v0)
   Ring& ring = this->CurrentRing;
   ring.Clear();
   const bool boundary = this->Mesh.IsBoundaryVertex(v0);
-  static const double black[3] = { 0, 0, 0 };
-  this->Mesh.ForEachNeighbor(
-    v0,
-    [&](int32_t u)
-    {
-      const double p[3] = { this->P[3 * u], this->P[3 * u + 1], this->P[3 * u + 2] };
-      double c[3] = { 0, 0, 0 };
-      if (this->Colors)
-      {
-        c[0] = this->Colors[3 * u];
-        c[1] = this->Colors[3 * u + 1];
-        c[2] = this->Colors[3 * u + 2];
-      }
-      // A boundary vertex only collapses along its boundary: to the first or last neighbour.
-      const bool candidate = !this->Mesh.IsLocked(u) && (!boundary || ring.Size == 0);
-      ring.Add(u, p, this->Colors ? c : black, candidate);
-    });
+  this->Mesh.ForEachNeighbor(v0,
+                             [&](int32_t u)
+                             {
+                               const HotVertex& hot = this->Hot[u];
+                               const double p[3] = { hot.P[0], hot.P[1], hot.P[2] };
+                               const double c[3] = { hot.C[0], hot.C[1], hot.C[2] };
+                               // A boundary vertex only collapses along its boundary: to the first
+                               // or last neighbour.
+                               const bool candidate =
+                                 !this->Mesh.IsLocked(u) && (!boundary || ring.Size == 0);
+                               ring.Add(u, p, c, candidate, hot.QC);
+                             });
   if (boundary && ring.Size > 0)
   {
     ring.IsCandidate[ring.Size - 1] = !this->Mesh.IsLocked(ring.Vertex[ring.Size - 1]);
   }
+  ring.Pad();
 }
 
+COLORDECIMATION_VECTOR_CLONES
 void Decimator::CostRing(int32_t v0)
 {
   Ring& ring = this->CurrentRing;
-  if (this->Costs.size() < static_cast<size_t>(ring.Size))
+  const int n = ring.PaddedSize();
+  if (this->Costs.size() < static_cast<size_t>(n))
   {
-    this->Costs.resize(2 * ring.Size);
+    this->Costs.resize(2 * n);
   }
-  const double p0[3] = { this->P[3 * v0], this->P[3 * v0 + 1], this->P[3 * v0 + 2] };
-  const VertexMetric& m0 = this->Metrics[v0];
-  const bool useColor = this->Options.Metric == ErrorMetric::HalfEdgeColor;
-  if (useColor)
+  double* costs = this->Costs.data();
+  const HotVertex& hot0 = this->Hot[v0];
+  const double p0[3] = { hot0.P[0], hot0.P[1], hot0.P[2] };
+  const bool paperMetric = this->Options.Metric == ErrorMetric::HalfEdgeColor;
+  if (paperMetric)
   {
-    double c0[3] = { 0, 0, 0 };
-    if (this->Colors)
-    {
-      c0[0] = this->Colors[3 * v0];
-      c0[1] = this->Colors[3 * v0 + 1];
-      c0[2] = this->Colors[3 * v0 + 2];
-    }
-    CollapseColorErrors(p0, c0, ring, this->Costs.data());
+    const double c0[3] = { hot0.C[0], hot0.C[1], hot0.C[2] };
+    CollapseColorErrors(p0, c0, ring, costs);
   }
-  for (int j = 0; j < ring.Size; ++j)
+  // (Q(v0) + Q(j))(pj): Q(v0) is centred at p0, Q(j) at pj (so it contributes its constant).
+  const Quadric& q0 = this->Metrics[v0].Q;
+  const double a00 = q0.A00, a01 = q0.A01, a02 = q0.A02, a11 = q0.A11, a12 = q0.A12, a22 = q0.A22,
+               b0 = q0.B0, b1 = q0.B1, b2 = q0.B2, c = q0.C;
+  const double weight = this->Options.GeometryWeight;
+  const double importance = this->Metrics[v0].Importance;
+  const double* x = ring.X.data();
+  const double* y = ring.Y.data();
+  const double* z = ring.Z.data();
+  const double* qc = ring.QC.data();
+  for (int j = 0; j < n; ++j)
   {
-    if (!ring.IsCandidate[j])
-    {
-      continue;
-    }
-    const double d[3] = { ring.P[3 * j] - p0[0], ring.P[3 * j + 1] - p0[1],
-                          ring.P[3 * j + 2] - p0[2] };
-    const double q = this->Options.GeometryWeight *
-      std::max(0.0, m0.Q.Evaluate(d) + double(this->Metrics[ring.Vertex[j]].Q.C));
-    this->Costs[j] = useColor ? TotalCost(q, m0.Importance, this->Costs[j]) : q;
+    const double dx = x[j] - p0[0], dy = y[j] - p0[1], dz = z[j] - p0[2];
+    const double quadric = dx * (a00 * dx + a01 * dy + a02 * dz) +
+      dy * (a01 * dx + a11 * dy + a12 * dz) + dz * (a02 * dx + a12 * dy + a22 * dz) +
+      2.0 * (b0 * dx + b1 * dy + b2 * dz) + c + qc[j];
+    const double q = weight * std::max(0.0, quadric);
+    costs[j] = paperMetric ? TotalCost(q, importance, costs[j]) : q;
   }
 }
 
@@ -246,6 +283,7 @@ Decimator::Choice Decimator::Evaluate(int32_t v0, bool exact)
   {
     return choice;
   }
+  __builtin_prefetch(&this->Metrics[v0]);
   this->GatherRing(v0);
   this->CostRing(v0);
   const Ring& ring = this->CurrentRing;
@@ -275,7 +313,7 @@ Decimator::Choice Decimator::Evaluate(int32_t v0, bool exact)
             [this](int a, int b) { return this->Costs[a] < this->Costs[b]; });
   for (int j : this->Order)
   {
-    if (this->Rules.IsLegal(this->Mesh, this->P.data(), v0, ring.Vertex[j]))
+    if (this->Rules.IsLegal(this->Mesh, this->Positions(), v0, ring.Vertex[j], HotStride))
     {
       choice.Target = ring.Vertex[j];
       choice.Cost = this->Costs[j];

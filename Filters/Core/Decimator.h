@@ -9,14 +9,22 @@
  * 3. InitializeVertexMetrics: area-weighted quadrics and visual importance;
  * 4. every vertex costed (Evaluate) and pushed on the VertexHeap;
  * 5. pop, check CollapseRules, collapse, merge the metric state (Q and I accumulate into v1),
- *    re-cost v1 and its new 1-ring.
+ *    re-cost v1, v0's former neighbours (their 1-ring changed) and those neighbours of v1
+ *    whose chosen target was v1 (its quadric grew).
  *
  * Costing is lazy about legality: a vertex is keyed by its cheapest *admissible* target (the
  * boundary rule and locks only), which is a lower bound of its cheapest *valid* one. When a
  * popped vertex's best collapse turns out illegal, the vertex is re-costed over its legal
  * collapses only and pushed back. Because keys never exceed the true priority, the vertex
  * that is collapsed is always the one with the lowest valid cost, exactly as an eager check of
- * every candidate would choose, at a fraction of the work.
+ * every candidate would choose, at a fraction of the work. The same argument lets the other
+ * neighbours of v1 keep their keys: their 1-ring is unchanged and the only cost that moved,
+ * towards v1, can only have grown (Q(v1) gained Q(v0) evaluated at p1, which is >= 0).
+ *
+ * Vertices with no collapse left stay in the heap and are dropped when they reach the top.
+ *
+ * Data layout: what costing reads of a neighbour (position, colour, the constant term of its
+ * quadric) sits in one 32-byte record per vertex, so a neighbour costs one cache line.
  */
 #ifndef colordecimation_Decimator_h
 #define colordecimation_Decimator_h
@@ -87,8 +95,10 @@ public:
 
   const HalfEdgeMesh& GetMesh() const { return this->Mesh; }
   const std::vector<VertexMetric>& GetMetrics() const { return this->Metrics; }
-  /// Positions in the normalised frame (3 floats per vertex).
-  const std::vector<float>& GetNormalizedPositions() const { return this->P; }
+  /// Position of v in the normalised frame.
+  const float* GetNormalizedPosition(int32_t v) const { return this->Hot[v].P; }
+  /// Positions in the normalised frame (3 floats per vertex; a copy).
+  std::vector<float> GetNormalizedPositions() const;
 
   /**
    * The cost of v0 -> v1 on the current mesh (no legality check), or a negative value if
@@ -108,14 +118,26 @@ private:
   void CostRing(int32_t v0);
   void Update(int32_t v);
 
+  /// What costing reads of a vertex, in one record (8 floats).
+  struct HotVertex
+  {
+    float P[3];  ///< position, normalised frame
+    float C[3];  ///< colour, RGB in [0,1] (0 without colour)
+    float QC;    ///< copy of Metrics[v].Q.C: Q(v) at its own position
+    float Spare; ///< keeps the record at 32 bytes
+  };
+  static constexpr int HotStride = sizeof(HotVertex) / sizeof(float);
+  const float* Positions() const { return this->Hot.empty() ? nullptr : this->Hot[0].P; }
+
   DecimatorOptions Options;
   CollapseRules Rules;
   HalfEdgeMesh Mesh;
-  std::vector<float> P;
-  const float* Colors = nullptr;
+  std::vector<HotVertex> Hot;
+  bool UseColor = false;
   std::vector<VertexMetric> Metrics;
+  std::vector<int32_t> FormerNeighbors;
   VertexHeap Heap;
-  std::vector<int32_t> Best; ///< heap vertex -> its chosen target
+  std::vector<int32_t> Best; ///< vertex -> its chosen target, -1 if none
   Ring CurrentRing;
   std::vector<double> Costs;
   std::vector<int> Order;

@@ -10,8 +10,12 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
 {
   MeshBuildReport report;
   const int32_t numHalfEdges = 3 * numTriangles;
-  this->V.assign(triangles, triangles + numHalfEdges);
-  this->T.assign(numHalfEdges, -1);
+  this->Corners.resize(numHalfEdges);
+  for (int32_t h = 0; h < numHalfEdges; ++h)
+  {
+    this->Corners[h].Vertex = triangles[h];
+    this->Corners[h].Twin = -1;
+  }
   this->Out.assign(numVertices, -1);
   this->Flags.assign(numVertices, 0);
   this->LiveFaces = numTriangles;
@@ -20,7 +24,7 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
   std::vector<int32_t> offsets(static_cast<size_t>(numVertices) + 1, 0);
   for (int32_t h = 0; h < numHalfEdges; ++h)
   {
-    ++offsets[this->V[h] + 1];
+    ++offsets[this->Corners[h].Vertex + 1];
   }
   for (int32_t v = 0; v < numVertices; ++v)
   {
@@ -31,14 +35,14 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
     std::vector<int32_t> fill(offsets.begin(), offsets.end() - 1);
     for (int32_t h = 0; h < numHalfEdges; ++h)
     {
-      outgoing[fill[this->V[h]]++] = h;
+      outgoing[fill[this->Corners[h].Vertex]++] = h;
     }
   }
 
   // Pair twins. An edge is manifold when it has exactly one half-edge each way.
   for (int32_t h = 0; h < numHalfEdges; ++h)
   {
-    const int32_t a = this->V[h];
+    const int32_t a = this->Corners[h].Vertex;
     const int32_t b = this->Target(h);
     int32_t forward = 0, backward = 0, twin = -1, smallest = h;
     for (int32_t k = offsets[a]; k < offsets[a + 1]; ++k)
@@ -62,7 +66,7 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
     }
     if (forward == 1 && backward == 1)
     {
-      this->T[h] = twin;
+      this->Corners[h].Twin = twin;
     }
     else if (forward == 1 && backward == 0)
     {
@@ -91,7 +95,7 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
     int32_t boundaryOut = -1, boundaryCount = 0;
     for (int32_t k = offsets[v]; k < offsets[v + 1]; ++k)
     {
-      if (this->T[outgoing[k]] < 0)
+      if (this->Corners[outgoing[k]].Twin < 0)
       {
         boundaryOut = outgoing[k];
         ++boundaryCount;
@@ -109,7 +113,7 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
       do
       {
         ++visited;
-        h = this->T[Prev(h)];
+        h = this->Corners[Prev(h)].Twin;
       } while (h >= 0 && h != this->Out[v] && visited <= count);
     }
     if (visited != count)
@@ -148,21 +152,21 @@ int32_t HalfEdgeMesh::FindHalfEdge(int32_t a, int32_t b) const
 
 void HalfEdgeMesh::RemoveFace(int32_t h)
 {
-  const int32_t ta = this->T[Next(h)];
-  const int32_t tb = this->T[Prev(h)];
+  const int32_t ta = this->Corners[Next(h)].Twin;
+  const int32_t tb = this->Corners[Prev(h)].Twin;
   if (ta >= 0)
   {
-    this->T[ta] = tb;
+    this->Corners[ta].Twin = tb;
   }
   if (tb >= 0)
   {
-    this->T[tb] = ta;
+    this->Corners[tb].Twin = ta;
   }
   const int32_t first = h - h % 3;
   for (int32_t k = first; k < first + 3; ++k)
   {
-    this->V[k] = -1;
-    this->T[k] = -1;
+    this->Corners[k].Vertex = -1;
+    this->Corners[k].Twin = -1;
   }
   --this->LiveFaces;
 }
@@ -173,7 +177,7 @@ void HalfEdgeMesh::RepairOutgoing(int32_t v, int32_t candidate)
   {
     // Locked vertices are never circulated; any live outgoing half-edge will do.
     const int32_t current = this->Out[v];
-    if (current < 0 || this->V[current] != v)
+    if (current < 0 || this->Corners[current].Vertex != v)
     {
       this->Out[v] = candidate;
     }
@@ -183,11 +187,11 @@ void HalfEdgeMesh::RepairOutgoing(int32_t v, int32_t candidate)
   int32_t h = candidate;
   do
   {
-    if (this->T[h] < 0)
+    if (this->Corners[h].Twin < 0)
     {
       break;
     }
-    h = Next(this->T[h]);
+    h = Next(this->Corners[h].Twin);
   } while (h != candidate);
   this->Out[v] = h;
 }
@@ -207,9 +211,9 @@ int HalfEdgeMesh::Collapse(int32_t v0, int32_t v1)
   if (h01 >= 0)
   {
     // Face (v0, v1, vl): ta runs vl -> v1, tb runs v0 -> vl (v1 -> vl after relabelling).
-    const int32_t ta = this->T[Next(h01)];
-    const int32_t tb = this->T[Prev(h01)];
-    vl = this->V[Prev(h01)];
+    const int32_t ta = this->Corners[Next(h01)].Twin;
+    const int32_t tb = this->Corners[Prev(h01)].Twin;
+    vl = this->Corners[Prev(h01)].Vertex;
     leftCandidate = ta >= 0 ? ta : Next(tb);
     keepCandidate = tb >= 0 ? tb : Next(ta);
     this->RemoveFace(h01);
@@ -218,9 +222,9 @@ int HalfEdgeMesh::Collapse(int32_t v0, int32_t v1)
   if (h10 >= 0)
   {
     // Face (v1, v0, vr): ta runs vr -> v0 (vr -> v1 after relabelling), tb runs v1 -> vr.
-    const int32_t ta = this->T[Next(h10)];
-    const int32_t tb = this->T[Prev(h10)];
-    vr = this->V[Prev(h10)];
+    const int32_t ta = this->Corners[Next(h10)].Twin;
+    const int32_t tb = this->Corners[Prev(h10)].Twin;
+    vr = this->Corners[Prev(h10)].Vertex;
     rightCandidate = ta >= 0 ? ta : Next(tb);
     keepCandidate = tb >= 0 ? tb : Next(ta);
     this->RemoveFace(h10);
@@ -228,9 +232,9 @@ int HalfEdgeMesh::Collapse(int32_t v0, int32_t v1)
   }
   for (int32_t h : this->Scratch)
   {
-    if (this->V[h] == v0)
+    if (this->Corners[h].Vertex == v0)
     {
-      this->V[h] = v1;
+      this->Corners[h].Vertex = v1;
     }
   }
   this->Out[v0] = -1;

@@ -66,23 +66,31 @@ public:
   static int32_t Next(int32_t h) { return (h % 3 == 2) ? h - 2 : h + 1; }
   static int32_t Prev(int32_t h) { return (h % 3 == 0) ? h + 2 : h - 1; }
 
-  int32_t Origin(int32_t h) const { return this->V[h]; }
-  int32_t Target(int32_t h) const { return this->V[Next(h)]; }
-  int32_t Twin(int32_t h) const { return this->T[h]; }
+  int32_t Origin(int32_t h) const { return this->Corners[h].Vertex; }
+  int32_t Target(int32_t h) const { return this->Corners[Next(h)].Vertex; }
+  int32_t Twin(int32_t h) const { return this->Corners[h].Twin; }
   int32_t Outgoing(int32_t v) const { return this->Out[v]; }
 
   int32_t GetNumberOfVertices() const { return static_cast<int32_t>(this->Out.size()); }
-  int32_t GetNumberOfFaceSlots() const { return static_cast<int32_t>(this->V.size() / 3); }
+  int32_t GetNumberOfFaceSlots() const { return static_cast<int32_t>(this->Corners.size() / 3); }
   int64_t GetNumberOfLiveFaces() const { return this->LiveFaces; }
-  bool IsFaceAlive(int32_t f) const { return this->V[3 * f] >= 0; }
-  const int32_t* GetFace(int32_t f) const { return this->V.data() + 3 * f; }
+  bool IsFaceAlive(int32_t f) const { return this->Corners[3 * f].Vertex >= 0; }
+  void GetFace(int32_t f, int32_t ids[3]) const
+  {
+    ids[0] = this->Corners[3 * f].Vertex;
+    ids[1] = this->Corners[3 * f + 1].Vertex;
+    ids[2] = this->Corners[3 * f + 2].Vertex;
+  }
 
   bool IsLocked(int32_t v) const { return (this->Flags[v] & Locked) != 0; }
   bool IsRemoved(int32_t v) const { return (this->Flags[v] & Removed) != 0; }
   /// A vertex that still has triangles, is manifold and may take part in collapses.
   bool IsCollapsible(int32_t v) const { return this->Flags[v] == 0 && this->Out[v] >= 0; }
   /// Only meaningful for unlocked vertices.
-  bool IsBoundaryVertex(int32_t v) const { return this->Out[v] >= 0 && this->T[this->Out[v]] < 0; }
+  bool IsBoundaryVertex(int32_t v) const
+  {
+    return this->Out[v] >= 0 && this->Corners[this->Out[v]].Twin < 0;
+  }
 
   /**
    * Call `f(h)` for every outgoing half-edge of an unlocked vertex, in fan order (for a
@@ -100,7 +108,7 @@ public:
     do
     {
       f(h);
-      h = this->T[Prev(h)];
+      h = this->Corners[Prev(h)].Twin;
     } while (h >= 0 && h != start);
   }
 
@@ -122,10 +130,10 @@ public:
     {
       f(this->Target(h));
       const int32_t p = Prev(h);
-      h = this->T[p];
+      h = this->Corners[p].Twin;
       if (h < 0)
       {
-        f(this->V[p]);
+        f(this->Corners[p].Vertex);
       }
     } while (h >= 0 && h != start);
   }
@@ -149,8 +157,14 @@ private:
   void RemoveFace(int32_t h);
   void RepairOutgoing(int32_t v, int32_t candidate);
 
-  std::vector<int32_t> V;       ///< corner -> vertex; -1 for deleted faces
-  std::vector<int32_t> T;       ///< half-edge -> twin half-edge, -1 on boundaries
+  /// A corner of a face, which is also the half-edge leaving it. Vertex and twin sit side by
+  /// side so that circulating a vertex touches one cache line per face.
+  struct Corner
+  {
+    int32_t Vertex; ///< -1 for deleted faces
+    int32_t Twin;   ///< twin half-edge, -1 on boundaries
+  };
+  std::vector<Corner> Corners;
   std::vector<int32_t> Out;     ///< vertex -> one outgoing half-edge, -1 if it has none
   std::vector<uint8_t> Flags;   ///< VertexFlag bits
   std::vector<int32_t> Scratch; ///< reused by Collapse

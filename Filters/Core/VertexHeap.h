@@ -1,10 +1,12 @@
 /**
  * @file VertexHeap.h
- * @brief An indexed binary min-heap of vertices keyed by their collapse cost, with
+ * @brief An indexed 4-ary min-heap of vertices keyed by their collapse cost, with
  * decrease-key, increase-key and removal in O(log n).
  *
- * Flat arrays only: the heap of vertex ids, and per vertex its key and its slot in the heap
- * (-1 when absent). 16 bytes per vertex.
+ * Flat arrays only: the heap entries (key and vertex side by side, so that comparing the
+ * four children of a node reads one or two cache lines) and, per vertex, its slot in the
+ * heap (-1 when absent). A 4-ary heap is half as deep as a binary one, which matters because
+ * the decimation touches the heap at random places: 16 bytes per heap entry + 4 per vertex.
  */
 #ifndef colordecimation_VertexHeap_h
 #define colordecimation_VertexHeap_h
@@ -25,35 +27,35 @@ public:
     this->Heap.clear();
     this->Heap.reserve(numVertices);
     this->Slot.assign(numVertices, -1);
-    this->Key.assign(numVertices, 0.0);
   }
 
   bool Empty() const { return this->Heap.empty(); }
   size_t Size() const { return this->Heap.size(); }
   bool Contains(int32_t v) const { return this->Slot[v] >= 0; }
-  double GetKey(int32_t v) const { return this->Key[v]; }
-  int32_t Top() const { return this->Heap.front(); }
+  /// The key of a vertex in the heap.
+  double GetKey(int32_t v) const { return this->Heap[this->Slot[v]].Key; }
+  int32_t Top() const { return this->Heap.front().Vertex; }
+  double TopKey() const { return this->Heap.front().Key; }
 
   /// Insert v, or move it to its new key if it is already in.
   void Set(int32_t v, double key)
   {
-    if (this->Slot[v] < 0)
+    int32_t slot = this->Slot[v];
+    if (slot < 0)
     {
-      this->Key[v] = key;
-      this->Slot[v] = static_cast<int32_t>(this->Heap.size());
-      this->Heap.push_back(v);
-      this->Up(this->Slot[v]);
+      slot = static_cast<int32_t>(this->Heap.size());
+      this->Heap.push_back(Entry{ key, v });
+      this->Up(slot, Entry{ key, v });
       return;
     }
-    const double old = this->Key[v];
-    this->Key[v] = key;
+    const double old = this->Heap[slot].Key;
     if (key < old)
     {
-      this->Up(this->Slot[v]);
+      this->Up(slot, Entry{ key, v });
     }
     else
     {
-      this->Down(this->Slot[v]);
+      this->Down(slot, Entry{ key, v });
     }
   }
 
@@ -65,79 +67,91 @@ public:
     {
       return;
     }
-    const int32_t last = this->Heap.back();
+    const Entry last = this->Heap.back();
     this->Heap.pop_back();
     this->Slot[v] = -1;
-    if (last != v)
+    if (last.Vertex != v)
     {
-      this->Heap[slot] = last;
-      this->Slot[last] = slot;
-      this->Up(slot);
-      this->Down(this->Slot[last]);
+      if (slot > 0 && last.Key < this->Heap[(slot - 1) / 4].Key)
+      {
+        this->Up(slot, last);
+      }
+      else
+      {
+        this->Down(slot, last);
+      }
     }
   }
 
   /// Remove and return the vertex with the smallest key.
   int32_t Pop()
   {
-    const int32_t v = this->Heap.front();
+    const int32_t v = this->Heap.front().Vertex;
     this->Remove(v);
     return v;
   }
 
 private:
-  void Up(int32_t slot)
+  struct Entry
   {
-    const int32_t v = this->Heap[slot];
-    const double key = this->Key[v];
+    double Key;
+    int32_t Vertex;
+  };
+
+  void Place(int32_t slot, const Entry& e)
+  {
+    this->Heap[slot] = e;
+    this->Slot[e.Vertex] = slot;
+  }
+
+  /// Move `e`, destined for `slot`, up to its place.
+  void Up(int32_t slot, Entry e)
+  {
     while (slot > 0)
     {
-      const int32_t parent = (slot - 1) / 2;
-      const int32_t p = this->Heap[parent];
-      if (!(key < this->Key[p]))
+      const int32_t parent = (slot - 1) / 4;
+      if (!(e.Key < this->Heap[parent].Key))
       {
         break;
       }
-      this->Heap[slot] = p;
-      this->Slot[p] = slot;
+      this->Place(slot, this->Heap[parent]);
       slot = parent;
     }
-    this->Heap[slot] = v;
-    this->Slot[v] = slot;
+    this->Place(slot, e);
   }
 
-  void Down(int32_t slot)
+  /// Move `e`, destined for `slot`, down to its place.
+  void Down(int32_t slot, Entry e)
   {
     const int32_t n = static_cast<int32_t>(this->Heap.size());
-    const int32_t v = this->Heap[slot];
-    const double key = this->Key[v];
     for (;;)
     {
-      int32_t child = 2 * slot + 1;
-      if (child >= n)
+      const int32_t first = 4 * slot + 1;
+      if (first >= n)
       {
         break;
       }
-      if (child + 1 < n && this->Key[this->Heap[child + 1]] < this->Key[this->Heap[child]])
+      const int32_t last = first + 4 < n ? first + 4 : n;
+      int32_t best = first;
+      for (int32_t c = first + 1; c < last; ++c)
       {
-        ++child;
+        if (this->Heap[c].Key < this->Heap[best].Key)
+        {
+          best = c;
+        }
       }
-      const int32_t c = this->Heap[child];
-      if (!(this->Key[c] < key))
+      if (!(this->Heap[best].Key < e.Key))
       {
         break;
       }
-      this->Heap[slot] = c;
-      this->Slot[c] = slot;
-      slot = child;
+      this->Place(slot, this->Heap[best]);
+      slot = best;
     }
-    this->Heap[slot] = v;
-    this->Slot[v] = slot;
+    this->Place(slot, e);
   }
 
-  std::vector<int32_t> Heap;
+  std::vector<Entry> Heap;
   std::vector<int32_t> Slot;
-  std::vector<double> Key;
 };
 
 } // namespace colordecimation
