@@ -1,0 +1,73 @@
+# Shared by scripts/demo.sh and scripts/test.sh: Debian 12 packages for each VTK flavour,
+# installed with apt-get when missing (as root, or through sudo).
+#
+# The two flavours cannot be installed together (python3-paraview conflicts with python3-vtk9,
+# which libvtk9-dev needs); installing one removes the other.
+
+COMMON_PACKAGES="cmake g++ make pkg-config xvfb xauth libmeshoptimizer-dev python3 valgrind"
+VTK_PACKAGES="libvtk9-dev python3-vtk9"
+PARAVIEW_PACKAGES="paraview-dev python3-paraview qtbase5-dev qttools5-dev libqt5svg5-dev
+  qttools5-dev-tools qtxmlpatterns5-dev-tools mpi-default-bin"
+
+as_root() {
+  if [ "$(id -u)" -eq 0 ]; then
+    "$@"
+  elif command -v sudo >/dev/null 2>&1; then
+    sudo "$@"
+  else
+    echo "error: packages are missing and this is not root (and there is no sudo): $*" >&2
+    exit 1
+  fi
+}
+
+missing_packages() {
+  local p
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q "install ok installed" || echo "$p"
+  done
+}
+
+# ensure_packages PKG... [-- REMOVE...]: install what is missing, removing conflicting ones.
+ensure_packages() {
+  local install=() remove=() seen_sep=0 p
+  for p in "$@"; do
+    if [ "$p" = "--" ]; then seen_sep=1; continue; fi
+    if [ $seen_sep -eq 0 ]; then install+=("$p"); else remove+=("$p"); fi
+  done
+  local missing present_removals=()
+  missing=$(missing_packages "${install[@]}")
+  for p in "${remove[@]}"; do
+    dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q "install ok installed" \
+      && present_removals+=("$p-")
+  done
+  if [ -z "$missing" ] && [ ${#present_removals[@]} -eq 0 ]; then
+    return 0
+  fi
+  echo "== apt-get install: ${missing//$'\n'/ } ${present_removals[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  # Refresh the package lists when they are absent or older than a day.
+  if [ -z "$(find /var/lib/apt/lists -maxdepth 1 -name '*_Packages*' -mmin -1440 2>/dev/null | head -1)" ]; then
+    as_root apt-get update -q
+  fi
+  as_root apt-get install -y -q "${install[@]}" "${present_removals[@]}"
+}
+
+# ensure_flavour vtk|paraview
+ensure_flavour() {
+  case "$1" in
+    vtk) ensure_packages $COMMON_PACKAGES $VTK_PACKAGES -- python3-paraview paraview paraview-dev ;;
+    paraview) ensure_packages $COMMON_PACKAGES $PARAVIEW_PACKAGES -- python3-vtk9 libvtk9-dev ;;
+    *) echo "error: unknown flavour '$1' (vtk or paraview)" >&2; exit 2 ;;
+  esac
+}
+
+# The flavour installed now (vtk, paraview or none).
+installed_flavour() {
+  if [ -z "$(missing_packages paraview-dev)" ]; then echo paraview
+  elif [ -z "$(missing_packages libvtk9-dev)" ]; then echo vtk
+  else echo none; fi
+}
+
+cmake_flavour() {
+  case "$1" in vtk) echo VTK ;; paraview) echo ParaView ;; esac
+}
