@@ -7,6 +7,31 @@
 
 namespace colordecimation
 {
+namespace
+{
+/// (b - a) x (c - a), in double.
+void TriangleNormal(const float* a, const float* b, const float* c, double n[3])
+{
+  const double e1[3] = { double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2] };
+  const double e2[3] = { double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2] };
+  n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+}
+
+/// Whether `to` (squared length toLength2 > 0) is more than acos(minCos) away from `from`;
+/// a degenerate `from` has no direction to keep.
+bool TurnsTooFar(const double from[3], const double to[3], double toLength2, double minCos)
+{
+  const double fromLength2 = from[0] * from[0] + from[1] * from[1] + from[2] * from[2];
+  if (!(fromLength2 > 0))
+  {
+    return false;
+  }
+  const double dot = from[0] * to[0] + from[1] * to[1] + from[2] * to[2];
+  return dot < minCos * std::sqrt(fromLength2 * toLength2);
+}
+} // namespace
 
 CollapseVerdict CollapseRules::Check(const HalfEdgeMesh& mesh, const float* positions, int32_t v0,
                                      int32_t v1, int stride)
@@ -112,20 +137,11 @@ CollapseVerdict CollapseRules::CheckGeometry(const HalfEdgeMesh& mesh, const flo
       }
       const float* pa = positions + stride * a;
       const float* pb = positions + stride * b;
-      double oldN[3], newN[3], ea[3], eb[3], fa[3], fb[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        ea[k] = double(pa[k]) - p0[k];
-        eb[k] = double(pb[k]) - p0[k];
-        fa[k] = double(pa[k]) - p1[k];
-        fb[k] = double(pb[k]) - p1[k];
-      }
-      oldN[0] = ea[1] * eb[2] - ea[2] * eb[1];
-      oldN[1] = ea[2] * eb[0] - ea[0] * eb[2];
-      oldN[2] = ea[0] * eb[1] - ea[1] * eb[0];
-      newN[0] = fa[1] * fb[2] - fa[2] * fb[1];
-      newN[1] = fa[2] * fb[0] - fa[0] * fb[2];
-      newN[2] = fa[0] * fb[1] - fa[1] * fb[0];
+      double oldN[3], newN[3];
+      TriangleNormal(p0, pa, pb, oldN);
+      TriangleNormal(p1, pa, pb, newN);
+      const double fa[3] = { double(pa[0]) - p1[0], double(pa[1]) - p1[1], double(pa[2]) - p1[2] };
+      const double fb[3] = { double(pb[0]) - p1[0], double(pb[1]) - p1[1], double(pb[2]) - p1[2] };
       const double newLength2 = newN[0] * newN[0] + newN[1] * newN[1] + newN[2] * newN[2];
       const double fa2 = fa[0] * fa[0] + fa[1] * fa[1] + fa[2] * fa[2];
       const double fb2 = fb[0] * fb[0] + fb[1] * fb[1] + fb[2] * fb[2];
@@ -135,11 +151,18 @@ CollapseVerdict CollapseRules::CheckGeometry(const HalfEdgeMesh& mesh, const flo
         verdict = CollapseVerdict::Degenerate;
         return;
       }
-      const double oldLength2 = oldN[0] * oldN[0] + oldN[1] * oldN[1] + oldN[2] * oldN[2];
-      if (oldLength2 > 0)
+      if (TurnsTooFar(oldN, newN, newLength2, minCos))
       {
-        const double dot = oldN[0] * newN[0] + oldN[1] * newN[1] + oldN[2] * newN[2];
-        if (dot < minCos * std::sqrt(oldLength2 * newLength2))
+        verdict = CollapseVerdict::Flip;
+        return;
+      }
+      if (this->ReferenceTriangles)
+      {
+        const int32_t* ref = this->ReferenceTriangles + 3 * (h / 3);
+        double refN[3];
+        TriangleNormal(positions + stride * ref[0], positions + stride * ref[1],
+                       positions + stride * ref[2], refN);
+        if (TurnsTooFar(refN, newN, newLength2, this->Options.MinimumDriftCosine))
         {
           verdict = CollapseVerdict::Flip;
         }

@@ -12,7 +12,10 @@
  * - v0 and v1 share no neighbour other than vl and vr (otherwise an edge would become
  *   non-manifold).
  * Geometry: no triangle of v0 that survives may become degenerate or turn its normal by more
- * than the configured angle.
+ * than the configured angle in one collapse, nor (when reference triangles are given) drift
+ * further than a second angle from the normal of the input triangle that first held its face
+ * slot. The second test stops small turns from adding up, over many collapses, into a
+ * triangle that faces away from the input surface.
  */
 #ifndef colordecimation_CollapseRules_h
 #define colordecimation_CollapseRules_h
@@ -29,8 +32,12 @@ class HalfEdgeMesh;
 struct CollapseRuleOptions
 {
   bool PreserveBoundary = false;
-  /// cos(maximum normal angle): a surviving triangle's normal may turn by at most that angle.
+  /// cos(maximum normal angle): a surviving triangle's normal may turn by at most that angle
+  /// in one collapse.
   double MinimumNormalCosine = 0.0;
+  /// cos(maximum drift): nor may it end up further than that from the normal of the input
+  /// triangle of its face slot (see SetReferenceTriangles). -1 disables the test.
+  double MinimumDriftCosine = -1.0;
 };
 
 /// Why a collapse was refused (for tests and statistics).
@@ -55,6 +62,13 @@ public:
   const CollapseRuleOptions& GetOptions() const { return this->Options; }
 
   /**
+   * The input triangles (3 vertex ids per face slot, as given to HalfEdgeMesh::Build), whose
+   * normals bound the drift of each face slot's normal. Null (the default) disables that test.
+   * The array must outlive the checks.
+   */
+  void SetReferenceTriangles(const int32_t* triangles) { this->ReferenceTriangles = triangles; }
+
+  /**
    * Full check of v0 -> v1. The position of vertex v is positions[stride * v + 0..2] (so that
    * positions can live inside a larger per-vertex record).
    */
@@ -76,6 +90,7 @@ public:
 
 private:
   CollapseRuleOptions Options;
+  const int32_t* ReferenceTriangles = nullptr;
   std::vector<int32_t> Neighbors; ///< scratch, reused
 };
 

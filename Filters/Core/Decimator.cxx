@@ -9,6 +9,7 @@ namespace colordecimation
 namespace
 {
 constexpr double Pi = 3.14159265358979323846;
+constexpr double MaximumDriftAngle = 75.0; ///< degrees
 
 CollapseRuleOptions MakeRuleOptions(const DecimatorOptions& options)
 {
@@ -16,6 +17,11 @@ CollapseRuleOptions MakeRuleOptions(const DecimatorOptions& options)
   rules.PreserveBoundary = options.PreserveBoundary;
   const double angle = std::min(std::max(options.MaximumNormalAngle, 0.0), 180.0);
   rules.MinimumNormalCosine = std::cos(angle * Pi / 180.0);
+  // Total drift from the input triangle's normal: at most 75 degrees (or the per-collapse
+  // angle if smaller), so that no triangle comes to face away from the input surface; none
+  // when the guard is switched off (180 degrees).
+  rules.MinimumDriftCosine =
+    angle >= 180.0 ? -1.0 : std::cos(std::min(angle, MaximumDriftAngle) * Pi / 180.0);
   return rules;
 }
 } // namespace
@@ -105,6 +111,9 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
   InitializeVertexMetrics(this->Mesh, this->Positions(), this->UseColor ? this->Hot[0].C : nullptr,
                           this->Metrics, HotStride, HotStride);
 
+  // Each face slot's input normal bounds how far collapses may turn it, in total.
+  this->Rules.SetReferenceTriangles(input.Triangles);
+
   // 4. Initial costs.
   this->Heap.Reset(n);
   this->Best.assign(n, -1);
@@ -190,6 +199,7 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
       }
     }
   }
+  this->Rules.SetReferenceTriangles(nullptr); // the input may not outlive Run
   stats.OutputTriangles = this->Mesh.GetNumberOfLiveFaces();
   // Connectivity 24 B/triangle + 5 B/vertex; metric 48; hot record 32; heap 16; choice 4.
   stats.StateBytes = 24 * size_t(input.NumberOfTriangles) +
