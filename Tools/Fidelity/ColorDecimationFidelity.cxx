@@ -247,6 +247,22 @@ void ConfigureActor(vtkActor* actor, vtkPolyDataMapper* mapper, vtkPolyData* mes
   }
 }
 
+/// An X server resets when its last client disconnects (Xvfb under xvfb-run does), and a
+/// window opened while it resets fails with "bad X server connection" and aborts. Each
+/// comparison or snapshot opens and closes its own window, so one initialised window is
+/// kept for the life of the process: its connection keeps the server from resetting.
+void HoldDisplay()
+{
+  static vtkSmartPointer<vtkRenderWindow> holder;
+  if (!holder)
+  {
+    holder = vtkSmartPointer<vtkRenderWindow>::New();
+    holder->SetOffScreenRendering(1);
+    holder->SetSize(1, 1);
+    holder->Render(); // opens the display connection and the context
+  }
+}
+
 /// One offscreen window, renderer and actor reused for every render of a comparison.
 class OffscreenRenderer
 {
@@ -254,6 +270,7 @@ public:
   explicit OffscreenRenderer(int size)
     : Size(size)
   {
+    HoldDisplay();
     this->Window->SetOffScreenRendering(1);
     this->Window->SetMultiSamples(0);
     this->Window->SetSize(size, size);
@@ -725,6 +742,7 @@ bool WriteSnapshot(vtkPolyData* original, vtkPolyData* simplified, const std::st
     camera->SetParallelScale(scale / options.Zoom);
   }
 
+  HoldDisplay();
   const int gap = std::max(2, size / 128);
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
