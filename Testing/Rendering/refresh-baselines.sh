@@ -11,12 +11,12 @@ if [ "${CI:-}" = "true" ]; then
 fi
 src=$(cd "$(dirname "$0")/../.." && pwd)
 build=${1:-"$src/build-refresh"}
+# Whatever happens below, put the build directory back to comparing.
+trap 'cmake -S "$src" -B "$build" -DCOLORDECIMATION_REFRESH_BASELINES=OFF > /dev/null 2>&1 || true' EXIT
 cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCOLORDECIMATION_REFRESH_BASELINES=ON
 cmake --build "$build" -j2 --target TestColorDecimationRendering
 status=0
 (cd "$build" && ctest -R '^ColorDecimation\.Image\.' --output-on-failure) || status=$?
-# Back to comparing, so that this build directory runs the real tests again.
-cmake -S "$src" -B "$build" -DCOLORDECIMATION_REFRESH_BASELINES=OFF > /dev/null
 if [ "$status" -ne 0 ]; then
   echo "refresh-baselines.sh: some pictures could not be written" >&2
   exit "$status"
