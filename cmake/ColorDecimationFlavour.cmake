@@ -14,11 +14,18 @@ set(colordecimation_vtk_components
   CommonSystem
   FiltersCore
   FiltersGeneral
+  FiltersGeometry
   FiltersSources
   IOGeometry
+  IOImage
   IOLegacy
   IOPLY
-  IOXML)
+  IOXML
+  ImagingCore
+  InteractionStyle
+  RenderingCore
+  RenderingFreeType
+  RenderingOpenGL2)
 
 set(COLORDECIMATION_WITH_PARAVIEW OFF)
 if (NOT COLORDECIMATION_FLAVOUR STREQUAL "VTK")
@@ -32,6 +39,7 @@ if (NOT COLORDECIMATION_FLAVOUR STREQUAL "VTK")
   endif ()
 endif ()
 
-find_package(VTK REQUIRED COMPONENTS ${colordecimation_vtk_components})
+find_package(VTK REQUIRED COMPONENTS ${colordecimation_vtk_components}
+  OPTIONAL_COMPONENTS TestingRendering)
 message(STATUS "ColorDecimation: VTK ${VTK_VERSION}"
   " (ParaView flavour: ${COLORDECIMATION_WITH_PARAVIEW})")
