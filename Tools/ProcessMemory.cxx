@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <string>
 
@@ -78,6 +79,16 @@ bool ResetPeakRSS()
   }
   const bool written = std::fputs("5", file) >= 0;
   return (std::fclose(file) == 0) && written;
+}
+
+double ProcessCpuSeconds()
+{
+  struct timespec now;
+  if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now) == 0)
+  {
+    return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+  }
+  return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
 }
 
 void ReleaseFreeMemory()

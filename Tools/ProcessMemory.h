@@ -1,6 +1,6 @@
 /**
  * @file ProcessMemory.h
- * @brief Resident memory of this process (Linux /proc), for the command-line tools.
+ * @brief Resident memory and CPU time of this process, for the command-line tools.
  *
  * The benchmark measures the peak memory of each run inside one process: before a run it
  * returns freed heap memory to the system (malloc_trim), reads the resident size (the
@@ -30,6 +30,10 @@ bool ResetPeakRSS();
 /// Give freed heap memory back to the system (glibc malloc_trim), so that the RSS read
 /// next is not inflated by a previous run's freed blocks.
 void ReleaseFreeMemory();
+
+/// CPU time used by this process so far (all threads, user + system), in seconds. Unlike
+/// wall-clock time it does not grow while the process waits for a core on a busy machine.
+double ProcessCpuSeconds();
 
 /// Measures the peak resident memory of one run above the resident memory before it.
 class PeakMemoryProbe
