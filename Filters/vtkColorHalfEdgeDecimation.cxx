@@ -28,6 +28,7 @@
 #include "vtkPolyData.h"
 #include "vtkPolygon.h"
 #include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTriangleStrip.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -48,11 +49,12 @@ struct TriangleSoup
 {
   std::vector<int32_t> Triangles;
   std::vector<vtkIdType> SourceCell;
-  vtkIdType Polygons = 0;   ///< cells with more than 3 points that were triangulated
-  vtkIdType Strips = 0;     ///< strips decomposed
-  vtkIdType Degenerate = 0; ///< triangles with a repeated point, dropped
-  vtkIdType BadCells = 0;   ///< cells with fewer than 3 points, dropped
-  vtkIdType GhostCells = 0; ///< ghost cells (another piece's), left out
+  vtkIdType Polygons = 0;    ///< cells with more than 3 points that were triangulated
+  vtkIdType Strips = 0;      ///< strips decomposed
+  vtkIdType Degenerate = 0;  ///< triangles with a repeated point, dropped
+  vtkIdType BadCells = 0;    ///< cells with fewer than 3 points, dropped
+  vtkIdType GhostCells = 0;  ///< ghost cells (another piece's), left out
+  vtkIdType GhostPoints = 0; ///< ghost (duplicate) points, fixed
   bool IdsOutOfRange = false;
   /// Per point: non-zero if it must not collapse (used by a ghost cell, or a ghost point).
   std::vector<uint8_t> Fixed;
@@ -120,6 +122,7 @@ void ExtractTriangles(vtkPolyData* input, TriangleSoup& soup)
       {
         soup.Fixed[i] = 1;
         soup.HasFixed = true;
+        ++soup.GhostPoints;
       }
     }
   }
@@ -211,6 +214,47 @@ void ExtractTriangles(vtkPolyData* input, TriangleSoup& soup)
       soup.Add(ids, cell, numPoints);
     }
   }
+}
+
+/**
+ * Fixes the points on the open boundary of the triangles (edges used by one triangle): for a
+ * piece of distributed data that came without ghost cells, the points it shares with other
+ * pieces are among these. Returns the number of points fixed.
+ */
+vtkIdType FixOpenBoundary(TriangleSoup& soup)
+{
+  std::vector<uint64_t> edges;
+  edges.reserve(soup.Triangles.size());
+  for (size_t t = 0; t + 2 < soup.Triangles.size(); t += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const auto a = static_cast<uint32_t>(soup.Triangles[t + k]);
+      const auto b = static_cast<uint32_t>(soup.Triangles[t + (k + 1) % 3]);
+      edges.push_back((uint64_t(std::min(a, b)) << 32) | std::max(a, b));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  vtkIdType fixed = 0;
+  for (size_t i = 0; i < edges.size();)
+  {
+    size_t j = i + 1;
+    while (j < edges.size() && edges[j] == edges[i])
+    {
+      ++j;
+    }
+    if (j - i == 1)
+    {
+      for (const uint32_t v : { uint32_t(edges[i] >> 32), uint32_t(edges[i] & 0xffffffffu) })
+      {
+        fixed += soup.Fixed[v] ? 0 : 1;
+        soup.Fixed[v] = 1;
+      }
+      soup.HasFixed = true;
+    }
+    i = j;
+  }
+  return fixed;
 }
 
 /// Points as doubles; false if a coordinate is NaN or infinite.
@@ -465,6 +509,18 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkDebugMacro(<< "Left out " << soup.GhostCells << " ghost cells; their points are fixed.");
   }
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const int numPieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    : 1;
+  if (numPieces > 1 && soup.GhostCells == 0 && soup.GhostPoints == 0)
+  {
+    // One piece of several, without ghosts: keep its open boundary, where it meets the others.
+    const vtkIdType fixed = FixOpenBoundary(soup);
+    in.Fixed = soup.HasFixed ? soup.Fixed.data() : nullptr;
+    vtkDebugMacro(<< "Piece of " << numPieces << " without ghost cells: " << fixed
+                  << " points of its open boundary are fixed.");
+  }
 
   const auto target = static_cast<int64_t>(
     std::floor((1.0 - this->TargetReduction) * static_cast<double>(numTriangles)));
@@ -572,6 +628,26 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
 
   this->ActualReduction = 1.0 - static_cast<double>(numOutTriangles) / numTriangles;
   this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkColorHalfEdgeDecimation::RequestUpdateExtent(vtkInformation* request,
+                                                    vtkInformationVector** inputVector,
+                                                    vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestUpdateExtent(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  // Distributed data: one level of ghost cells tells which points are shared with other pieces.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  if (inInfo && outInfo &&
+      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1)
+  {
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 1);
+  }
   return 1;
 }
 

@@ -38,6 +38,14 @@
  * bow-tie vertices and vertices of inconsistently oriented triangles are kept, together with
  * their triangles.
  *
+ * Distributed data: when the input is one piece of several (UPDATE_NUMBER_OF_PIECES > 1, as
+ * in ParaView run with MPI), the filter asks upstream for one level of ghost cells. Ghost
+ * cells are left out and every point they use is kept in place, as are ghost (duplicate)
+ * points, so the decimated pieces still meet without cracks. When such a piece comes
+ * without any ghost cell or ghost point, the points it shares with other pieces are not
+ * known; they lie on its open boundary, so the whole open boundary of the piece is kept in
+ * place instead (genuine mesh boundaries of that piece are then kept as they are).
+ *
  * Input: polygons and triangle strips are triangulated (with a warning); vertices and lines
  * are dropped (with a warning). Empty input gives empty output. Points with NaN or infinite
  * coordinates, cell point ids out of range, or a colour array whose tuple count differs
@@ -155,6 +163,7 @@ protected:
   ~vtkColorHalfEdgeDecimation() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int ErrorMetric;
   double TargetReduction;

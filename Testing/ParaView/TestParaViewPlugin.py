@@ -1,0 +1,216 @@
+"""The ParaView plugin in pvpython: load it, check the proxy, run it, compare a screenshot.
+
+    pvpython TestParaViewPlugin.py --plugin <ColorDecimation.so> --baseline <png>
+        --output-dir <dir> [--python-path <folder with the colordecimation package>]
+        [--python-config <build>/CMakeFiles/ColorDecimationPythonTestConfig.cmake]
+
+- The proxy "Color Half-Edge Decimation" exists once the plugin is loaded, every property is
+  documented, and its defaults are the C++ defaults (read from a fresh
+  vtkColorHalfEdgeDecimation through the colordecimation Python package, found with
+  --python-path or in the build tree named by --python-config).
+- On a coloured sphere made here (Sphere + Calculator writing an unsigned char RGB array) the
+  filter reaches its target and every output point keeps its input colour and position.
+- A screenshot of the result (colours shown as they are, lighting on) matches the baseline.
+"""
+import argparse
+import math
+import os
+import sys
+
+from paraview.simple import *  # noqa: F401,F403
+from paraview import servermanager
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--plugin", required=True)
+parser.add_argument("--baseline", required=True)
+parser.add_argument("--output-dir", required=True)
+parser.add_argument("--python-path", default="")
+parser.add_argument("--python-config", default="")
+parser.add_argument("--threshold", type=float, default=10.0)
+args = parser.parse_args()
+
+failures = []
+
+if not args.python_path and args.python_config and os.path.exists(args.python_config):
+    # Written by cmake/ColorDecimationPython.cmake: set(COLORDECIMATION_PYTHON_BUILD_DIR "...")
+    with open(args.python_config) as config:
+        for line in config:
+            if line.startswith("set(COLORDECIMATION_PYTHON_BUILD_DIR "):
+                args.python_path = line.split('"')[1]
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("FAILED: " + message)
+
+
+LoadPlugin(args.plugin, remote=False, ns=globals())
+check("ColorHalfEdgeDecimation" in globals(), "the plugin did not define ColorHalfEdgeDecimation")
+
+# --- The proxy: label, documentation, defaults --------------------------------------------
+proxy = servermanager.filters.ColorHalfEdgeDecimation()
+sm = proxy.SMProxy
+check(sm.GetXMLLabel() == "Color Half-Edge Decimation", "label is %r" % sm.GetXMLLabel())
+hints = sm.GetHints()
+menu = hints.FindNestedElementByName("ShowInMenu") if hints else None
+check(menu is not None and menu.GetAttribute("category"), "no ShowInMenu category")
+names = ["SelectInputScalars", "TargetReduction", "ErrorMetric", "PreserveBoundary",
+         "MaximumNormalAngle", "GeometryWeight", "GenerateOriginalPointIds",
+         "OriginalPointIdsArrayName"]
+for name in names + ["Input"]:
+    prop = sm.GetProperty(name)
+    check(prop is not None, "no property " + name)
+    if prop is not None:
+        doc = prop.GetDocumentation()
+        text = doc.GetDescription() if doc else ""
+        check(text and len(text.split()) >= 5, "property %s is not documented" % name)
+
+defaults = {}
+it = sm.NewPropertyIterator()
+it.Begin()
+while not it.IsAtEnd():
+    name = it.GetKey()
+    prop = it.GetProperty()
+    if name not in ("Input", "SelectInputScalars") and not prop.GetInformationOnly():
+        defaults[name] = prop.GetElement(0)
+        doc = prop.GetDocumentation()
+        check(doc is not None and len(doc.GetDescription().split()) >= 5,
+              "property %s is not documented" % name)
+    it.Next()
+print("proxy defaults:", defaults)
+if args.python_path:
+    sys.path.insert(0, args.python_path)
+    from colordecimation import vtkColorHalfEdgeDecimation
+    from vtkmodules.vtkCommonExecutionModel import vtkPolyDataAlgorithm
+
+    fresh = vtkColorHalfEdgeDecimation()
+    # Every setting of the class (Set<X> with Get<X>, not inherited) is a property of the
+    # proxy, with the C++ default.
+    own = set(dir(vtkColorHalfEdgeDecimation)) - set(dir(vtkPolyDataAlgorithm))
+    settings = sorted(m[3:] for m in own
+                      if m.startswith("Set") and "Get" + m[3:] in own)
+    print("C++ settings:", settings)
+    check("TargetReduction" in settings and "ErrorMetric" in settings, "settings %r" % settings)
+    for name in settings:
+        check(name in defaults, "the proxy has no property %s" % name)
+        if name in defaults:
+            value = getattr(fresh, "Get" + name)()
+            proxy_value = defaults[name]
+            same = (proxy_value == value if isinstance(value, str)
+                    else abs(float(proxy_value) - float(value)) < 1e-12)
+            check(same, "default of %s: proxy %r, C++ %r" % (name, proxy_value, value))
+    for name in defaults:
+        check(name in settings, "proxy property %s is not a setting of the class" % name)
+    # The enumerations' values are the C++ enums'.
+    enums = {"ErrorMetric": ("ErrorMetrics", {"Half-Edge Color": "HalfEdgeColor",
+                                              "Geometry": "Geometry",
+                                              "Color Quadric": "ColorQuadric"}),
+             "ColorSpace": ("ColorSpaces", {"RGB": "RGB", "CIELab": "CIELab"})}
+    for name, (enum, texts) in enums.items():
+        if name not in defaults:
+            continue
+        domain = sm.GetProperty(name).GetDomain("enum")
+        entries = {domain.GetEntryText(i): domain.GetEntryValue(i)
+                   for i in range(domain.GetNumberOfEntries())}
+        cxx = {text: getattr(vtkColorHalfEdgeDecimation, value) for text, value in texts.items()
+               if hasattr(vtkColorHalfEdgeDecimation, value)}
+        check(entries == cxx, "%s entries %r, C++ %r" % (name, entries, cxx))
+else:
+    print("no colordecimation Python package: the defaults are not compared with C++")
+Delete(proxy)
+del proxy
+
+# --- A coloured sphere, decimated --------------------------------------------------------
+sphere = Sphere(ThetaResolution=80, PhiResolution=80, Radius=1.0)
+colors = Calculator(Input=sphere, ResultArrayName="RGB", ResultArrayType="Unsigned Char",
+                    Function="(coordsZ>0.3)*225*iHat + (coordsZ<=0.3)*(coordsX>0)*190*jHat"
+                             " + (coordsZ<=0.3)*(coordsX<=0)*215*kHat + 30*(iHat+jHat+kHat)")
+decimation = ColorHalfEdgeDecimation(Input=colors)
+decimation.Colors = ["POINTS", "RGB"]
+decimation.TargetReduction = 0.85
+decimation.UpdatePipeline()
+
+source = servermanager.Fetch(colors)
+result = servermanager.Fetch(decimation)
+n_in = source.GetNumberOfPolys()
+n_out = result.GetNumberOfPolys()
+target = math.floor((1.0 - 0.85) * n_in)
+print("input %d triangles, output %d (target %d)" % (n_in, n_out, target))
+check(n_in == 2 * 80 * 78, "input has %d triangles" % n_in)
+# A collapse on a closed surface removes two triangles: the target or one less.
+check(target - 1 <= n_out <= target, "output %d triangles, target %d" % (n_out, target))
+check(result.GetNumberOfPoints() - n_out // 2 == 2, "the sphere is no longer a closed genus-0 surface")
+
+rgb_in = source.GetPointData().GetArray("RGB")
+rgb_out = result.GetPointData().GetArray("RGB")
+ids = result.GetPointData().GetArray("vtkOriginalPointIds")
+check(rgb_in is not None and rgb_in.GetDataTypeAsString() == "unsigned char", "input RGB missing")
+check(rgb_out is not None and ids is not None, "RGB or vtkOriginalPointIds missing in the output")
+distinct = set()
+if rgb_in is not None and rgb_out is not None and ids is not None:
+    for i in range(result.GetNumberOfPoints()):
+        j = ids.GetValue(i)
+        distinct.add(rgb_out.GetTuple3(i))
+        if rgb_out.GetTuple3(i) != rgb_in.GetTuple3(j) or result.GetPoint(i) != source.GetPoint(j):
+            check(False, "output point %d changed colour or position" % i)
+            break
+    check(len(distinct) == 3, "expected the 3 colours of the pattern, got %d" % len(distinct))
+
+# The geometry-only metric through the enumeration.
+decimation.ErrorMetric = "Geometry"
+decimation.UpdatePipeline()
+n_geometry = decimation.GetDataInformation().GetNumberOfCells()
+check(target - 1 <= n_geometry <= target, "Geometry metric: %d triangles" % n_geometry)
+decimation.ErrorMetric = "Half-Edge Color"
+decimation.UpdatePipeline()
+
+# --- Screenshot against the baseline -----------------------------------------------------
+view = CreateView("RenderView")
+view.ViewSize = [400, 400]
+view.OrientationAxesVisibility = 0
+if hasattr(view, "UseColorPaletteForBackground"):
+    view.UseColorPaletteForBackground = 0
+view.Background = [1.0, 1.0, 1.0]
+display = Show(decimation, view)
+display.Representation = "Surface With Edges"
+display.EdgeColor = [0.1, 0.1, 0.1]
+ColorBy(display, ("POINTS", "RGB"))
+display.MapScalars = 0
+Render(view)  # the first render resets the camera: place it afterwards
+view.CameraPosition = [0.6, -5.0, 2.4]
+view.CameraFocalPoint = [0.0, 0.0, 0.0]
+view.CameraViewUp = [0.0, 0.0, 1.0]
+view.CameraParallelScale = 1.0
+Render(view)
+os.makedirs(args.output_dir, exist_ok=True)
+image = os.path.join(args.output_dir, os.path.basename(args.baseline))
+SaveScreenshot(image, view, ImageResolution=[400, 400], TransparentBackground=0)
+
+from vtkmodules.vtkImagingCore import vtkImageDifference  # noqa: E402
+from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+
+if not os.path.exists(args.baseline):
+    check(False, "no baseline %s (the test image is %s)" % (args.baseline, image))
+else:
+    readers = []
+    for path in (image, args.baseline):
+        reader = vtkPNGReader()
+        reader.SetFileName(path)
+        reader.Update()
+        readers.append(reader)
+    dims = [r.GetOutput().GetDimensions() for r in readers]
+    check(dims[0] == dims[1], "image size %s, baseline %s" % (dims[0], dims[1]))
+    if dims[0] == dims[1]:
+        difference = vtkImageDifference()
+        difference.SetInputConnection(readers[0].GetOutputPort())
+        difference.SetImageConnection(readers[1].GetOutputPort())
+        difference.Update()
+        error = difference.GetThresholdedError()
+        print("image difference %.3f (threshold %.1f), test image %s" % (error, args.threshold, image))
+        check(error <= args.threshold, "the screenshot differs from %s by %.3f" % (args.baseline, error))
+
+if failures:
+    print("%d check(s) failed" % len(failures))
+    sys.exit(1)
+print("OK")

@@ -1,0 +1,131 @@
+"""The Python wrapping: `from colordecimation import vtkColorHalfEdgeDecimation`.
+
+Decimates a small coloured sphere (made here, no data files) and checks the counts, the
+properties and that every output point keeps its input colour bit for bit.
+Run with PYTHONPATH holding the folder that contains the colordecimation package.
+"""
+import math
+import os
+import sys
+
+from colordecimation import vtkColorHalfEdgeDecimation
+import colordecimation
+from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+from vtkmodules.vtkFiltersSources import vtkSphereSource
+
+
+def fail(message):
+    print("FAILED: " + message)
+    sys.exit(1)
+
+
+def coloured_sphere(resolution):
+    """A closed UV sphere with an RGB uchar point array: three flat regions."""
+    source = vtkSphereSource()
+    source.SetThetaResolution(resolution)
+    source.SetPhiResolution(resolution)
+    source.Update()
+    mesh = source.GetOutput()
+    colors = vtkUnsignedCharArray()
+    colors.SetName("RGB")
+    colors.SetNumberOfComponents(3)
+    colors.SetNumberOfTuples(mesh.GetNumberOfPoints())
+    for i in range(mesh.GetNumberOfPoints()):
+        x, y, z = mesh.GetPoint(i)
+        if z > 0.2:
+            rgb = (220, 30, 30)
+        elif x > 0.0:
+            rgb = (30, 200, 40)
+        else:
+            rgb = (40, 60, 210)
+        colors.SetTypedTuple(i, rgb)
+    mesh.GetPointData().SetScalars(colors)
+    return mesh
+
+
+def check_loaded_from(prefix):
+    """The package and the C++ library it loads both come from `prefix` (install tree)."""
+    prefix = os.path.realpath(prefix)
+    package = os.path.realpath(colordecimation.__file__)
+    if not package.startswith(prefix + os.sep):
+        fail("colordecimation imported from %s, not from %s" % (package, prefix))
+    with open("/proc/self/maps") as maps:
+        libraries = {line.split()[-1] for line in maps if "libvtkColorDecimation" in line}
+    if not libraries:
+        fail("libvtkColorDecimation is not loaded")
+    for library in libraries:
+        if not os.path.realpath(library).startswith(prefix + os.sep):
+            fail("libvtkColorDecimation loaded from %s, not from %s" % (library, prefix))
+    print("package and library loaded from " + prefix)
+
+
+def main():
+    if not hasattr(colordecimation, "__version__"):
+        fail("the package has no __version__")
+    if os.environ.get("COLORDECIMATION_EXPECT_PREFIX"):
+        check_loaded_from(os.environ["COLORDECIMATION_EXPECT_PREFIX"])
+
+    mesh = coloured_sphere(40)
+    n_in = mesh.GetNumberOfPolys()
+    if n_in != 2 * 40 * 38:
+        fail("unexpected input size %d" % n_in)
+
+    decimation = vtkColorHalfEdgeDecimation()
+    # Defaults, as documented in the C++ header.
+    if abs(decimation.GetTargetReduction() - 0.9) > 1e-12:
+        fail("default TargetReduction %g" % decimation.GetTargetReduction())
+    if decimation.GetErrorMetric() != vtkColorHalfEdgeDecimation.HalfEdgeColor:
+        fail("default ErrorMetric %d" % decimation.GetErrorMetric())
+    if decimation.GetErrorMetricAsString() != "HalfEdgeColor":
+        fail("ErrorMetric as string: %s" % decimation.GetErrorMetricAsString())
+    if not decimation.GetGenerateOriginalPointIds():
+        fail("GenerateOriginalPointIds should default to on")
+    if "TargetReduction" not in str(decimation):
+        fail("PrintSelf does not list TargetReduction")
+
+    decimation.SetInputData(mesh)
+    decimation.SetTargetReduction(0.8)
+    decimation.Update()
+    out = decimation.GetOutput()
+    n_out = out.GetNumberOfPolys()
+    # The filter's target: floor((1 - TargetReduction) * triangles). A collapse on a closed
+    # surface removes two triangles, so it stops at the target or one below.
+    target = math.floor((1.0 - 0.8) * n_in)
+    print("input %d triangles, output %d (target %d), %d collapses, actual reduction %.4f"
+          % (n_in, n_out, target, decimation.GetNumberOfCollapses(),
+             decimation.GetActualReduction()))
+    if not target - 1 <= n_out <= target:
+        fail("output has %d triangles, expected the target %d" % (n_out, target))
+    if abs(decimation.GetActualReduction() - (1.0 - n_out / n_in)) > 1e-12:
+        fail("ActualReduction disagrees with the counts")
+    if decimation.GetNumberOfCollapses() <= 0 or decimation.GetStateMemory() <= 0:
+        fail("collapse count or state memory not reported")
+    # A closed genus-0 surface stays closed: V - E + F = 2 with E = 3F/2.
+    if out.GetNumberOfPoints() - n_out // 2 != 2:
+        fail("Euler characteristic changed: %d points, %d triangles"
+             % (out.GetNumberOfPoints(), n_out))
+
+    out_colors = out.GetPointData().GetArray("RGB")
+    ids = out.GetPointData().GetArray("vtkOriginalPointIds")
+    if out_colors is None or ids is None:
+        fail("RGB or vtkOriginalPointIds missing from the output")
+    in_colors = mesh.GetPointData().GetArray("RGB")
+    for i in range(out.GetNumberOfPoints()):
+        j = ids.GetValue(i)
+        if out_colors.GetTuple3(i) != in_colors.GetTuple3(j):
+            fail("point %d lost its colour" % i)
+        if out.GetPoint(i) != mesh.GetPoint(j):
+            fail("point %d moved" % i)
+
+    # The geometry-only metric through the enum setters.
+    decimation.SetErrorMetricToGeometry()
+    decimation.Update()
+    if decimation.GetErrorMetricAsString() != "Geometry":
+        fail("SetErrorMetricToGeometry")
+    if not target - 1 <= decimation.GetOutput().GetNumberOfPolys() <= target:
+        fail("the geometry metric missed the target")
+    print("OK")
+
+
+if __name__ == "__main__":
+    main()
