@@ -700,54 +700,34 @@ std::string CaseTable(const CaseResult& c, double reduction)
 
 std::string SweepTable(const std::vector<CaseResult>& sweep)
 {
+  // One block of rows per method, sizes in order, so that each method's ns/triangle can be
+  // read down the column: flat means linear time.
   std::ostringstream os;
-  os << "| input triangles |";
-  const int methods[] = { OursColor, OursGeometry, QuadricAttributes, QuadricGeometry,
-                          MeshOptimizer };
-  for (int m : methods)
+  os << "| method | input triangles | seconds | CPU seconds | ns/triangle | CPU ns/triangle | "
+        "output triangles | peak memory (MiB) | peak bytes/triangle |\n"
+     << "|---|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+  for (int m = 0; m < NumberOfMethods; ++m)
   {
-    if (MethodAvailable(m))
+    if (!MethodAvailable(m))
     {
-      os << " " << MethodShortName(m) << " s | " << MethodShortName(m) << " ns/triangle |";
+      continue;
     }
-  }
-  os << " HalfEdgeColor CPU ns/triangle | HalfEdgeColor peak (MiB) |"
-        " HalfEdgeColor peak (bytes/triangle) |\n|--:|";
-  for (int m : methods)
-  {
-    if (MethodAvailable(m))
+    for (const CaseResult& c : sweep)
     {
-      os << "--:|--:|";
-    }
-  }
-  os << "--:|--:|--:|\n";
-  for (const CaseResult& c : sweep)
-  {
-    os << "| " << Thousands(c.Triangles) << " |";
-    for (int m : methods)
-    {
-      if (!MethodAvailable(m))
-      {
-        continue;
-      }
       const RunResult& r = c.Runs[m];
+      const double n = static_cast<double>(std::max<long long>(1, c.Triangles));
+      os << "| " << MethodShortName(m) << " | " << Thousands(c.Triangles) << " | ";
       if (!r.Ran)
       {
-        os << " — | — |";
+        os << r.Skipped << " | | | | | | |\n";
         continue;
       }
-      os << " " << Format("%.3f", r.Seconds) << (r.Error.empty() ? "" : " (VTK error)") << " | "
-         << Format("%.0f", 1e9 * r.Seconds / std::max<long long>(1, c.Triangles)) << " |";
+      os << Format("%.3f", r.Seconds) << (r.Error.empty() ? "" : " (VTK error)") << " | "
+         << Format("%.3f", r.CpuSeconds) << " | " << Format("%.0f", 1e9 * r.Seconds / n) << " | "
+         << Format("%.0f", 1e9 * r.CpuSeconds / n) << " | " << Thousands(r.OutputTriangles) << " | "
+         << MiB(r.PeakBytes) << " | "
+         << (r.PeakBytes >= 0 ? Format("%.0f", r.PeakBytes / n) : std::string("?")) << " |\n";
     }
-    const RunResult& ours = c.Runs[OursColor];
-    os << " "
-       << (ours.Ran ? Format("%.0f", 1e9 * ours.CpuSeconds / std::max<long long>(1, c.Triangles))
-                    : "—")
-       << " | " << (ours.Ran ? MiB(ours.PeakBytes) : "—") << " | "
-       << (ours.Ran && ours.PeakBytes >= 0
-             ? Format("%.0f", double(ours.PeakBytes) / std::max<long long>(1, c.Triangles))
-             : "—")
-       << " |\n";
   }
   return os.str();
 }
