@@ -285,9 +285,10 @@ bool GatherPoints(vtkPoints* points, std::vector<double>& xyz)
 
 /**
  * RGB in [0,1], 3 floats per point (SPEC.md, Frame). Returns the number of tuples holding a
- * NaN or infinite value (measured as 0, carried through unchanged).
+ * NaN or infinite value (measured as 0, carried through unchanged). The mapping used is
+ * (x - offset) * scale; it is returned in `mapping` (offset, scale) when given.
  */
-vtkIdType ConvertColors(vtkDataArray* array, std::vector<float>& rgb)
+vtkIdType ConvertColors(vtkDataArray* array, std::vector<float>& rgb, double* mapping = nullptr)
 {
   const vtkIdType n = array->GetNumberOfTuples();
   const int comps = array->GetNumberOfComponents();
@@ -295,6 +296,11 @@ vtkIdType ConvertColors(vtkDataArray* array, std::vector<float>& rgb)
   rgb.assign(3 * static_cast<size_t>(n), 0.0f);
   vtkIdType nonFinite = 0;
 
+  if (mapping)
+  {
+    mapping[0] = 0.0;
+    mapping[1] = 1.0 / 255.0;
+  }
   if (auto* uc = vtkUnsignedCharArray::FastDownCast(array))
   {
     const unsigned char* src = uc->GetPointer(0);
@@ -326,6 +332,11 @@ vtkIdType ConvertColors(vtkDataArray* array, std::vector<float>& rgb)
   const bool unit = lo >= 0.0 && hi <= 1.0;
   const double offset = unit ? 0.0 : lo;
   const double scale = unit ? 1.0 : (hi > lo ? 1.0 / (hi - lo) : 0.0);
+  if (mapping)
+  {
+    mapping[0] = offset;
+    mapping[1] = scale;
+  }
   for (vtkIdType i = 0; i < n; ++i)
   {
     bool finite = true;
@@ -340,6 +351,44 @@ vtkIdType ConvertColors(vtkDataArray* array, std::vector<float>& rgb)
   return nonFinite;
 }
 
+/**
+ * Writes an RGB colour in [0,1] into tuple `i` of a colour array, in the array's own type and
+ * range: the inverse of the mapping (x - offset) * scale of ConvertColors (unsigned char:
+ * times 255, rounded); a one-component array gets the grey mean; further components (alpha)
+ * are left as they are. Nothing is written when the mapping is not invertible (scale 0).
+ */
+void WriteColor(vtkDataArray* array, vtkIdType i, const double rgb[3], const double mapping[2])
+{
+  if (!(mapping[1] > 0.0))
+  {
+    return;
+  }
+  const int comps = array->GetNumberOfComponents();
+  const bool integral = array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE;
+  const double lo = array->GetDataTypeMin();
+  const double hi = array->GetDataTypeMax();
+  auto value = [&](double c)
+  {
+    double x = mapping[0] + c / mapping[1];
+    if (integral)
+    {
+      x = std::min(std::max(std::round(x), lo), hi);
+    }
+    return x;
+  };
+  if (comps >= 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      array->SetComponent(i, k, value(rgb[k]));
+    }
+  }
+  else if (comps >= 1)
+  {
+    array->SetComponent(i, 0, value((rgb[0] + rgb[1] + rgb[2]) / 3.0));
+  }
+}
+
 void CopyPassedData(vtkPolyData* input, vtkPolyData* output)
 {
   output->GetFieldData()->PassData(input->GetFieldData());
@@ -350,6 +399,10 @@ void CopyPassedData(vtkPolyData* input, vtkPolyData* output)
 //------------------------------------------------------------------------------
 vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   : ErrorMetric(HalfEdgeColor)
+  , ColorSpace(RGB)
+  , OptimalPlacement(false)
+  , ColorWeight(1.0)
+  , BoundaryWeight(0.0)
   , TargetReduction(0.9)
   , PreserveBoundary(false)
   , MaximumNormalAngle(90.0)
@@ -374,7 +427,21 @@ vtkColorHalfEdgeDecimation::~vtkColorHalfEdgeDecimation()
 //------------------------------------------------------------------------------
 const char* vtkColorHalfEdgeDecimation::GetErrorMetricAsString()
 {
-  return this->ErrorMetric == Geometry ? "Geometry" : "HalfEdgeColor";
+  switch (this->ErrorMetric)
+  {
+    case Geometry:
+      return "Geometry";
+    case ColorQuadric:
+      return "ColorQuadric";
+    default:
+      return "HalfEdgeColor";
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkColorHalfEdgeDecimation::GetColorSpaceAsString()
+{
+  return this->ColorSpace == CIELab ? "CIELab" : "RGB";
 }
 
 //------------------------------------------------------------------------------
@@ -450,10 +517,12 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   // The colour array.
   std::vector<float> rgb;
   const float* colors = nullptr;
+  vtkDataArray* colorArray = nullptr;
+  double colorMapping[2] = { 0.0, 0.0 };
   if (this->ErrorMetric != Geometry)
   {
     int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
-    vtkDataArray* colorArray = this->GetInputArrayToProcess(0, inputVector, association);
+    colorArray = this->GetInputArrayToProcess(0, inputVector, association);
     if (!colorArray)
     {
       vtkWarningMacro(<< "No colour array (point scalars or the array selected with "
@@ -479,7 +548,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
     }
     else
     {
-      const vtkIdType nonFinite = ConvertColors(colorArray, rgb);
+      const vtkIdType nonFinite = ConvertColors(colorArray, rgb, colorMapping);
       if (nonFinite > 0)
       {
         vtkWarningMacro(<< nonFinite
@@ -493,7 +562,13 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   // Decimate.
   colordecimation::DecimatorOptions options;
   options.Metric = this->ErrorMetric == Geometry ? colordecimation::ErrorMetric::Geometry
+    : this->ErrorMetric == ColorQuadric          ? colordecimation::ErrorMetric::ColorQuadric
                                                  : colordecimation::ErrorMetric::HalfEdgeColor;
+  options.Space = this->ColorSpace == CIELab ? colordecimation::ColorSpace::CIELab
+                                             : colordecimation::ColorSpace::RGB;
+  options.OptimalPlacement = this->OptimalPlacement != 0;
+  options.ColorWeight = this->ColorWeight;
+  options.BoundaryWeight = this->BoundaryWeight;
   options.PreserveBoundary = this->PreserveBoundary != 0;
   options.MaximumNormalAngle = this->MaximumNormalAngle;
   options.GeometryWeight = this->GeometryWeight;
@@ -553,7 +628,8 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
     if (mesh.IsFaceAlive(f))
     {
       ++numOutTriangles;
-      const int32_t* tri = mesh.GetFace(f);
+      int32_t tri[3];
+      mesh.GetFace(f, tri);
       newId[tri[0]] = newId[tri[1]] = newId[tri[2]] = 0;
     }
   }
@@ -574,6 +650,20 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   outPoints->SetDataType(input->GetPoints()->GetDataType());
   outPoints->SetNumberOfPoints(numOutPoints);
   input->GetPoints()->GetData()->GetTuples(sourcePoints, outPoints->GetData());
+  if (decimator.HasMovedVertices())
+  {
+    // Full collapses (ColorQuadric with OptimalPlacement) moved some surviving vertices.
+    for (vtkIdType i = 0; i < numOutPoints; ++i)
+    {
+      const auto source = static_cast<int32_t>(sourcePoints->GetId(i));
+      if (decimator.IsMoved(source))
+      {
+        double p[3];
+        decimator.GetOutputPosition(source, p);
+        outPoints->SetPoint(i, p);
+      }
+    }
+  }
   output->SetPoints(outPoints);
 
   vtkNew<vtkIdTypeArray> connectivity;
@@ -587,7 +677,8 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   {
     if (mesh.IsFaceAlive(f))
     {
-      const int32_t* tri = mesh.GetFace(f);
+      int32_t tri[3];
+      mesh.GetFace(f, tri);
       for (int k = 0; k < 3; ++k)
       {
         connectivity->SetValue(3 * t + k, newId[tri[k]]);
@@ -604,6 +695,27 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPointData* outPD = output->GetPointData();
   outPD->CopyAllocate(input->GetPointData(), numOutPoints);
   outPD->CopyData(input->GetPointData(), sourcePoints, targetPoints);
+  if (decimator.HasMovedVertices() && colors)
+  {
+    // The moved vertices' new colours, in the colour array's own type and range (the other
+    // arrays keep the surviving input vertex's values).
+    vtkDataArray* outColors = colorArray->GetName() && *colorArray->GetName()
+      ? outPD->GetArray(colorArray->GetName())
+      : outPD->GetScalars();
+    if (outColors && outColors->GetNumberOfComponents() == colorArray->GetNumberOfComponents())
+    {
+      for (vtkIdType i = 0; i < numOutPoints; ++i)
+      {
+        const auto source = static_cast<int32_t>(sourcePoints->GetId(i));
+        if (decimator.IsMoved(source))
+        {
+          double c[3];
+          decimator.GetOutputColor(source, c);
+          WriteColor(outColors, i, c, colorMapping);
+        }
+      }
+    }
+  }
   if (this->GenerateOriginalPointIds && this->OriginalPointIdsArrayName &&
       *this->OriginalPointIdsArrayName)
   {
@@ -656,6 +768,10 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ErrorMetric: " << this->GetErrorMetricAsString() << "\n";
+  os << indent << "ColorSpace: " << this->GetColorSpaceAsString() << "\n";
+  os << indent << "OptimalPlacement: " << (this->OptimalPlacement ? "On" : "Off") << "\n";
+  os << indent << "ColorWeight: " << this->ColorWeight << "\n";
+  os << indent << "BoundaryWeight: " << this->BoundaryWeight << "\n";
   os << indent << "TargetReduction: " << this->TargetReduction << "\n";
   os << indent << "PreserveBoundary: " << (this->PreserveBoundary ? "On" : "Off") << "\n";
   os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";

@@ -15,10 +15,14 @@
  * done cheapest first, by the cost of Kim, Choi and Lee, "Mesh Simplification with Vertex
  * Color": (1 + quadric error) x (1 + visual importance of v0) x (1 + colour error of the
  * collapse), measured in a frame where the mean edge length is 1 so that the result does
- * not depend on the mesh's units.
+ * not depend on the mesh's units. For comparison, ErrorMetric also offers the geometric
+ * quadric alone and Garland and Heckbert's colour quadric in R^6 (with optional full
+ * collapses, OptimalPlacement), and ColorSpace measures every colour term in CIELab
+ * instead of RGB.
  *
- * Because no vertex is ever moved or blended, every point-data array of the surviving
- * points is copied bit-exactly (colours, normals, texture coordinates, ids), and an array
+ * Because no vertex is ever moved or blended (except with the ColorQuadric metric's
+ * OptimalPlacement, see there), every point-data array of the surviving points is copied
+ * bit-exactly (colours, normals, texture coordinates, ids), and an array
  * (vtkOriginalPointIds by default) maps each output point to its input point. Cell data of
  * the surviving triangles is copied too, and field data is passed.
  *
@@ -71,22 +75,96 @@ public:
    * The cost that orders the collapses.
    * - HalfEdgeColor (default): the paper's (1 + Q)(1 + I)(1 + C).
    * - Geometry: the quadric error Q alone (colour ignored), for comparison.
+   * - ColorQuadric: Garland and Heckbert's colour quadric (1998), the metric the paper
+   *   compares against: every vertex is a point (x, y, z, r, g, b) of R^6 (geometry with
+   *   the bounding box scaled into the unit cube, colour in [0,1] times ColorWeight) and
+   *   holds the area-weighted sum of the squared distances to its triangles' planes in R^6
+   *   (28 floats per vertex, against the paper metric's 12). Half-edge collapses by default;
+   *   full collapses with OptimalPlacement on.
    */
   enum ErrorMetrics
   {
     HalfEdgeColor = 0,
-    Geometry = 1
+    Geometry = 1,
+    ColorQuadric = 2
+  };
+
+  /**
+   * Where colour differences are measured (every colour term of every metric).
+   * - RGB (default): RGB in [0,1], as the paper's eq. 13.
+   * - CIELab: the colours are taken as sRGB and measured in CIE L*a*b* (D65), divided by 100
+   *   (so that a distance is the CIE76 difference dE / 100: black to white is 1).
+   */
+  enum ColorSpaces
+  {
+    RGB = 0,
+    CIELab = 1
   };
 
   ///@{
   /**
    * Set/Get the error metric (see ErrorMetrics). Default HalfEdgeColor.
    */
-  vtkSetClampMacro(ErrorMetric, int, HalfEdgeColor, Geometry);
+  vtkSetClampMacro(ErrorMetric, int, HalfEdgeColor, ColorQuadric);
   vtkGetMacro(ErrorMetric, int);
   void SetErrorMetricToHalfEdgeColor() { this->SetErrorMetric(HalfEdgeColor); }
   void SetErrorMetricToGeometry() { this->SetErrorMetric(Geometry); }
+  void SetErrorMetricToColorQuadric() { this->SetErrorMetric(ColorQuadric); }
   const char* GetErrorMetricAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the colour space of the colour terms (see ColorSpaces). Default RGB.
+   */
+  vtkSetClampMacro(ColorSpace, int, RGB, CIELab);
+  vtkGetMacro(ColorSpace, int);
+  void SetColorSpaceToRGB() { this->SetColorSpace(RGB); }
+  void SetColorSpaceToCIELab() { this->SetColorSpace(CIELab); }
+  const char* GetColorSpaceAsString();
+  ///@}
+
+  ///@{
+  /**
+   * ColorQuadric only. When off (default), collapses are half-edge collapses, as with the
+   * other metrics: v0 is merged into v1, which stays where it is with its own colour, at
+   * the cost (Q0 + Q1)(x1). When on, they are full collapses: the surviving vertex moves to
+   * the point of R^6 that minimises Q0 + Q1 (its new position and colour; the colour brought
+   * back into [0,1], the better endpoint when the 6x6 system is singular). The rules against
+   * flips and degenerate triangles hold for the new position too.
+   *
+   * With OptimalPlacement on, moved output points get their new coordinates and their new
+   * colour, written in the colour array's own type and range (unsigned char: times 255,
+   * rounded; other types through the inverse of the mapping to [0,1]; the alpha of RGBA is
+   * copied); every other point-data array of a moved point is copied from the surviving
+   * input vertex. "Colours carried exactly" then holds only for the points that did not
+   * move.
+   */
+  vtkSetMacro(OptimalPlacement, vtkTypeBool);
+  vtkGetMacro(OptimalPlacement, vtkTypeBool);
+  vtkBooleanMacro(OptimalPlacement, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * ColorQuadric only: the weight of colour against geometry (the colour coordinates of
+   * R^6 are multiplied by it). Default 1: a unit of colour weighs as much as the whole
+   * bounding box's largest side, as in Garland and Heckbert's frame.
+   */
+  vtkSetClampMacro(ColorWeight, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ColorWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the weight of boundary constraints (every metric): each open-boundary edge adds
+   * to the quadric of its two vertices the plane through the edge perpendicular to its
+   * triangle, weighted by BoundaryWeight times the edge's squared length in the metric's
+   * frame (Garland and Heckbert's boundary preservation), so that collapses which pull a
+   * boundary inwards or cut its corners cost more. Default 0: none, the paper's metric.
+   */
+  vtkSetClampMacro(BoundaryWeight, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(BoundaryWeight, double);
   ///@}
 
   ///@{
@@ -166,6 +244,10 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int ErrorMetric;
+  int ColorSpace;
+  vtkTypeBool OptimalPlacement;
+  double ColorWeight;
+  double BoundaryWeight;
   double TargetReduction;
   vtkTypeBool PreserveBoundary;
   double MaximumNormalAngle;

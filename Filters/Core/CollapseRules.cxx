@@ -10,7 +10,8 @@ namespace colordecimation
 namespace
 {
 /// (b - a) x (c - a), in double.
-void TriangleNormal(const float* a, const float* b, const float* c, double n[3])
+template <typename T>
+void TriangleNormal(const T* a, const float* b, const float* c, double n[3])
 {
   const double e1[3] = { double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2] };
   const double e2[3] = { double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2] };
@@ -42,6 +43,17 @@ CollapseVerdict CollapseRules::Check(const HalfEdgeMesh& mesh, const float* posi
     return topology;
   }
   return this->CheckGeometry(mesh, positions, v0, v1, stride);
+}
+
+CollapseVerdict CollapseRules::Check(const HalfEdgeMesh& mesh, const float* positions, int32_t v0,
+                                     int32_t v1, int stride, const double newPosition[3])
+{
+  const CollapseVerdict topology = this->CheckTopology(mesh, v0, v1);
+  if (topology != CollapseVerdict::Legal)
+  {
+    return topology;
+  }
+  return this->CheckGeometry(mesh, positions, v0, v1, stride, newPosition);
 }
 
 CollapseVerdict CollapseRules::CheckTopology(const HalfEdgeMesh& mesh, int32_t v0, int32_t v1)
@@ -117,8 +129,30 @@ CollapseVerdict CollapseRules::CheckTopology(const HalfEdgeMesh& mesh, int32_t v
 CollapseVerdict CollapseRules::CheckGeometry(const HalfEdgeMesh& mesh, const float* positions,
                                              int32_t v0, int32_t v1, int stride) const
 {
-  const float* p0 = positions + stride * v0;
   const float* p1 = positions + stride * v1;
+  const double p[3] = { p1[0], p1[1], p1[2] };
+  return this->CheckFan(mesh, positions, stride, v0, v1, p);
+}
+
+CollapseVerdict CollapseRules::CheckGeometry(const HalfEdgeMesh& mesh, const float* positions,
+                                             int32_t v0, int32_t v1, int stride,
+                                             const double newPosition[3]) const
+{
+  const CollapseVerdict verdict = this->CheckFan(mesh, positions, stride, v0, v1, newPosition);
+  const float* p1 = positions + stride * v1;
+  if (verdict != CollapseVerdict::Legal ||
+      (newPosition[0] == p1[0] && newPosition[1] == p1[1] && newPosition[2] == p1[2]))
+  {
+    return verdict;
+  }
+  return this->CheckFan(mesh, positions, stride, v1, v0, newPosition);
+}
+
+CollapseVerdict CollapseRules::CheckFan(const HalfEdgeMesh& mesh, const float* positions,
+                                        int stride, int32_t v0, int32_t v1,
+                                        const double p1[3]) const
+{
+  const float* p0 = positions + stride * v0;
   const double minCos = this->Options.MinimumNormalCosine;
   CollapseVerdict verdict = CollapseVerdict::Legal;
   mesh.ForEachOutgoing(
@@ -159,9 +193,11 @@ CollapseVerdict CollapseRules::CheckGeometry(const HalfEdgeMesh& mesh, const flo
       if (this->ReferenceTriangles)
       {
         const int32_t* ref = this->ReferenceTriangles + 3 * (h / 3);
+        const float* refPositions = this->ReferencePositions ? this->ReferencePositions : positions;
+        const int refStride = this->ReferencePositions ? this->ReferenceStride : stride;
         double refN[3];
-        TriangleNormal(positions + stride * ref[0], positions + stride * ref[1],
-                       positions + stride * ref[2], refN);
+        TriangleNormal(refPositions + refStride * ref[0], refPositions + refStride * ref[1],
+                       refPositions + refStride * ref[2], refN);
         if (TurnsTooFar(refN, newN, newLength2, this->Options.MinimumDriftCosine))
         {
           verdict = CollapseVerdict::Flip;

@@ -69,6 +69,18 @@ public:
   void SetReferenceTriangles(const int32_t* triangles) { this->ReferenceTriangles = triangles; }
 
   /**
+   * Where the reference triangles' corners are read (stride floats per vertex): by default
+   * (null) from the positions given to each check, which is right as long as no vertex
+   * moves. Collapses that move vertices (full collapses with a placement) give the input
+   * positions here. The array must outlive the checks.
+   */
+  void SetReferencePositions(const float* positions, int stride = 3)
+  {
+    this->ReferencePositions = positions;
+    this->ReferenceStride = stride;
+  }
+
+  /**
    * Full check of v0 -> v1. The position of vertex v is positions[stride * v + 0..2] (so that
    * positions can live inside a larger per-vertex record).
    */
@@ -81,6 +93,19 @@ public:
     return this->Check(mesh, positions, v0, v1, stride) == CollapseVerdict::Legal;
   }
 
+  /**
+   * Full check of a collapse v0 -> v1 after which v1 sits at `newPosition` (a full collapse
+   * with a placement; the same frame as `positions`).
+   */
+  CollapseVerdict Check(const HalfEdgeMesh& mesh, const float* positions, int32_t v0, int32_t v1,
+                        int stride, const double newPosition[3]);
+
+  bool IsLegal(const HalfEdgeMesh& mesh, const float* positions, int32_t v0, int32_t v1, int stride,
+               const double newPosition[3])
+  {
+    return this->Check(mesh, positions, v0, v1, stride, newPosition) == CollapseVerdict::Legal;
+  }
+
   /// The topological part alone.
   CollapseVerdict CheckTopology(const HalfEdgeMesh& mesh, int32_t v0, int32_t v1);
 
@@ -88,9 +113,24 @@ public:
   CollapseVerdict CheckGeometry(const HalfEdgeMesh& mesh, const float* positions, int32_t v0,
                                 int32_t v1, int stride = 3) const;
 
+  /**
+   * The geometric part for a collapse that puts the merged vertex at `newPosition`: the
+   * surviving triangles of v0 and, when newPosition is not p1, those of v1, with that corner
+   * moved to newPosition, stay non-degenerate and unflipped. With newPosition = p1 this is
+   * the check above.
+   */
+  CollapseVerdict CheckGeometry(const HalfEdgeMesh& mesh, const float* positions, int32_t v0,
+                                int32_t v1, int stride, const double newPosition[3]) const;
+
 private:
+  /// The triangles of `centre` that do not use `other`, with centre moved to `newPosition`.
+  CollapseVerdict CheckFan(const HalfEdgeMesh& mesh, const float* positions, int stride,
+                           int32_t centre, int32_t other, const double newPosition[3]) const;
+
   CollapseRuleOptions Options;
   const int32_t* ReferenceTriangles = nullptr;
+  const float* ReferencePositions = nullptr;
+  int ReferenceStride = 3;
   std::vector<int32_t> Neighbors; ///< scratch, reused
 };
 

@@ -66,7 +66,7 @@ void CollapseColorErrors(const double p0[3], const double c0[3], Ring& ring, dou
 
 void InitializeVertexMetrics(const HalfEdgeMesh& mesh, const float* positions, const float* colors,
                              std::vector<VertexMetric>& metrics, int positionStride,
-                             int colorStride)
+                             int colorStride, double boundaryWeight)
 {
   const int32_t numVertices = mesh.GetNumberOfVertices();
   metrics.assign(numVertices, VertexMetric());
@@ -102,6 +102,36 @@ void InitializeVertexMetrics(const HalfEdgeMesh& mesh, const float* positions, c
     for (int k = 0; k < 3; ++k)
     {
       metrics[tri[k]].Q.AddPlaneThroughCentre(n, area);
+    }
+    if (!(boundaryWeight > 0))
+    {
+      continue;
+    }
+    // Boundary edges: the plane through the edge, perpendicular to the triangle.
+    const float* corner[3] = { a, b, c };
+    for (int k = 0; k < 3; ++k)
+    {
+      if (mesh.Twin(3 * f + k) >= 0)
+      {
+        continue;
+      }
+      const float* p = corner[k];
+      const float* q = corner[(k + 1) % 3];
+      const double e[3] = { double(q[0]) - p[0], double(q[1]) - p[1], double(q[2]) - p[2] };
+      double m[3] = { e[1] * n[2] - e[2] * n[1], e[2] * n[0] - e[0] * n[2],
+                      e[0] * n[1] - e[1] * n[0] };
+      const double ml = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+      if (!(ml > 0))
+      {
+        continue;
+      }
+      for (double& x : m)
+      {
+        x /= ml;
+      }
+      const double w = boundaryWeight * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+      metrics[tri[k]].Q.AddPlaneThroughCentre(m, w);
+      metrics[tri[(k + 1) % 3]].Q.AddPlaneThroughCentre(m, w);
     }
   }
 

@@ -166,11 +166,17 @@ VTKCOLORDECIMATION_EXPORT void CollapseColorErrors(const double p0[3], const dou
  * around each vertex (eq. 8) and the visual importance (eq. 14). Vertex v's position is
  * positions[positionStride * v + 0..2], its colour colors[colorStride * v + 0..2]; `colors` may be
  * null (importance 0).
+ *
+ * With boundaryWeight > 0 (not in the paper; off by default), each boundary edge also adds,
+ * to both its vertices, the plane through the edge perpendicular to its triangle, weighted
+ * by boundaryWeight times the edge's squared length (Garland and Heckbert's boundary
+ * constraint): collapses that pull a boundary inwards or cut its corners then cost more.
  */
 VTKCOLORDECIMATION_EXPORT void InitializeVertexMetrics(const HalfEdgeMesh& mesh,
                                                        const float* positions, const float* colors,
                                                        std::vector<VertexMetric>& metrics,
-                                                       int positionStride = 3, int colorStride = 3);
+                                                       int positionStride = 3, int colorStride = 3,
+                                                       double boundaryWeight = 0.0);
 
 } // namespace colordecimation
 

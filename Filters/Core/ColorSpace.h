@@ -9,8 +9,8 @@
  *   curve, taken to CIE XYZ with the sRGB primaries and the D65 white point, then to
  *   CIE 1976 L*a*b* relative to D65 (Xn = 0.95047, Yn = 1, Zn = 1.08883);
  * - the metric's coordinates are L*, a*, b* divided by 100 (one common factor, so that
- *   the Euclidean distance is the CIE76 colour difference dE*ab / 100). L*/100 lies in
- *   [0,1] and a*/100, b*/100 in about [-1.1, 1.0]: black to white is 1 (sqrt(3) in RGB),
+ *   the Euclidean distance is the CIE76 colour difference dE*ab / 100). L* / 100 lies in
+ *   [0,1] and a* / 100, b* / 100 in about [-1.1, 1.0]: black to white is 1 (sqrt(3) in RGB),
  *   pure red to pure green 1.7 (sqrt(2) in RGB), so the colour terms stay of the size they
  *   have in RGB and the weights of eq. 17 (the 1 added to each factor, GeometryWeight) keep
  *   their meaning.

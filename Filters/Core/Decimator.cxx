@@ -92,7 +92,11 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
   const double scale = (stats.MeanEdgeLength > 0 && std::isfinite(stats.MeanEdgeLength))
     ? 1.0 / stats.MeanEdgeLength
     : 1.0;
-  this->UseColor = this->Options.Metric == ErrorMetric::HalfEdgeColor && input.Colors;
+  this->QuadricMetric = this->Options.Metric == ErrorMetric::ColorQuadric;
+  this->Placement = this->QuadricMetric && this->Options.OptimalPlacement;
+  this->UseColor = this->Options.Metric != ErrorMetric::Geometry && input.Colors;
+  const bool lab = this->UseColor && this->Options.Space == ColorSpace::CIELab;
+  this->FrameScale = scale;
   this->Hot.resize(n);
   for (int32_t v = 0; v < n; ++v)
   {
@@ -100,19 +104,55 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
     for (int k = 0; k < 3; ++k)
     {
       const double centre = 0.5 * (lo[k] + hi[k]);
+      this->FrameCentre[k] = centre;
       hot.P[k] = static_cast<float>((input.Points[3 * v + k] - centre) * scale);
       hot.C[k] = this->UseColor ? input.Colors[3 * v + k] : 0.0f;
+    }
+    if (lab)
+    {
+      const double rgb[3] = { hot.C[0], hot.C[1], hot.C[2] };
+      double c[3];
+      RGBToMetricColor(ColorSpace::CIELab, rgb, c);
+      for (int k = 0; k < 3; ++k)
+      {
+        hot.C[k] = static_cast<float>(c[k]);
+      }
     }
     hot.QC = 0;
     hot.Spare = 0;
   }
 
   // 3. Per-vertex metric state.
-  InitializeVertexMetrics(this->Mesh, this->Positions(), this->UseColor ? this->Hot[0].C : nullptr,
-                          this->Metrics, HotStride, HotStride);
+  this->AnyMoved = false;
+  this->Moved.clear();
+  std::vector<float> inputPositions; // the reference of the drift guard, when vertices move
+  if (this->QuadricMetric)
+  {
+    // GH98's frame: the bounding box scaled uniformly into the unit cube.
+    const double extent = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
+    this->CubeScale = extent > 0 && std::isfinite(extent) ? 1.0 / (scale * extent) : 1.0;
+    this->Metrics.clear();
+    InitializeColorQuadrics(this->Mesh, this->Positions(), HotStride, this->CubeScale,
+                            this->UseColor ? this->Hot[0].C : nullptr, HotStride,
+                            std::max(this->Options.ColorWeight, 0.0),
+                            std::max(this->Options.BoundaryWeight, 0.0), this->ColorQuadrics);
+    if (this->Placement)
+    {
+      this->Moved.assign(n, 0);
+      inputPositions = this->GetNormalizedPositions();
+    }
+  }
+  else
+  {
+    this->ColorQuadrics.clear();
+    InitializeVertexMetrics(this->Mesh, this->Positions(),
+                            this->UseColor ? this->Hot[0].C : nullptr, this->Metrics, HotStride,
+                            HotStride, std::max(this->Options.BoundaryWeight, 0.0));
+  }
 
   // Each face slot's input normal bounds how far collapses may turn it, in total.
   this->Rules.SetReferenceTriangles(input.Triangles);
+  this->Rules.SetReferencePositions(inputPositions.empty() ? nullptr : inputPositions.data(), 3);
 
   // 4. Initial costs.
   this->Heap.Reset(n);
@@ -135,7 +175,20 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
       this->Heap.Pop(); // no collapse left for v0 (removed lazily)
       continue;
     }
-    if (!this->Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride))
+    // A full collapse (ColorQuadric with OptimalPlacement) puts v1 at the placement y.
+    double y[6];
+    bool moves = false;
+    double newPosition[3];
+    if (this->Placement)
+    {
+      double d01[6];
+      this->Offset6(v0, v1, d01);
+      this->PlaceCollapse(v0, v1, d01, y);
+      moves = !std::equal(y, y + 6, d01);
+      this->PlacementPosition(v0, y, newPosition);
+    }
+    if (!(moves ? this->Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride, newPosition)
+                : this->Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride)))
     {
       ++stats.RejectedPops;
       const Choice legal = this->Evaluate(v0, true);
@@ -152,16 +205,23 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
     }
     this->Heap.Pop();
 
-    // eq. 9 and 15: v1 takes over v0's quadric and importance.
-    VertexMetric& m0 = this->Metrics[v0];
-    VertexMetric& m1 = this->Metrics[v1];
-    const float* p0 = this->Hot[v0].P;
-    const float* p1 = this->Hot[v1].P;
-    const double d[3] = { double(p1[0]) - p0[0], double(p1[1]) - p0[1], double(p1[2]) - p0[2] };
-    m1.Q.AddShifted(m0.Q, d);
-    m1.Importance += m0.Importance;
-    m1.MaxColorDistance = std::max(m1.MaxColorDistance, m0.MaxColorDistance);
-    this->Hot[v1].QC = m1.Q.C;
+    if (this->QuadricMetric)
+    {
+      this->MergeColorQuadric(v0, v1, moves, y);
+    }
+    else
+    {
+      // eq. 9 and 15: v1 takes over v0's quadric and importance.
+      VertexMetric& m0 = this->Metrics[v0];
+      VertexMetric& m1 = this->Metrics[v1];
+      const float* p0 = this->Hot[v0].P;
+      const float* p1 = this->Hot[v1].P;
+      const double d[3] = { double(p1[0]) - p0[0], double(p1[1]) - p0[1], double(p1[2]) - p0[2] };
+      m1.Q.AddShifted(m0.Q, d);
+      m1.Importance += m0.Importance;
+      m1.MaxColorDistance = std::max(m1.MaxColorDistance, m0.MaxColorDistance);
+      this->Hot[v1].QC = m1.Q.C;
+    }
 
     this->FormerNeighbors.clear();
     this->Mesh.ForEachNeighbor(v0, [this](int32_t u) { this->FormerNeighbors.push_back(u); });
@@ -170,23 +230,32 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
     this->Best[v0] = -1;
 
     // v1 and v0's former neighbours have a new 1-ring: re-cost them. The other neighbours
-    // of v1 only saw their cost towards v1 grow: re-cost those whose choice was v1.
+    // of v1 only saw their cost towards v1 grow: re-cost those whose choice was v1. After a
+    // full collapse every cost towards v1 may have changed (its point and quadric both
+    // did): its whole new 1-ring, which holds v0's former neighbours, is re-costed.
     this->Update(v1);
-    for (int32_t u : this->FormerNeighbors)
+    if (this->Placement)
     {
-      if (u != v1)
-      {
-        this->Update(u);
-      }
+      this->Mesh.ForEachNeighbor(v1, [this](int32_t u) { this->Update(u); });
     }
-    this->Mesh.ForEachNeighbor(v1,
-                               [this, v1](int32_t u)
-                               {
-                                 if (this->Best[u] == v1)
+    else
+    {
+      for (int32_t u : this->FormerNeighbors)
+      {
+        if (u != v1)
+        {
+          this->Update(u);
+        }
+      }
+      this->Mesh.ForEachNeighbor(v1,
+                                 [this, v1](int32_t u)
                                  {
-                                   this->Update(u);
-                                 }
-                               });
+                                   if (this->Best[u] == v1)
+                                   {
+                                     this->Update(u);
+                                   }
+                                 });
+    }
 
     if (progress && stats.Collapses >= nextReport)
     {
@@ -200,10 +269,14 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
     }
   }
   this->Rules.SetReferenceTriangles(nullptr); // the input may not outlive Run
+  this->Rules.SetReferencePositions(nullptr);
   stats.OutputTriangles = this->Mesh.GetNumberOfLiveFaces();
   // Connectivity 24 B/triangle + 5 B/vertex; metric 48; hot record 32; heap 16; choice 4.
+  // ColorQuadric: 112 instead of 48 for the metric, and 1 more for the moved flags.
+  stats.MetricBytesPerVertex = this->QuadricMetric ? sizeof(ColorQuadric) : sizeof(VertexMetric);
   stats.StateBytes = 24 * size_t(input.NumberOfTriangles) +
-    size_t(n) * (5 + sizeof(VertexMetric) + sizeof(HotVertex) + 16 + 4);
+    size_t(n) *
+      (5 + stats.MetricBytesPerVertex + sizeof(HotVertex) + 16 + 4 + (this->Placement ? 1 : 0));
   return stats;
 }
 
@@ -293,9 +366,17 @@ Decimator::Choice Decimator::Evaluate(int32_t v0, bool exact)
   {
     return choice;
   }
-  __builtin_prefetch(&this->Metrics[v0]);
-  this->GatherRing(v0);
-  this->CostRing(v0);
+  if (this->QuadricMetric)
+  {
+    this->GatherRing(v0);
+    this->CostRingColorQuadric(v0);
+  }
+  else
+  {
+    __builtin_prefetch(&this->Metrics[v0]);
+    this->GatherRing(v0);
+    this->CostRing(v0);
+  }
   const Ring& ring = this->CurrentRing;
   if (!exact)
   {
@@ -323,7 +404,18 @@ Decimator::Choice Decimator::Evaluate(int32_t v0, bool exact)
             [this](int a, int b) { return this->Costs[a] < this->Costs[b]; });
   for (int j : this->Order)
   {
-    if (this->Rules.IsLegal(this->Mesh, this->Positions(), v0, ring.Vertex[j], HotStride))
+    bool legal;
+    if (this->Placement)
+    {
+      double p[3];
+      this->PlacementPosition(v0, &this->Placements[6 * j], p);
+      legal = this->Rules.IsLegal(this->Mesh, this->Positions(), v0, ring.Vertex[j], HotStride, p);
+    }
+    else
+    {
+      legal = this->Rules.IsLegal(this->Mesh, this->Positions(), v0, ring.Vertex[j], HotStride);
+    }
+    if (legal)
     {
       choice.Target = ring.Vertex[j];
       choice.Cost = this->Costs[j];
@@ -344,7 +436,14 @@ double Decimator::CollapseCost(int32_t v0, int32_t v1)
   {
     this->CurrentRing.IsCandidate[j] = this->CurrentRing.Vertex[j] == v1;
   }
-  this->CostRing(v0);
+  if (this->QuadricMetric)
+  {
+    this->CostRingColorQuadric(v0);
+  }
+  else
+  {
+    this->CostRing(v0);
+  }
   for (int j = 0; j < this->CurrentRing.Size; ++j)
   {
     if (this->CurrentRing.Vertex[j] == v1)
@@ -353,6 +452,221 @@ double Decimator::CollapseCost(int32_t v0, int32_t v1)
     }
   }
   return -1;
+}
+
+//------------------------------------------------------------------------------
+// The colour quadric (ColorQuadric.h).
+
+void Decimator::Offset6(int32_t v0, int32_t v1, double d[6]) const
+{
+  const HotVertex& a = this->Hot[v0];
+  const HotVertex& b = this->Hot[v1];
+  const double w = std::max(this->Options.ColorWeight, 0.0);
+  for (int k = 0; k < 3; ++k)
+  {
+    d[k] = this->CubeScale * (double(b.P[k]) - a.P[k]);
+    d[3 + k] = w * (double(b.C[k]) - a.C[k]);
+  }
+}
+
+void Decimator::PlacementPosition(int32_t v0, const double y[6], double p[3]) const
+{
+  const HotVertex& a = this->Hot[v0];
+  for (int k = 0; k < 3; ++k)
+  {
+    // Rounded to float as the position will be stored, so that the rules see that point.
+    p[k] = static_cast<float>(a.P[k] + y[k] / this->CubeScale);
+  }
+}
+
+void Decimator::CostRingColorQuadric(int32_t v0)
+{
+  Ring& ring = this->CurrentRing;
+  const int n = ring.PaddedSize();
+  if (this->Costs.size() < static_cast<size_t>(n))
+  {
+    this->Costs.resize(2 * n);
+  }
+  if (this->Placement && this->Placements.size() < 6 * static_cast<size_t>(n))
+  {
+    this->Placements.resize(12 * n);
+  }
+  double* costs = this->Costs.data();
+  const HotVertex& hot0 = this->Hot[v0];
+  const double g = this->CubeScale;
+  const double w = std::max(this->Options.ColorWeight, 0.0);
+  const ColorQuadric& q0 = this->ColorQuadrics[v0];
+  for (int j = 0; j < ring.Size; ++j)
+  {
+    const double d[6] = { g * (ring.X[j] - hot0.P[0]), g * (ring.Y[j] - hot0.P[1]),
+                          g * (ring.Z[j] - hot0.P[2]), w * (ring.R[j] - hot0.C[0]),
+                          w * (ring.G[j] - hot0.C[1]), w * (ring.B[j] - hot0.C[2]) };
+    if (this->Placement)
+    {
+      costs[j] = ring.IsCandidate[j]
+        ? this->PlaceCollapse(v0, ring.Vertex[j], d, &this->Placements[6 * j])
+        : std::numeric_limits<double>::infinity();
+    }
+    else
+    {
+      // (Q(v0) + Q(j))(xj): Q(v0) is centred at x0, Q(j) at xj (it contributes its constant).
+      costs[j] = std::max(0.0, q0.Evaluate(d) + ring.QC[j]);
+    }
+  }
+  for (int j = ring.Size; j < n; ++j)
+  {
+    costs[j] = std::numeric_limits<double>::infinity();
+  }
+}
+
+double Decimator::PlaceCollapse(int32_t v0, int32_t v1, const double d01[6], double y[6]) const
+{
+  // Q = Q(v0) + Q(v1), centred at x0 (Q(v1) is centred at x1 = x0 + d01).
+  ColorQuadricD q;
+  q.Assign(this->ColorQuadrics[v0]);
+  const double d10[6] = { -d01[0], -d01[1], -d01[2], -d01[3], -d01[4], -d01[5] };
+  q.AddShifted(this->ColorQuadrics[v1], d10);
+
+  // Where boundaries are preserved, a boundary v1 stays where it is (a half-edge collapse).
+  bool placed = !(this->Options.PreserveBoundary && this->Mesh.IsBoundaryVertex(v1)) &&
+    MinimizeColorQuadric(q, y);
+  if (placed)
+  {
+    // Guard against nearly singular systems: the minimiser stays near the edge.
+    double far = 0.0, length2 = 0.0;
+    for (int k = 0; k < 6; ++k)
+    {
+      const double m = y[k] - 0.5 * d01[k];
+      far += m * m;
+      length2 += d01[k] * d01[k];
+    }
+    placed = far <= 4.0 * length2;
+  }
+  if (placed)
+  {
+    const double w = std::max(this->Options.ColorWeight, 0.0);
+    const HotVertex& a = this->Hot[v0];
+    if (w > 0 && this->UseColor)
+    {
+      // The colour within the displayable range (in the metric's colour space).
+      double c[3] = { a.C[0] + y[3] / w, a.C[1] + y[4] / w, a.C[2] + y[5] / w };
+      if (ClampMetricColor(this->Options.Space, c))
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          y[3 + k] = w * (c[k] - a.C[k]);
+        }
+      }
+    }
+    else
+    {
+      // No colour to place: v1 keeps its own.
+      std::copy(d01 + 3, d01 + 6, y + 3);
+    }
+    // As the point will be stored (float), so that the cost is the one of that point.
+    double p[3];
+    this->PlacementPosition(v0, y, p);
+    for (int k = 0; k < 3; ++k)
+    {
+      y[k] = this->CubeScale * (p[k] - a.P[k]);
+    }
+    if (w > 0 && this->UseColor)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const float c = static_cast<float>(a.C[k] + y[3 + k] / w);
+        y[3 + k] = w * (double(c) - a.C[k]);
+      }
+    }
+    return std::max(0.0, q.Evaluate(y));
+  }
+  // The better endpoint; v1's point (a half-edge collapse) unless v0's is better by more
+  // than the rounding of the evaluation (so that ties, as on flat uniform patches, do not
+  // move vertices for nothing).
+  const double at1 = q.Evaluate(d01);
+  const double at0 = q.C;
+  double trace = 0.0, length2 = 0.0;
+  for (int k = 0; k < 6; ++k)
+  {
+    trace += std::abs(q.GetA(k, k));
+    length2 += d01[k] * d01[k];
+  }
+  if (at0 < at1 - 1e-6 * trace * length2 &&
+      !(this->Options.PreserveBoundary && this->Mesh.IsBoundaryVertex(v1)))
+  {
+    std::fill(y, y + 6, 0.0);
+    return std::max(0.0, at0);
+  }
+  std::copy(d01, d01 + 6, y);
+  return std::max(0.0, at1);
+}
+
+void Decimator::MergeColorQuadric(int32_t v0, int32_t v1, bool moved, const double y[6])
+{
+  ColorQuadric& q1 = this->ColorQuadrics[v1];
+  const ColorQuadric& q0 = this->ColorQuadrics[v0];
+  HotVertex& a = this->Hot[v0];
+  HotVertex& b = this->Hot[v1];
+  if (!moved)
+  {
+    double d01[6];
+    this->Offset6(v0, v1, d01);
+    q1.AddShifted(q0, d01);
+    b.QC = q1.C;
+    return;
+  }
+  // The new point, stored, then both quadrics re-centred there.
+  const double w = std::max(this->Options.ColorWeight, 0.0);
+  HotVertex placed = b;
+  double p[3];
+  this->PlacementPosition(v0, y, p);
+  for (int k = 0; k < 3; ++k)
+  {
+    placed.P[k] = static_cast<float>(p[k]);
+    if (w > 0 && this->UseColor)
+    {
+      placed.C[k] = static_cast<float>(a.C[k] + y[3 + k] / w);
+    }
+  }
+  double dn0[6], dn1[6];
+  for (int k = 0; k < 3; ++k)
+  {
+    dn0[k] = this->CubeScale * (double(placed.P[k]) - a.P[k]);
+    dn1[k] = this->CubeScale * (double(placed.P[k]) - b.P[k]);
+    dn0[3 + k] = w * (double(placed.C[k]) - a.C[k]);
+    dn1[3 + k] = w * (double(placed.C[k]) - b.C[k]);
+  }
+  ColorQuadricD sum;
+  sum.AddShifted(q0, dn0);
+  sum.AddShifted(q1, dn1);
+  q1.Assign(sum);
+  b.P[0] = placed.P[0];
+  b.P[1] = placed.P[1];
+  b.P[2] = placed.P[2];
+  b.C[0] = placed.C[0];
+  b.C[1] = placed.C[1];
+  b.C[2] = placed.C[2];
+  b.QC = q1.C;
+  this->Moved[v1] = 1;
+  this->AnyMoved = true;
+}
+
+void Decimator::GetOutputPosition(int32_t v, double p[3]) const
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    p[k] = this->FrameCentre[k] + this->Hot[v].P[k] / this->FrameScale;
+  }
+}
+
+void Decimator::GetOutputColor(int32_t v, double rgb[3]) const
+{
+  const double c[3] = { this->Hot[v].C[0], this->Hot[v].C[1], this->Hot[v].C[2] };
+  MetricColorToRGB(this->UseColor ? this->Options.Space : ColorSpace::RGB, c, rgb);
+  for (int k = 0; k < 3; ++k)
+  {
+    rgb[k] = std::min(std::max(rgb[k], 0.0), 1.0);
+  }
 }
 
 } // namespace colordecimation

@@ -31,6 +31,8 @@
 
 #include "CollapseRules.h"
 #include "ColorMetric.h"
+#include "ColorQuadric.h"
+#include "ColorSpace.h"
 #include "HalfEdgeMesh.h"
 #include "VertexHeap.h"
 #include "vtkColorDecimationModule.h" // for export macro
@@ -45,7 +47,8 @@ namespace colordecimation
 enum class ErrorMetric
 {
   HalfEdgeColor = 0, ///< (1 + Q)(1 + I)(1 + C): the paper's metric
-  Geometry = 1       ///< Q alone (half-edge QEM), colour ignored
+  Geometry = 1,      ///< Q alone (half-edge QEM), colour ignored
+  ColorQuadric = 2   ///< Garland-Heckbert's 6-D colour quadric (ColorQuadric.h)
 };
 
 struct DecimatorOptions
@@ -53,7 +56,24 @@ struct DecimatorOptions
   ErrorMetric Metric = ErrorMetric::HalfEdgeColor;
   bool PreserveBoundary = false;
   double MaximumNormalAngle = 90.0; ///< degrees
-  double GeometryWeight = 1.0;      ///< w in Q' = w Q (SPEC.md, Frame)
+  double GeometryWeight = 1.0;      ///< w in Q' = w Q (SPEC.md, Frame); not ColorQuadric
+  /// Where colour is measured (every colour term of every metric); see ColorSpace.h.
+  ColorSpace Space = ColorSpace::RGB;
+  /// ColorQuadric: the colour coordinates of R^6 are multiplied by this weight.
+  double ColorWeight = 1.0;
+  /**
+   * ColorQuadric: off, half-edge collapses (v1 stays, cost (Q0 + Q1)(x1)); on, full
+   * collapses: the surviving vertex moves to the minimiser of Q0 + Q1 in R^6 (position and
+   * colour; colour clamped to the displayable range, endpoints when the system is singular).
+   */
+  bool OptimalPlacement = false;
+  /**
+   * Weight of Garland-Heckbert's boundary constraint planes (0: none, the paper's metric):
+   * each boundary edge adds to its vertices' quadric the plane through it perpendicular to
+   * its triangle, times this weight times the edge's squared length (in the metric's frame:
+   * mean edge length 1 for HalfEdgeColor and Geometry, the unit cube for ColorQuadric).
+   */
+  double BoundaryWeight = 0.0;
 };
 
 struct DecimatorInput
@@ -94,7 +114,19 @@ public:
                           const std::function<bool(double)>& progress = nullptr);
 
   const HalfEdgeMesh& GetMesh() const { return this->Mesh; }
+  /// The per-vertex state of HalfEdgeColor and Geometry (empty with ColorQuadric).
   const std::vector<VertexMetric>& GetMetrics() const { return this->Metrics; }
+  /// The per-vertex state of ColorQuadric (each centred at its vertex's point of R^6).
+  const std::vector<ColorQuadric>& GetColorQuadrics() const { return this->ColorQuadrics; }
+
+  /// Whether a collapse moved a surviving vertex (ColorQuadric with OptimalPlacement).
+  bool HasMovedVertices() const { return this->AnyMoved; }
+  /// Whether vertex v was moved (and recoloured) by a full collapse.
+  bool IsMoved(int32_t v) const { return !this->Moved.empty() && this->Moved[v] != 0; }
+  /// The current position of v in the input's units (for moved vertices; float precision).
+  void GetOutputPosition(int32_t v, double p[3]) const;
+  /// The current colour of v as RGB in [0,1] (for moved vertices).
+  void GetOutputColor(int32_t v, double rgb[3]) const;
   /// Position of v in the normalised frame.
   const float* GetNormalizedPosition(int32_t v) const { return this->Hot[v].P; }
   /// Positions in the normalised frame (3 floats per vertex; a copy).
@@ -117,6 +149,19 @@ private:
   void GatherRing(int32_t v0);
   void CostRing(int32_t v0);
   void Update(int32_t v);
+  /// ColorQuadric: cost of every ring member (and, with OptimalPlacement, its placement).
+  void CostRingColorQuadric(int32_t v0);
+  /**
+   * ColorQuadric with OptimalPlacement: the cost of the full collapse of v0 and v1 and the
+   * new vertex's offset y from v0's point of R^6 (d01: v1's offset from v0's point).
+   */
+  double PlaceCollapse(int32_t v0, int32_t v1, const double d01[6], double y[6]) const;
+  /// The offset of v1 from v0 in R^6 (the colour quadric's frame).
+  void Offset6(int32_t v0, int32_t v1, double d[6]) const;
+  /// A placement offset y from v0 as a position in the normalised frame.
+  void PlacementPosition(int32_t v0, const double y[6], double p[3]) const;
+  /// ColorQuadric: merge v0 into v1 (placement y from v0 when `moved`).
+  void MergeColorQuadric(int32_t v0, int32_t v1, bool moved, const double y[6]);
 
   /// What costing reads of a vertex, in one record (8 floats).
   struct HotVertex
@@ -130,6 +175,15 @@ private:
   const float* Positions() const { return this->Hot.empty() ? nullptr : this->Hot[0].P; }
 
   DecimatorOptions Options;
+  bool QuadricMetric = false; ///< Options.Metric == ColorQuadric
+  bool Placement = false;     ///< ColorQuadric with OptimalPlacement
+  double CubeScale = 1.0;     ///< normalised frame -> GH98's unit-cube frame
+  double FrameCentre[3] = { 0, 0, 0 };
+  double FrameScale = 1.0; ///< input units -> normalised frame
+  std::vector<ColorQuadric> ColorQuadrics;
+  std::vector<uint8_t> Moved;
+  bool AnyMoved = false;
+  std::vector<double> Placements; ///< scratch: 6 per ring member
   CollapseRules Rules;
   HalfEdgeMesh Mesh;
   std::vector<HotVertex> Hot;
