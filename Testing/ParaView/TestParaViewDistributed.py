@@ -24,7 +24,7 @@ open boundary), the merged result has no open or non-manifold edge and is a clos
 surface, the triangle count is near the target, every output point has the colour the
 pattern gives at its position. --compare-decimate also runs ParaView's Decimate on the same
 chain and prints its open and non-manifold edges (for docs/PARAVIEW.md); --time prints the
-time of the decimation alone (on the slowest rank, since UpdatePipeline waits for all).
+time of the decimation alone (UpdatePipeline of the filter, timed on the first rank).
 """
 import argparse
 import math

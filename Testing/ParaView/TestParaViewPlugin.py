@@ -210,6 +210,11 @@ else:
         print("image difference %.3f (threshold %.1f), test image %s" % (error, args.threshold, image))
         check(error <= args.threshold, "the screenshot differs from %s by %.3f" % (args.baseline, error))
 
+# Release the view before Python exits (its X resources go while the display is still up).
+Hide(decimation, view)
+Delete(view)
+del display, view
+
 if failures:
     print("%d check(s) failed" % len(failures))
     sys.exit(1)

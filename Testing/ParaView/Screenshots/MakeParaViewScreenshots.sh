@@ -9,10 +9,11 @@ plugins="${1:?plugin folder (lib/paraview-5.11/plugins of the build)}"
 out="${2:?output folder}"
 here="$(cd "$(dirname "$0")" && pwd)"
 mkdir -p "$out"
+scratch="$(mktemp -d)"
 export PV_PLUGIN_PATH="$plugins"
-paraview --dr --script="$here/ParaViewScene.py" > "$out/paraview.log" 2>&1 &
+paraview --dr --script="$here/ParaViewScene.py" > "$scratch/paraview.log" 2>&1 &
 pv=$!
-trap 'kill $pv 2>/dev/null || true' EXIT
+trap 'kill $pv 2>/dev/null || true; rm -rf "$scratch"' EXIT
 sleep 25
 wid=$(xdotool search --onlyvisible --name "ParaView" | head -1)
 xdotool windowmove "$wid" 0 0 windowsize "$wid" 1440 900
@@ -31,5 +32,5 @@ xdotool mousemove 215 10 click 1
 sleep 1
 xdotool mousemove 260 200 sleep 0.3 mousemove 283 330 sleep 0.3 mousemove 285 336 click 1
 sleep 2
-import -window root "$out/paraview_filters_menu_full.png"
-convert "$out/paraview_filters_menu_full.png" -crop 720x450+0+0 +repage "$out/paraview_filters_menu.png"
+import -window root "$scratch/menu.png"
+convert "$scratch/menu.png" -crop 720x450+0+0 +repage "$out/paraview_filters_menu.png"
