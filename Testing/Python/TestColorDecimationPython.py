@@ -90,7 +90,7 @@ def main():
     n_out = out.GetNumberOfPolys()
     # The filter's target: floor((1 - TargetReduction) * triangles). A collapse on a closed
     # surface removes two triangles, so it stops at the target or one below.
-    target = math.floor((1.0 - 0.8) * n_in)
+    target = math.floor((1.0 - 0.8) * n_in + 1e-6)
     print("input %d triangles, output %d (target %d), %d collapses, actual reduction %.4f"
           % (n_in, n_out, target, decimation.GetNumberOfCollapses(),
              decimation.GetActualReduction()))

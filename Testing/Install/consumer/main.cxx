@@ -44,7 +44,7 @@ int main()
   const vtkIdType nIn = mesh->GetNumberOfPolys();
   // The filter's target, floor((1 - TargetReduction) * triangles); a collapse on a closed
   // surface removes two triangles, so the output has the target or one less.
-  const vtkIdType target = static_cast<vtkIdType>(std::floor((1.0 - 0.75) * nIn));
+  const vtkIdType target = static_cast<vtkIdType>(std::floor((1.0 - 0.75) * nIn + 1e-6));
   std::cout << nIn << " -> " << out->GetNumberOfPolys() << " triangles (target " << target << ")\n";
   if (out->GetNumberOfPolys() > target || out->GetNumberOfPolys() < target - 1)
   {
