@@ -635,7 +635,8 @@ CaseResult RunCase(const std::string& name, const std::string& description, vtkP
     }
     if ((method == QuadricAttributes || method == QuadricGeometry) && !runQuadric)
     {
-      result.Runs[method].Skipped = "skipped";
+      result.Runs[method].Skipped =
+        options.NoQuadric ? "not run (--no-quadric)" : "not run (above --quadric-max)";
       continue;
     }
     result.Runs[method] = Measure(method, mesh, options, name);
