@@ -517,7 +517,9 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& co
   {
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetFileName(path.c_str());
-    writer->SetDataModeToAppended();
+    // Inline binary rather than appended data: VTK 9.2's reader cannot parse appended data
+    // with Debian 12's newer libexpat1 updates (2.5.0-1+deb12u2 and later).
+    writer->SetDataModeToBinary();
     writer->SetCompressorTypeToZLib();
     writer->SetInputData(mesh);
     ok = writer->Write();

@@ -98,6 +98,7 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path)
   }
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetFileName(path.c_str());
+  writer->SetDataModeToBinary(); // not appended: see Tools/MeshIO.cxx
   writer->SetInputData(mesh);
   return writer->Write() == 1;
 }
