@@ -4,10 +4,17 @@
 # The two flavours cannot be installed together (python3-paraview conflicts with python3-vtk9,
 # which libvtk9-dev needs); installing one removes the other.
 
-COMMON_PACKAGES="cmake g++ make pkg-config xvfb xauth libmeshoptimizer-dev python3 valgrind"
+COMMON_PACKAGES="cmake g++ make pkg-config git xvfb xauth libmeshoptimizer-dev python3
+  python3-numpy valgrind"
 VTK_PACKAGES="libvtk9-dev python3-vtk9"
+# find_package(ParaView) loads ParaView's VTK, whose package looks for all of VTK's third-party
+# libraries: their -dev packages are not dependencies of paraview-dev, hence the long list.
 PARAVIEW_PACKAGES="paraview-dev python3-paraview qtbase5-dev qttools5-dev libqt5svg5-dev
-  qttools5-dev-tools qtxmlpatterns5-dev-tools mpi-default-bin"
+  qttools5-dev-tools qtxmlpatterns5-dev-tools libxml2-dev libhdf5-openmpi-dev libnetcdf-dev
+  libgl2ps-dev libglew-dev libtheora-dev libogg-dev libavcodec-dev libavformat-dev libavutil-dev
+  libswscale-dev libavdevice-dev libavfilter-dev libswresample-dev libgdal-dev libutfcpp-dev
+  libdouble-conversion-dev liblz4-dev liblzma-dev libjpeg-dev libpng-dev libtiff-dev
+  libfreetype-dev libopenmpi-dev"
 
 as_root() {
   if [ "$(id -u)" -eq 0 ]; then
