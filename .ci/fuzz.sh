@@ -43,7 +43,8 @@ cmake --build "$build" -j "$jobs" --target ColorDecimationFuzzer ColorDecimation
 export ASAN_OPTIONS="detect_leaks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 echo "== fuzz: replay the seeds and the regressions (Clang + ASan + UBSan)"
-ctest --test-dir "$build" --output-on-failure -L fuzz
+replay=0
+ctest --test-dir "$build" --output-on-failure -L fuzz || replay=1
 
 corpus="$build/fuzz-corpus"
 artifacts="$build/fuzz-artifacts"
@@ -61,3 +62,7 @@ if [ "$status" != 0 ]; then
   exit 1
 fi
 echo "fuzz: no crash in ${seconds} s ($(ls "$corpus" | wc -l) inputs in the working corpus)"
+if [ "$replay" != 0 ]; then
+  echo "fuzz: FAILED: the replay of the seeds or regressions failed (see above)" >&2
+  exit 1
+fi
