@@ -394,6 +394,27 @@ void CopyPassedData(vtkPolyData* input, vtkPolyData* output)
   output->GetFieldData()->PassData(input->GetFieldData());
 }
 
+/**
+ * The arrays of `data` that have `tuples` tuples, in `consistent` (a shallow copy that keeps
+ * the attribute roles); the names of the others, which cannot be carried, in `dropped`.
+ */
+void KeepConsistentArrays(vtkDataSetAttributes* data, vtkIdType tuples,
+                          vtkDataSetAttributes* consistent, std::string& dropped)
+{
+  consistent->ShallowCopy(data);
+  for (int a = consistent->GetNumberOfArrays() - 1; a >= 0; --a)
+  {
+    vtkAbstractArray* array = consistent->GetAbstractArray(a);
+    if (array && array->GetNumberOfTuples() != tuples)
+    {
+      dropped += std::string(dropped.empty() ? "" : ", ") + "'" +
+        (array->GetName() ? array->GetName() : "(unnamed)") + "' (" +
+        std::to_string(array->GetNumberOfTuples()) + " tuples)";
+      consistent->RemoveArray(a);
+    }
+  }
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -459,6 +480,19 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
     return 0;
   }
   CopyPassedData(input, output);
+
+  for (const double value : { this->TargetReduction, this->MaximumNormalAngle, this->GeometryWeight,
+                              this->ColorWeight, this->BoundaryWeight })
+  {
+    if (!std::isfinite(value))
+    {
+      vtkErrorMacro(<< "A property is NaN or infinite (TargetReduction " << this->TargetReduction
+                    << ", MaximumNormalAngle " << this->MaximumNormalAngle << ", GeometryWeight "
+                    << this->GeometryWeight << ", ColorWeight " << this->ColorWeight
+                    << ", BoundaryWeight " << this->BoundaryWeight << "); output is empty.");
+      return 1;
+    }
+  }
 
   const vtkIdType numPoints = input->GetNumberOfPoints();
   if (numPoints == 0 || input->GetNumberOfCells() == 0)
@@ -597,8 +631,10 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
                   << " points of its open boundary are fixed.");
   }
 
+  // At most (1 - TargetReduction) of the triangles remain. The small allowance keeps a product
+  // that is an integer on paper (1 - 0.8 is 0.19999999999999996 in double) from losing one.
   const auto target = static_cast<int64_t>(
-    std::floor((1.0 - this->TargetReduction) * static_cast<double>(numTriangles)));
+    std::floor((1.0 - this->TargetReduction) * static_cast<double>(numTriangles) + 1e-6));
   this->UpdateProgress(0.05);
   colordecimation::Decimator decimator(options);
   const colordecimation::DecimatorStatistics stats =
@@ -692,9 +728,23 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   polys->SetData(3, connectivity);
   output->SetPolys(polys);
 
+  // Arrays whose tuple count does not match their points or cells cannot be carried.
+  vtkNew<vtkPointData> inPD;
+  vtkNew<vtkCellData> inCD;
+  std::string droppedPointArrays, droppedCellArrays;
+  KeepConsistentArrays(input->GetPointData(), numPoints, inPD, droppedPointArrays);
+  KeepConsistentArrays(input->GetCellData(), input->GetNumberOfCells(), inCD, droppedCellArrays);
+  if (!droppedPointArrays.empty() || !droppedCellArrays.empty())
+  {
+    vtkWarningMacro(<< "Arrays whose size does not match the mesh are left out of the output: "
+                    << (droppedPointArrays.empty() ? "" : "point data ") << droppedPointArrays
+                    << (droppedCellArrays.empty() ? "" : " cell data ") << droppedCellArrays << " ("
+                    << numPoints << " points, " << input->GetNumberOfCells() << " cells).");
+  }
+
   vtkPointData* outPD = output->GetPointData();
-  outPD->CopyAllocate(input->GetPointData(), numOutPoints);
-  outPD->CopyData(input->GetPointData(), sourcePoints, targetPoints);
+  outPD->CopyAllocate(inPD, numOutPoints);
+  outPD->CopyData(inPD, sourcePoints, targetPoints);
   if (decimator.HasMovedVertices() && colors)
   {
     // The moved vertices' new colours, in the colour array's own type and range (the other
@@ -735,8 +785,8 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
     outPD->AddArray(original);
   }
   vtkCellData* outCD = output->GetCellData();
-  outCD->CopyAllocate(input->GetCellData(), numOutTriangles);
-  outCD->CopyData(input->GetCellData(), sourceCells, targetCells);
+  outCD->CopyAllocate(inCD, numOutTriangles);
+  outCD->CopyData(inCD, sourceCells, targetCells);
 
   this->ActualReduction = 1.0 - static_cast<double>(numOutTriangles) / numTriangles;
   this->UpdateProgress(1.0);

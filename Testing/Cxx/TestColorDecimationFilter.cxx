@@ -427,7 +427,9 @@ void TestProperties()
   f->SetGeometryWeight(-3);
   CD_CHECK(f->GetGeometryWeight() == 0.0);
   f->SetErrorMetric(5);
-  CD_CHECK(f->GetErrorMetric() == vtkColorHalfEdgeDecimation::Geometry);
+  CD_CHECK(f->GetErrorMetric() == vtkColorHalfEdgeDecimation::ColorQuadric); // the last one
+  CD_CHECK(std::string(f->GetErrorMetricAsString()) == "ColorQuadric");
+  f->SetErrorMetric(1);
   CD_CHECK(std::string(f->GetErrorMetricAsString()) == "Geometry");
 
   auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
