@@ -14,7 +14,7 @@
 #
 # UBSan is fatal (-fno-sanitize-recover=all) and LeakSanitizer is on (VTK's own allocations
 # need no suppression as of VTK 9.1; Testing/Hostile/lsan.supp is where one would go).
-# Takes about 12 minutes on 2 cores (build about 9, tests about 2).
+# Takes about 5 minutes on 2 cores from scratch (build about 3, tests about 2).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${BUILD_DIR:-$root/build-asan}

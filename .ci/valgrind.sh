@@ -9,7 +9,7 @@
 #   BUILD_DIR=build .ci/valgrind.sh   use that (non-sanitizer) build tree
 #
 # Needs valgrind (installed here with apt-get when missing and running as root).
-# Takes about 15 s under valgrind, plus about 8 minutes on 2 cores when it builds its own tree.
+# Takes about 5 s under valgrind, plus about 1 minute on 2 cores when it builds its own tree.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 # Default: the Release tree that scripts/test.sh leaves (CI runs it first), when it is there
