@@ -72,8 +72,10 @@ void PrintHelp(std::ostream& os)
        "Options:\n"
        "  --reduction R           fraction of the triangles to remove, 0 to 1 (default 0.9,\n"
        "                          which keeps 10 %)\n"
-       "  --metric M              half-edge-color (default: the paper's colour-aware cost) or\n"
-       "                          geometry (quadric error only, colours ignored)\n"
+       "  --metric M              half-edge-color (default: the paper's colour-aware cost),\n"
+       "                          geometry (quadric error only, colours ignored) or\n"
+       "                          color-quadric (Garland-Heckbert's 6-D colour quadric, as a\n"
+       "                          half-edge collapse)\n"
        "  --array NAME            point array holding the colours (default: the active\n"
        "                          scalars, e.g. the RGB array read from a PLY file)\n"
        "  --preserve-boundary     never remove vertices on open boundaries\n"
@@ -191,9 +193,13 @@ bool ParseOptions(int argc, char* argv[], Options& options, std::string& error)
       {
         options.Metric = vtkColorHalfEdgeDecimation::Geometry;
       }
+      else if (text == "color-quadric" || text == "colour-quadric" || text == "colorquadric")
+      {
+        options.Metric = vtkColorHalfEdgeDecimation::ColorQuadric;
+      }
       else
       {
-        error = "--metric must be half-edge-color or geometry (got '" + text + "')";
+        error = "--metric must be half-edge-color, geometry or color-quadric (got '" + text + "')";
         return false;
       }
     }
@@ -541,8 +547,10 @@ int main(int argc, char* argv[])
   }
   const double writeSeconds = Seconds(t0, std::chrono::steady_clock::now());
   const long long peakRss = PeakRSS();
-  const char* metric =
-    options.Metric == vtkColorHalfEdgeDecimation::HalfEdgeColor ? "half-edge-color" : "geometry";
+  const char* metric = options.Metric == vtkColorHalfEdgeDecimation::HalfEdgeColor
+    ? "half-edge-color"
+    : options.Metric == vtkColorHalfEdgeDecimation::Geometry ? "geometry"
+                                                             : "color-quadric";
 
   if (verbose)
   {
