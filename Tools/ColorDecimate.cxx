@@ -9,6 +9,7 @@
 #include "MeshIO.h"
 #include "ProcessMemory.h"
 
+#include "ColorDecimationFidelity.h"
 #include "vtkColorHalfEdgeDecimation.h"
 
 #include "vtkCallbackCommand.h"
@@ -48,6 +49,8 @@ struct Options
   double MaxNormalAngle = 90.0;
   double GeometryWeight = 1.0;
   std::string Stats;
+  std::string Snapshot;
+  int SnapshotSize = 512;
   std::string WriteInput;
   bool Quiet = false;
   bool Help = false;
@@ -85,6 +88,10 @@ void PrintHelp(std::ostream& os)
        "                          shape better, smaller keeps colour better)\n"
        "  --stats FILE.json       write the figures as JSON (filter_seconds, input/output\n"
        "                          points and triangles, reduction, metric, state and peak memory)\n"
+       "  --snapshot FILE.png     write a picture of the input (left) and the result (right),\n"
+       "                          lit shape above, unlit colour below, offscreen (needs an X\n"
+       "                          display: run under xvfb-run -a on a headless machine)\n"
+       "  --snapshot-size N       pixels of each of the picture's four panels (default 512)\n"
        "  --write-demo FILE       also write the input mesh (e.g. the demo) to FILE (.ply, .vtp\n"
        "                          or .vtk); with no OUTPUT, only that is done\n"
        "                          (--write-input is the same option)\n"
@@ -255,6 +262,28 @@ bool ParseOptions(int argc, char* argv[], Options& options, std::string& error)
       {
         return false;
       }
+    }
+    else if (arg == "--snapshot")
+    {
+      if (!takeValue(options.Snapshot))
+      {
+        return false;
+      }
+    }
+    else if (arg == "--snapshot-size")
+    {
+      std::string text;
+      double number = 0;
+      if (!takeValue(text))
+      {
+        return false;
+      }
+      if (!ParseNumber(text, number) || number < 16 || number > 8192)
+      {
+        error = "--snapshot-size must be a number of pixels from 16 to 8192 (got '" + text + "')";
+        return false;
+      }
+      options.SnapshotSize = static_cast<int>(number);
     }
     else if (arg == "--write-demo" || arg == "--write-input")
     {
@@ -605,6 +634,24 @@ int main(int argc, char* argv[])
     if (!json)
     {
       return Fail("cannot write the statistics to '" + options.Stats + "'");
+    }
+  }
+
+  if (!options.Snapshot.empty())
+  {
+    colordecimation::fidelity::SnapshotOptions snapshot;
+    snapshot.ColorArray = options.Array;
+    snapshot.SimplifiedLabel = "color-decimate " +
+      std::to_string(static_cast<int>(std::lround(100.0 * filter->GetActualReduction()))) + " %";
+    std::string why;
+    if (!colordecimation::fidelity::WriteSnapshot(input, output, options.Snapshot,
+                                                  options.SnapshotSize, snapshot, &why))
+    {
+      return Fail("cannot write the snapshot '" + options.Snapshot + "': " + why);
+    }
+    if (verbose)
+    {
+      std::cout << "wrote   " << options.Snapshot << " (input left, result right)\n";
     }
   }
   return 0;
