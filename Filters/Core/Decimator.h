@@ -25,6 +25,16 @@
  *
  * Data layout: what costing reads of a neighbour (position, colour, the constant term of its
  * quadric) sits in one 32-byte record per vertex, so a neighbour costs one cache line.
+ *
+ * The comparison metric, ErrorMetric::ColorQuadric (ColorQuadric.h), replaces the 48-byte
+ * VertexMetric by a 112-byte 6-D quadric per vertex, in Garland and Heckbert's frame (the
+ * bounding box scaled into the unit cube, colour times ColorWeight). Half-edge collapses cost
+ * (Q0 + Q1)(x1) and keep the same lazy argument (Q(v1) only grows). With OptimalPlacement the
+ * collapse of v0 into v1 is a full collapse: v1 moves to the minimiser of Q0 + Q1 (its colour
+ * brought back into the displayable range, the better endpoint when the 6x6 system is
+ * singular or its solution lies far from the edge), the rules check the moved triangles of
+ * both vertices, and the whole new 1-ring of v1 is re-costed. Colours are measured in RGB or,
+ * with ColorSpace::CIELab, in CIELab / 100 (ColorSpace.h), for every metric.
  */
 #ifndef colordecimation_Decimator_h
 #define colordecimation_Decimator_h

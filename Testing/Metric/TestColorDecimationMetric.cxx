@@ -5,6 +5,7 @@
 // vtkColorHalfEdgeDecimation (targets met, manifold kept, no flips, colour arrays written back).
 #include "ColorDecimationTestUtilities.h"
 
+#include "ColorMetric.h"
 #include "ColorQuadric.h"
 #include "ColorSpace.h"
 #include "Decimator.h"
@@ -1166,6 +1167,95 @@ void TestInvariantsCIELab()
 }
 
 //------------------------------------------------------------------------------
+void TestBoundaryQuadric()
+{
+  // The paper's 10-float quadric with boundary planes (BoundaryWeight): on the flat square,
+  // vertex 1 lies on the boundary edges 0-1 (along x: its plane is perpendicular to y) and
+  // 1-2 (along y: perpendicular to x), each of squared length 1, so an in-plane offset
+  // (dx, dy) costs w (dx^2 + dy^2); without the weight it costs nothing (the triangles' own
+  // plane is z = 0). A normal offset dz costs the area of its triangles, 1/2.
+  Square square;
+  std::vector<VertexMetric> metrics;
+  const double inPlane[3] = { 0.3, -0.2, 0 };
+  const double normal[3] = { 0, 0, 0.5 };
+  InitializeVertexMetrics(square.Mesh, square.Positions.data(), nullptr, metrics);
+  CD_CHECK_NEAR(metrics[1].Q.Evaluate(inPlane), 0.0, 1e-12);
+  CD_CHECK_NEAR(metrics[1].Q.Evaluate(normal), 0.5 * 0.25, 1e-7);
+  InitializeVertexMetrics(square.Mesh, square.Positions.data(), nullptr, metrics, 3, 3, 7.0);
+  CD_CHECK_NEAR(metrics[1].Q.Evaluate(inPlane), 7.0 * (0.09 + 0.04), 1e-6);
+  CD_CHECK_NEAR(metrics[1].Q.Evaluate(normal), 0.5 * 0.25, 1e-7);
+  // Vertex 2: edges 1-2 (along y) and 2-3 (along x) too; the diagonal 0-2 is interior.
+  CD_CHECK_NEAR(metrics[2].Q.Evaluate(inPlane), 7.0 * (0.09 + 0.04), 1e-6);
+  // Along one boundary edge only: vertex 1 moving along x stays on edge 0-1's line but
+  // leaves edge 1-2's plane.
+  const double alongX[3] = { 0.4, 0, 0 };
+  CD_CHECK_NEAR(metrics[1].Q.Evaluate(alongX), 7.0 * 0.16, 1e-6);
+}
+
+/// The output points' bounding box in x and y against the input's.
+double BoxShrink(vtkPolyData* input, vtkPolyData* output)
+{
+  double a[6], b[6];
+  input->GetBounds(a);
+  output->GetBounds(b);
+  return std::max({ b[0] - a[0], a[1] - b[1], b[2] - a[2], a[3] - b[3] });
+}
+
+void TestBoundaryWeight()
+{
+  // The open grid's square outline: with boundary planes its corners cannot be cut (that
+  // would move the outline by a whole edge against a weight of 100), for every metric.
+  auto grid = meshes::Grid(60, 50, Pattern::SharpRegions);
+  Decorate(grid);
+  for (int metric :
+       { vtkColorHalfEdgeDecimation::HalfEdgeColor, vtkColorHalfEdgeDecimation::Geometry,
+         vtkColorHalfEdgeDecimation::ColorQuadric })
+  {
+    for (bool placement : { false, true })
+    {
+      if (placement && metric != vtkColorHalfEdgeDecimation::ColorQuadric)
+      {
+        continue;
+      }
+      std::ostringstream label;
+      label << "metric " << metric << (placement ? " placement" : "") << " BoundaryWeight 100";
+      const RunResult r = Decimate(grid, 0.9,
+                                   [&](vtkColorHalfEdgeDecimation* f)
+                                   {
+                                     f->SetErrorMetric(metric);
+                                     f->SetOptimalPlacement(placement);
+                                     f->SetBoundaryWeight(100);
+                                   });
+      CD_CHECK_MSG(std::abs(r.ActualReduction - 0.9) <= 0.01, label.str());
+      const double shrink = BoxShrink(grid, r.Output);
+      std::cout << "  " << label.str() << ": outline moved in by " << shrink << std::endl;
+      // Full collapses place the corners at the optimum of all their planes: within 1e-4
+      // (the grid's edges are 0.03 long), not exactly.
+      CD_CHECK_MSG(shrink < (placement ? 1e-4 : 1e-9),
+                   label.str() << ": outline moved in by " << shrink);
+      if (!placement)
+      {
+        CheckDecimatedMesh(grid, r.Output, OpenSheet(), label.str());
+      }
+    }
+  }
+  // The weight changes the result (and BoundaryWeight 0 is the paper's metric: the default).
+  const RunResult plain = Decimate(grid, 0.9);
+  const RunResult placedPlain =
+    Decimate(grid, 0.9, [](vtkColorHalfEdgeDecimation* f) { ConfigureQuadric(f, true); });
+  std::cout << "  without BoundaryWeight: outline moved in by " << BoxShrink(grid, plain.Output)
+            << " (HalfEdgeColor), " << BoxShrink(grid, placedPlain.Output)
+            << " (ColorQuadric, placement)" << std::endl;
+  CD_CHECK(BoxShrink(grid, placedPlain.Output) > 1e-3);
+  const RunResult weighted =
+    Decimate(grid, 0.9, [](vtkColorHalfEdgeDecimation* f) { f->SetBoundaryWeight(100); });
+  CD_CHECK(OriginalIds(plain.Output) != OriginalIds(weighted.Output));
+  const RunResult zero =
+    Decimate(grid, 0.9, [](vtkColorHalfEdgeDecimation* f) { f->SetBoundaryWeight(0); });
+  CD_CHECK(OriginalIds(plain.Output) == OriginalIds(zero.Output));
+}
+
+//------------------------------------------------------------------------------
 void TestProperties()
 {
   vtkNew<vtkColorHalfEdgeDecimation> f;
@@ -1173,6 +1263,10 @@ void TestProperties()
   CD_CHECK(f->GetColorSpace() == vtkColorHalfEdgeDecimation::RGB);
   CD_CHECK(!f->GetOptimalPlacement());
   CD_CHECK(f->GetColorWeight() == 1.0);
+  CD_CHECK(f->GetBoundaryWeight() == 0.0);
+  f->SetBoundaryWeight(-1);
+  CD_CHECK(f->GetBoundaryWeight() == 0.0);
+  f->SetBoundaryWeight(250);
   f->SetErrorMetricToColorQuadric();
   CD_CHECK(f->GetErrorMetric() == 2);
   CD_CHECK(std::string(f->GetErrorMetricAsString()) == "ColorQuadric");
@@ -1201,6 +1295,7 @@ void TestProperties()
   CD_CHECK(text.find("ColorSpace: CIELab") != std::string::npos);
   CD_CHECK(text.find("OptimalPlacement: On") != std::string::npos);
   CD_CHECK(text.find("ColorWeight: 2.5") != std::string::npos);
+  CD_CHECK(text.find("BoundaryWeight: 250") != std::string::npos);
 }
 
 void TestStateMemory()
@@ -1248,6 +1343,8 @@ int main(int argc, char* argv[])
                         { "PlacementColorArrays", TestPlacementColorArrays },
                         { "PlacementPreserveBoundary", TestPlacementPreserveBoundary },
                         { "InvariantsCIELab", TestInvariantsCIELab },
+                        { "BoundaryQuadric", TestBoundaryQuadric },
+                        { "BoundaryWeight", TestBoundaryWeight },
                         { "Properties", TestProperties },
                         { "StateMemory", TestStateMemory } });
 }

@@ -208,11 +208,21 @@ OneSided SampleDistance(vtkPolyData* fromMesh, vtkPolyData* toMesh, const Option
     {
       used[id] = 1;
     }
+    long long count = 0;
+    for (char u : used)
+    {
+      count += u;
+    }
+    // At most as many vertices as area samples (evenly spread over the ids beyond that).
+    const double stride = std::max(1.0, double(count) / double(n));
     std::vector<double> vertices;
+    double next = 0;
+    long long k = 0;
     for (vtkIdType i = 0; i < from->GetNumberOfPoints(); ++i)
     {
-      if (used[i])
+      if (used[i] && k++ >= next)
       {
+        next += stride;
         double p[3];
         points->GetPoint(i, p);
         vertices.insert(vertices.end(), { p[0], p[1], p[2] });

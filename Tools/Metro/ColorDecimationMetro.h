@@ -9,7 +9,9 @@
  * distance to the closest point of surface B is found (vtkStaticCellLocator). The mean and
  * the root mean square of those distances estimate the area-weighted mean and RMS distance
  * from A to B; the maximum is taken over the samples and over every vertex of A (where the
- * largest distances of a simplified surface usually are). The other side swaps A and B.
+ * largest distances of a simplified surface usually are; when A has more vertices than
+ * samples, as many vertices as samples, evenly spread over the vertex ids). The other side
+ * swaps A and B.
  * The two-sided figures are the larger of the two sides' (Metro's convention for the
  * Hausdorff distance, applied to the mean and RMS too). Every distance is also given as a
  * percentage of the ORIGINAL's bounding-box diagonal.
@@ -35,7 +37,7 @@ struct Options
   long long Samples = 200000;
   /// Seed of the sampling.
   uint64_t Seed = 0x6d6574726fULL;
-  /// Also measure at the sampled surface's vertices (for the maximum only).
+  /// Also measure at the sampled surface's vertices (for the maximum only; at most Samples).
   bool SampleVertices = true;
 };
 

@@ -8,6 +8,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCleanPolyData.h"
 #include "vtkColorHalfEdgeDecimation.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
@@ -61,6 +62,8 @@ const char* Usage =
   "  --boundary-weight W   BoundaryWeight (vtkColorHalfEdgeDecimation)\n"
   "  --preserve-boundary   PreserveBoundary (vtkColorHalfEdgeDecimation)\n"
   "  --attributes          vtk-quadric: AttributeErrorMetric on\n"
+  "  --clean               vtk-quadric: merge coincident points and drop the triangles\n"
+  "                        that become degenerate first (vtkCleanPolyData, not timed)\n"
   "  --json FILE           write the figures as JSON\n";
 
 struct Figures
@@ -213,6 +216,7 @@ int main(int argc, char* argv[])
   std::string method = "half-edge-color", jsonPath;
   double reduction = 0.9, geometryWeight = 1.0, colorWeight = 1.0, boundaryWeight = 0.0;
   bool placement = false, cielab = false, attributes = false, preserveBoundary = false;
+  bool clean = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -271,6 +275,10 @@ int main(int argc, char* argv[])
     {
       attributes = true;
     }
+    else if (arg == "--clean")
+    {
+      clean = true;
+    }
     else if (arg == "--preserve-boundary")
     {
       preserveBoundary = true;
@@ -318,6 +326,18 @@ int main(int argc, char* argv[])
   }
   vtkSmartPointer<vtkPolyData> input = Triangulated(read);
   read = nullptr;
+  if (clean && method == "vtk-quadric")
+  {
+    // vtkQuadricDecimation's attribute quadrics cannot be built on zero-area triangles.
+    vtkNew<vtkCleanPolyData> cleaner;
+    cleaner->SetInputData(input);
+    cleaner->PointMergingOn();
+    cleaner->SetTolerance(0.0);
+    cleaner->ConvertPolysToLinesOff();
+    cleaner->ConvertLinesToPointsOff();
+    cleaner->Update();
+    input = Triangulated(cleaner->GetOutput());
+  }
   Figures figures;
   figures.Method = method;
   figures.InputPoints = input->GetNumberOfPoints();
