@@ -5,6 +5,7 @@
 // vtkColorHalfEdgeDecimation (targets met, manifold kept, no flips, colour arrays written back).
 #include "ColorDecimationTestUtilities.h"
 
+#include "CollapseRules.h"
 #include "ColorMetric.h"
 #include "ColorQuadric.h"
 #include "ColorSpace.h"
@@ -1167,6 +1168,72 @@ void TestInvariantsCIELab()
 }
 
 //------------------------------------------------------------------------------
+void TestRulesNewPosition()
+{
+  // CheckGeometry with a new position for the merged vertex. At p1 it is the half-edge check;
+  // at p0 v0's triangles do not move, and v1's triangles move onto p0: exactly the check of
+  // the reverse half-edge collapse v1 -> v0. On a noisy sphere both verdicts occur.
+  auto sphere = meshes::Icosphere(2, Pattern::Constant);
+  std::vector<int32_t> triangles;
+  for (const Tri& t : GetTriangles(sphere))
+  {
+    for (vtkIdType v : t)
+    {
+      triangles.push_back(static_cast<int32_t>(v));
+    }
+  }
+  const int32_t n = static_cast<int32_t>(sphere->GetNumberOfPoints());
+  std::vector<float> positions(3 * n);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> noise(0.75, 1.25);
+  for (int32_t v = 0; v < n; ++v)
+  {
+    double p[3];
+    sphere->GetPoint(v, p);
+    const double r = noise(random);
+    for (int k = 0; k < 3; ++k)
+    {
+      positions[3 * v + k] = static_cast<float>(r * p[k]);
+    }
+  }
+  HalfEdgeMesh mesh;
+  mesh.Build(n, triangles.data(), static_cast<int32_t>(triangles.size() / 3));
+  CollapseRuleOptions options;
+  options.MinimumNormalCosine = std::cos(30.0 * 3.14159265358979 / 180.0);
+  CollapseRules rules(options);
+  int legal = 0, refused = 0;
+  for (size_t t = 0; t < triangles.size(); t += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int32_t v0 = triangles[t + k], v1 = triangles[t + (k + 1) % 3];
+      const float* f0 = &positions[3 * v0];
+      const float* f1 = &positions[3 * v1];
+      const double p0[3] = { f0[0], f0[1], f0[2] };
+      const double p1[3] = { f1[0], f1[1], f1[2] };
+      const CollapseVerdict forward = rules.CheckGeometry(mesh, positions.data(), v0, v1);
+      const CollapseVerdict backward = rules.CheckGeometry(mesh, positions.data(), v1, v0);
+      CD_CHECK(rules.CheckGeometry(mesh, positions.data(), v0, v1, 3, p1) == forward);
+      CD_CHECK(rules.CheckGeometry(mesh, positions.data(), v0, v1, 3, p0) == backward);
+      CD_CHECK(rules.Check(mesh, positions.data(), v0, v1, 3, p1) ==
+               rules.Check(mesh, positions.data(), v0, v1));
+      (forward == CollapseVerdict::Legal ? legal : refused) += 1;
+      // A point three edge lengths beyond v1 turns some triangle of v1 too far.
+      double far[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        far[c] = p1[c] + 3.0 * (p1[c] - p0[c]);
+      }
+      CD_CHECK(rules.CheckGeometry(mesh, positions.data(), v0, v1, 3, far) !=
+               CollapseVerdict::Legal);
+    }
+  }
+  std::cout << "  " << legal << " legal, " << refused << " refused half-edge collapses"
+            << std::endl;
+  CD_CHECK(legal > 10 && refused > 10);
+}
+
+//------------------------------------------------------------------------------
 void TestBoundaryQuadric()
 {
   // The paper's 10-float quadric with boundary planes (BoundaryWeight): on the flat square,
@@ -1343,6 +1410,7 @@ int main(int argc, char* argv[])
                         { "PlacementColorArrays", TestPlacementColorArrays },
                         { "PlacementPreserveBoundary", TestPlacementPreserveBoundary },
                         { "InvariantsCIELab", TestInvariantsCIELab },
+                        { "RulesNewPosition", TestRulesNewPosition },
                         { "BoundaryQuadric", TestBoundaryQuadric },
                         { "BoundaryWeight", TestBoundaryWeight },
                         { "Properties", TestProperties },
