@@ -26,8 +26,11 @@
 #include "vtkTriangleFilter.h"
 #include "vtkVersion.h"
 
-#if COLORDECIMATION_BENCH_WITH_MESHOPTIMIZER
-#include <meshoptimizer.h>
+#ifndef COLORDECIMATION_WITH_MESHOPTIMIZER
+#define COLORDECIMATION_WITH_MESHOPTIMIZER 0
+#endif
+#if COLORDECIMATION_WITH_MESHOPTIMIZER
+#include "MeshOptimizer.h"
 #endif
 
 #include <algorithm>
@@ -157,7 +160,7 @@ void PrintHelp(std::ostream& os)
         "Times vtkColorHalfEdgeDecimation (HalfEdgeColor and Geometry metrics) against\n"
         "vtkQuadricDecimation with AttributeErrorMetric on (the colour array as scalars) and\n"
         "off"
-#if COLORDECIMATION_BENCH_WITH_MESHOPTIMIZER
+#if COLORDECIMATION_WITH_MESHOPTIMIZER
         ", and meshoptimizer's meshopt_simplify (geometry only, for reference)"
 #endif
         ",\n"
@@ -478,7 +481,7 @@ Single RunQuadric(vtkPolyData* mesh, bool attributes, double reduction)
   return result;
 }
 
-#if COLORDECIMATION_BENCH_WITH_MESHOPTIMIZER
+#if COLORDECIMATION_WITH_MESHOPTIMIZER
 /// The timed part: copying the points to float and the ids to 32 bits (what a VTK user has
 /// to do first) and meshopt_simplify; no vtkPolyData is built from the result.
 Single RunMeshOptimizer(vtkPolyData* mesh, double reduction)
@@ -486,49 +489,18 @@ Single RunMeshOptimizer(vtkPolyData* mesh, double reduction)
   Single result;
   const double cpu = ProcessCpuSeconds();
   const auto start = std::chrono::steady_clock::now();
-  const vtkIdType n = mesh->GetNumberOfPoints();
-  std::vector<float> positions(3 * static_cast<size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    mesh->GetPoint(i, p);
-    positions[3 * i] = static_cast<float>(p[0]);
-    positions[3 * i + 1] = static_cast<float>(p[1]);
-    positions[3 * i + 2] = static_cast<float>(p[2]);
-  }
-  std::vector<unsigned int> indices;
-  indices.reserve(3 * static_cast<size_t>(mesh->GetNumberOfPolys()));
-  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType npts;
-    const vtkIdType* pts;
-    it->GetCurrentCell(npts, pts);
-    if (npts == 3)
-    {
-      indices.insert(indices.end(),
-                     { static_cast<unsigned int>(pts[0]), static_cast<unsigned int>(pts[1]),
-                       static_cast<unsigned int>(pts[2]) });
-    }
-  }
-  const size_t triangles = indices.size() / 3;
-  const size_t target = 3 * static_cast<size_t>(std::llround(triangles * (1.0 - reduction)));
-  std::vector<unsigned int> simplified(indices.size());
-  float error = 0;
-  // target_error 1 = 100 % of the mesh extent: no error bound, stop at the triangle target.
-  const size_t count =
-    meshopt_simplify(simplified.data(), indices.data(), indices.size(), positions.data(),
-                     static_cast<size_t>(n), 3 * sizeof(float), target, 1.0f, 0, &error);
+  const std::vector<unsigned int> kept =
+    colordecimation::tools::SimplifyWithMeshOptimizer(mesh, reduction);
   result.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.CpuSeconds = ProcessCpuSeconds() - cpu;
-  result.OutputTriangles = static_cast<long long>(count / 3);
+  result.OutputTriangles = static_cast<long long>(kept.size() / 3);
   return result;
 }
 #endif
 
 bool MethodAvailable(int method)
 {
-#if COLORDECIMATION_BENCH_WITH_MESHOPTIMIZER
+#if COLORDECIMATION_WITH_MESHOPTIMIZER
   return method >= 0 && method < NumberOfMethods;
 #else
   return method >= 0 && method < MeshOptimizer;
@@ -566,7 +538,7 @@ RunResult Measure(int method, vtkPolyData* mesh, const Options& options, const s
         case QuadricGeometry:
           single = RunQuadric(mesh, false, options.Reduction);
           break;
-#if COLORDECIMATION_BENCH_WITH_MESHOPTIMIZER
+#if COLORDECIMATION_WITH_MESHOPTIMIZER
         case MeshOptimizer:
           single = RunMeshOptimizer(mesh, options.Reduction);
           break;
@@ -843,9 +815,8 @@ std::string Report(const Options& options, const std::vector<CaseResult>& cases,
 #elif defined(__GNUC__)
      << "; GCC " << __GNUC__ << "." << __GNUC_MINOR__
 #endif
-#if COLORDECIMATION_BENCH_WITH_MESHOPTIMIZER
-     << "; meshoptimizer " << MESHOPTIMIZER_VERSION / 1000 << "."
-     << (MESHOPTIMIZER_VERSION % 1000) / 10
+#if COLORDECIMATION_WITH_MESHOPTIMIZER
+     << "; meshoptimizer " << colordecimation::tools::MeshOptimizerVersion()
 #else
      << "; meshoptimizer not built in"
 #endif

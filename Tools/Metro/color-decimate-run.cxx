@@ -22,8 +22,11 @@
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 
-#if COLORDECIMATION_RUN_WITH_MESHOPTIMIZER
-#include <meshoptimizer.h>
+#ifndef COLORDECIMATION_WITH_MESHOPTIMIZER
+#define COLORDECIMATION_WITH_MESHOPTIMIZER 0
+#endif
+#if COLORDECIMATION_WITH_MESHOPTIMIZER
+#include "MeshOptimizer.h"
 #endif
 
 #include <chrono>
@@ -112,78 +115,6 @@ void TransferColors(vtkPolyData* source, vtkPolyData* target)
   }
   target->GetPointData()->SetScalars(out);
 }
-
-#if COLORDECIMATION_RUN_WITH_MESHOPTIMIZER
-vtkSmartPointer<vtkPolyData> MeshOptimizer(vtkPolyData* mesh, double reduction)
-{
-  const vtkIdType n = mesh->GetNumberOfPoints();
-  std::vector<float> positions(3 * static_cast<size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    mesh->GetPoint(i, p);
-    for (int k = 0; k < 3; ++k)
-    {
-      positions[3 * i + k] = static_cast<float>(p[k]);
-    }
-  }
-  std::vector<unsigned int> indices;
-  indices.reserve(3 * static_cast<size_t>(mesh->GetNumberOfPolys()));
-  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType npts;
-    const vtkIdType* pts;
-    it->GetCurrentCell(npts, pts);
-    if (npts == 3)
-    {
-      indices.insert(indices.end(),
-                     { static_cast<unsigned int>(pts[0]), static_cast<unsigned int>(pts[1]),
-                       static_cast<unsigned int>(pts[2]) });
-    }
-  }
-  const size_t triangles = indices.size() / 3;
-  const size_t target = 3 * static_cast<size_t>(std::llround(triangles * (1.0 - reduction)));
-  std::vector<unsigned int> simplified(indices.size());
-  float error = 0;
-  // target_error 1 (the whole extent): no error bound, stop at the triangle target.
-  const size_t count =
-    meshopt_simplify(simplified.data(), indices.data(), indices.size(), positions.data(),
-                     static_cast<size_t>(n), 3 * sizeof(float), target, 1.0f, 0, &error);
-
-  // The used input vertices, with their coordinates and every point array.
-  std::vector<vtkIdType> newId(n, -1);
-  vtkNew<vtkIdList> source;
-  vtkNew<vtkIdList> destination;
-  for (size_t k = 0; k < count; ++k)
-  {
-    const unsigned int v = simplified[k];
-    if (newId[v] < 0)
-    {
-      newId[v] = source->GetNumberOfIds();
-      destination->InsertNextId(newId[v]);
-      source->InsertNextId(v);
-    }
-  }
-  auto output = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataType(mesh->GetPoints()->GetDataType());
-  points->SetNumberOfPoints(source->GetNumberOfIds());
-  mesh->GetPoints()->GetData()->GetTuples(source, points->GetData());
-  output->SetPoints(points);
-  vtkNew<vtkCellArray> polys;
-  for (size_t k = 0; k + 2 < count; k += 3)
-  {
-    const vtkIdType tri[3] = { newId[simplified[k]], newId[simplified[k + 1]],
-                               newId[simplified[k + 2]] };
-    polys->InsertNextCell(3, tri);
-  }
-  output->SetPolys(polys);
-  output->GetPointData()->CopyAllocate(mesh->GetPointData(), source->GetNumberOfIds());
-  output->GetPointData()->CopyData(mesh->GetPointData(), source, destination);
-  return output;
-}
-#endif
 
 std::string Json(const Figures& f)
 {
@@ -309,7 +240,7 @@ int main(int argc, char* argv[])
     std::cerr << "color-decimate-run: unknown method '" << method << "'\n";
     return 2;
   }
-#if !COLORDECIMATION_RUN_WITH_MESHOPTIMIZER
+#if !COLORDECIMATION_WITH_MESHOPTIMIZER
   if (method == "meshopt")
   {
     std::cerr << "color-decimate-run: built without meshoptimizer\n";
@@ -392,10 +323,11 @@ int main(int argc, char* argv[])
       figures.MetricBytesPerVertex = 8.0 * (11 + 4 * m);
       figures.MetricBytesNote = std::to_string(11 + 4 * m) + " doubles (sparse quadric)";
     }
-#if COLORDECIMATION_RUN_WITH_MESHOPTIMIZER
+#if COLORDECIMATION_WITH_MESHOPTIMIZER
     else
     {
-      output = MeshOptimizer(input, reduction);
+      output = colordecimation::tools::MakeMeshOptimizerOutput(
+        input, colordecimation::tools::SimplifyWithMeshOptimizer(input, reduction));
       // meshopt_simplify keeps a quadric of 11 floats per vertex (and other per-vertex
       // tables: remap, kind, adjacency).
       figures.MetricBytesPerVertex = 44;
