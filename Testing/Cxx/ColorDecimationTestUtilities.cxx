@@ -782,6 +782,27 @@ int CheckDecimatedMesh(vtkPolyData* input, vtkPolyData* output, const Expectatio
 }
 
 //------------------------------------------------------------------------------
+Expectation ClosedSurface(long long euler, void (*normal)(const double*, double*))
+{
+  Expectation e;
+  e.Closed = true;
+  e.Euler = euler;
+  e.Normal = normal;
+  return e;
+}
+
+//------------------------------------------------------------------------------
+Expectation OpenSheet()
+{
+  Expectation e;
+  e.Closed = false;
+  e.Euler = 1;
+  e.BoundaryLoops = 1;
+  e.Normal = UpNormal;
+  return e;
+}
+
+//------------------------------------------------------------------------------
 void Decorate(vtkPolyData* mesh)
 {
   const vtkIdType n = mesh->GetNumberOfPoints();

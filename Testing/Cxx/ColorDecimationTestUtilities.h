@@ -204,6 +204,11 @@ struct Expectation
   bool Decorated = true; ///< the input went through Decorate(): check cell and field data
 };
 
+/// What a closed surface of Euler characteristic `euler` must keep (outward normal given).
+Expectation ClosedSurface(long long euler, void (*normal)(const double*, double*));
+/// What an open sheet with one boundary loop (the generated Grid, normal +z) must keep.
+Expectation OpenSheet();
+
 /**
  * Check every invariant of a decimated mesh: triangles only, manifold edges and vertices,
  * consistent orientation, Euler characteristic, boundary loops, no degenerate or flipped

@@ -60,15 +60,6 @@ void CheckInvariants(vtkPolyData* mesh, const Expectation& expected, const std::
   }
 }
 
-Expectation Closed(long long euler, void (*normal)(const double*, double*))
-{
-  Expectation e;
-  e.Closed = true;
-  e.Euler = euler;
-  e.Normal = normal;
-  return e;
-}
-
 /// The same without the flip check, for tests about something else (the Invariants tests
 /// check flips).
 Expectation WithoutFlipCheck(Expectation e)
@@ -77,25 +68,15 @@ Expectation WithoutFlipCheck(Expectation e)
   return e;
 }
 
-Expectation OpenDisk()
-{
-  Expectation e;
-  e.Closed = false;
-  e.Euler = 1;
-  e.BoundaryLoops = 1;
-  e.Normal = UpNormal;
-  return e;
-}
-
 void TestInvariantsIcosphereSharp()
 {
-  CheckInvariants(meshes::Icosphere(5, Pattern::SharpRegions), Closed(2, SphereNormal),
+  CheckInvariants(meshes::Icosphere(5, Pattern::SharpRegions), ClosedSurface(2, SphereNormal),
                   "Icosphere(5)");
 }
 
 void TestInvariantsUVSphereSmooth()
 {
-  CheckInvariants(meshes::UVSphere(100, Pattern::SmoothGradient), Closed(2, SphereNormal),
+  CheckInvariants(meshes::UVSphere(100, Pattern::SmoothGradient), ClosedSurface(2, SphereNormal),
                   "UVSphere(100)");
 }
 
@@ -103,23 +84,23 @@ void TestInvariantsTorusSharp()
 {
   // Float points: their type and bits must be kept too.
   auto torus = WithFloatPoints(meshes::Torus(150, 60, Pattern::SharpRegions));
-  CheckInvariants(torus, Closed(0, TorusNormal), "Torus(150,60) float");
+  CheckInvariants(torus, ClosedSurface(0, TorusNormal), "Torus(150,60) float");
 }
 
 void TestInvariantsTorusFineDetail()
 {
-  CheckInvariants(meshes::Torus(120, 48, Pattern::FineDetail), Closed(0, TorusNormal),
+  CheckInvariants(meshes::Torus(120, 48, Pattern::FineDetail), ClosedSurface(0, TorusNormal),
                   "Torus(120,48)");
 }
 
 void TestInvariantsGridSmooth()
 {
-  CheckInvariants(meshes::Grid(80, 60, Pattern::SmoothGradient), OpenDisk(), "Grid(80,60)");
+  CheckInvariants(meshes::Grid(80, 60, Pattern::SmoothGradient), OpenSheet(), "Grid(80,60)");
 }
 
 void TestInvariantsGridSharp()
 {
-  CheckInvariants(meshes::Grid(90, 70, Pattern::SharpRegions), OpenDisk(), "Grid(90,70)");
+  CheckInvariants(meshes::Grid(90, 70, Pattern::SharpRegions), OpenSheet(), "Grid(90,70)");
 }
 
 //------------------------------------------------------------------------------
@@ -220,9 +201,10 @@ void TestTargetReductionOne()
     const char* Name;
   };
   const Case cases[] = {
-    { meshes::Icosphere(3, Pattern::SharpRegions), Closed(2, SphereNormal), "Icosphere(3)" },
-    { meshes::Torus(40, 16, Pattern::SmoothGradient), Closed(0, TorusNormal), "Torus(40,16)" },
-    { meshes::Grid(24, 18, Pattern::SharpRegions), OpenDisk(), "Grid(24,18)" }
+    { meshes::Icosphere(3, Pattern::SharpRegions), ClosedSurface(2, SphereNormal), "Icosphere(3)" },
+    { meshes::Torus(40, 16, Pattern::SmoothGradient), ClosedSurface(0, TorusNormal),
+      "Torus(40,16)" },
+    { meshes::Grid(24, 18, Pattern::SharpRegions), OpenSheet(), "Grid(24,18)" }
   };
   for (const Case& c : cases)
   {
@@ -271,7 +253,7 @@ void TestPreserveBoundary()
     }
     CD_CHECK_MSG(missing == 0, missing << " boundary points removed");
     CD_CHECK(BoundaryEdges(GetOriginalTriangles(kept.Output)) == boundary);
-    CheckDecimatedMesh(grid, kept.Output, WithoutFlipCheck(OpenDisk()), "preserved boundary");
+    CheckDecimatedMesh(grid, kept.Output, WithoutFlipCheck(OpenSheet()), "preserved boundary");
   }
 
   // Without the option the boundary is simplified too (along itself).
@@ -284,7 +266,7 @@ void TestPreserveBoundary()
   }
   std::cout << "  free boundary: " << removed << " of 200 boundary points removed" << std::endl;
   CD_CHECK(removed > 0);
-  CheckDecimatedMesh(grid, free.Output, WithoutFlipCheck(OpenDisk()), "free boundary");
+  CheckDecimatedMesh(grid, free.Output, WithoutFlipCheck(OpenSheet()), "free boundary");
 }
 
 //------------------------------------------------------------------------------
@@ -363,7 +345,7 @@ void TestAbort()
     CD_CHECK(r.Output->GetNumberOfPolys() > complete.Output->GetNumberOfPolys());
     CD_CHECK(r.Output->GetNumberOfPolys() > 0);
     // What was done is a valid mesh.
-    CheckDecimatedMesh(mesh, r.Output, WithoutFlipCheck(Closed(2, SphereNormal)), "aborted");
+    CheckDecimatedMesh(mesh, r.Output, WithoutFlipCheck(ClosedSurface(2, SphereNormal)), "aborted");
     CD_CHECK(r.Collapses == mesh->GetNumberOfPoints() - r.Output->GetNumberOfPoints());
   }
 }

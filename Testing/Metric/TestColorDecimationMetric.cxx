@@ -814,25 +814,6 @@ void ConfigureQuadric(vtkColorHalfEdgeDecimation* f, bool placement)
   f->SetOptimalPlacement(placement);
 }
 
-Expectation ClosedSurface(long long euler, void (*normal)(const double*, double*))
-{
-  Expectation e;
-  e.Closed = true;
-  e.Euler = euler;
-  e.Normal = normal;
-  return e;
-}
-
-Expectation OpenSheet()
-{
-  Expectation e;
-  e.Closed = false;
-  e.Euler = 1;
-  e.BoundaryLoops = 1;
-  e.Normal = UpNormal;
-  return e;
-}
-
 void CheckHalfEdgeInvariants(vtkPolyData* mesh, const Expectation& expected,
                              const std::string& name,
                              const std::function<void(vtkColorHalfEdgeDecimation*)>& configure)
