@@ -370,21 +370,6 @@ bool FileExists(const std::string& path)
   return ::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
 }
 
-std::string Thousands(long long value)
-{
-  std::string digits = std::to_string(value < 0 ? -value : value);
-  std::string out;
-  for (size_t i = 0; i < digits.size(); ++i)
-  {
-    if (i > 0 && (digits.size() - i) % 3 == 0)
-    {
-      out += ',';
-    }
-    out += digits[i];
-  }
-  return value < 0 ? "-" + out : out;
-}
-
 std::string Format(const char* format, double value)
 {
   char buffer[64];
@@ -407,7 +392,7 @@ std::string SizeLabel(long long n)
   {
     return Format("%.0fk", n / 1e3);
   }
-  return Thousands(n);
+  return WithThousands(n);
 }
 
 double Median(std::vector<double> values)
@@ -632,8 +617,9 @@ std::string CaseTable(const CaseResult& c, double reduction)
 {
   std::ostringstream os;
   os << "### " << c.Name << "\n\n"
-     << c.Description << ": " << Thousands(c.Points) << " points, " << Thousands(c.Triangles)
-     << " triangles; target reduction " << Format("%g", reduction) << ".\n\n";
+     << c.Description << ": " << WithThousands(c.Points) << " points, "
+     << WithThousands(c.Triangles) << " triangles; target reduction " << Format("%g", reduction)
+     << ".\n\n";
   os << "| method | seconds | CPU seconds | output triangles | reduction | vtkQD attr on ÷ this | "
         "vtkQD attr off ÷ this | peak memory (MiB) | decimation state (MiB) |\n"
      << "|---|--:|--:|--:|--:|--:|--:|--:|--:|\n";
@@ -651,7 +637,7 @@ std::string CaseTable(const CaseResult& c, double reduction)
       continue;
     }
     os << Format("%.3f", r.Seconds) << " | " << Format("%.3f", r.CpuSeconds) << " | "
-       << Thousands(r.OutputTriangles) << " | "
+       << WithThousands(r.OutputTriangles) << " | "
        << Format("%.4f", c.Triangles ? 1.0 - double(r.OutputTriangles) / c.Triangles : 0.0) << " | "
        << Ratio(c.Runs[QuadricAttributes], r) << " | " << Ratio(c.Runs[QuadricGeometry], r) << " | "
        << MiB(r.PeakBytes) << (r.PeakReset ? "" : " (process peak)") << " | "
@@ -663,7 +649,7 @@ std::string CaseTable(const CaseResult& c, double reduction)
     if (r.Ran && !r.Error.empty())
     {
       os << "\n- " << MethodName(m) << ": VTK reported the error \"" << r.Error
-         << "\"; it returned " << Thousands(r.OutputTriangles) << " triangles after "
+         << "\"; it returned " << WithThousands(r.OutputTriangles) << " triangles after "
          << Format("%.3f", r.Seconds)
          << " s. Its time is not a valid reference, so no ratio to it is given.\n";
     }
@@ -689,7 +675,7 @@ std::string SweepTable(const std::vector<CaseResult>& sweep)
     {
       const RunResult& r = c.Runs[m];
       const double n = static_cast<double>(std::max<long long>(1, c.Triangles));
-      os << "| " << MethodShortName(m) << " | " << Thousands(c.Triangles) << " | ";
+      os << "| " << MethodShortName(m) << " | " << WithThousands(c.Triangles) << " | ";
       if (!r.Ran)
       {
         os << r.Skipped << " | | | | | | |\n";
@@ -697,8 +683,8 @@ std::string SweepTable(const std::vector<CaseResult>& sweep)
       }
       os << Format("%.3f", r.Seconds) << (r.Error.empty() ? "" : " (VTK error)") << " | "
          << Format("%.3f", r.CpuSeconds) << " | " << Format("%.0f", 1e9 * r.Seconds / n) << " | "
-         << Format("%.0f", 1e9 * r.CpuSeconds / n) << " | " << Thousands(r.OutputTriangles) << " | "
-         << MiB(r.PeakBytes) << " | "
+         << Format("%.0f", 1e9 * r.CpuSeconds / n) << " | " << WithThousands(r.OutputTriangles)
+         << " | " << MiB(r.PeakBytes) << " | "
          << (r.PeakBytes >= 0 ? Format("%.0f", r.PeakBytes / n) : std::string("?")) << " |\n";
     }
   }
@@ -878,7 +864,7 @@ std::string Report(const Options& options, const std::vector<CaseResult>& cases,
     }
     else if (options.QuadricMax > 0)
     {
-      os << "only up to " << Thousands(options.QuadricMax) << " input triangles.\n\n";
+      os << "only up to " << WithThousands(options.QuadricMax) << " input triangles.\n\n";
     }
     else
     {

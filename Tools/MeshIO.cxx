@@ -48,21 +48,6 @@ std::string Lower(std::string text)
   return text;
 }
 
-std::string WithThousands(long long value)
-{
-  std::string digits = std::to_string(value < 0 ? -value : value);
-  std::string out;
-  for (size_t i = 0; i < digits.size(); ++i)
-  {
-    if (i > 0 && (digits.size() - i) % 3 == 0)
-    {
-      out += ',';
-    }
-    out += digits[i];
-  }
-  return value < 0 ? "-" + out : out;
-}
-
 bool ParsePattern(const std::string& name, Pattern& pattern, std::string& label)
 {
   const std::string n = Lower(name);
@@ -218,6 +203,21 @@ vtkSmartPointer<vtkPolyData> AsPolyData(vtkDataObject* data, std::string& error)
 #endif
 }
 } // namespace
+
+std::string WithThousands(long long value)
+{
+  std::string digits = std::to_string(value < 0 ? -value : value);
+  std::string out;
+  for (size_t i = 0; i < digits.size(); ++i)
+  {
+    if (i > 0 && (digits.size() - i) % 3 == 0)
+    {
+      out += ',';
+    }
+    out += digits[i];
+  }
+  return value < 0 ? "-" + out : out;
+}
 
 std::string Extension(const std::string& path)
 {

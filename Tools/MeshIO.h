@@ -32,6 +32,9 @@ namespace tools
 /// The extension of `path`, lower case, with its dot (".ply"), or "" when none.
 std::string Extension(const std::string& path);
 
+/// 1234567 as "1,234,567".
+std::string WithThousands(long long value);
+
 /// True for "--demo", "demo" and "demo:..." inputs.
 bool IsDemoSpec(const std::string& input);
 
