@@ -157,6 +157,7 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
   // 4. Initial costs.
   this->Heap.Reset(n);
   this->Best.assign(n, -1);
+  this->Bounded.assign(n, 0);
   for (int32_t v = 0; v < n; ++v)
   {
     this->Update(v);
@@ -173,6 +174,22 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
     if (v1 < 0)
     {
       this->Heap.Pop(); // no collapse left for v0 (removed lazily)
+      continue;
+    }
+    if (this->Bounded[v0])
+    {
+      // Its key was a lower bound (a high-valence vertex): cost it exactly, and back it goes.
+      this->Bounded[v0] = 0;
+      const Choice exact = this->Evaluate(v0, false);
+      this->Best[v0] = exact.Target;
+      if (exact.Target < 0)
+      {
+        this->Heap.Remove(v0);
+      }
+      else
+      {
+        this->Heap.Set(v0, exact.Cost);
+      }
       continue;
     }
     // A full collapse (ColorQuadric with OptimalPlacement) puts v1 at the placement y.
@@ -276,7 +293,7 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
   stats.MetricBytesPerVertex = this->QuadricMetric ? sizeof(ColorQuadric) : sizeof(VertexMetric);
   stats.StateBytes = 24 * size_t(input.NumberOfTriangles) +
     size_t(n) *
-      (5 + stats.MetricBytesPerVertex + sizeof(HotVertex) + 16 + 4 + (this->Placement ? 1 : 0));
+      (5 + stats.MetricBytesPerVertex + sizeof(HotVertex) + 16 + 4 + 1 + (this->Placement ? 1 : 0));
   return stats;
 }
 
@@ -286,8 +303,9 @@ void Decimator::Update(int32_t v)
   {
     return;
   }
-  const Choice best = this->Evaluate(v, false);
+  const Choice best = this->Evaluate(v, false, true);
   this->Best[v] = best.Target;
+  this->Bounded[v] = best.Bound ? 1 : 0;
   if (best.Target < 0)
   {
     return; // left in the heap, if it is there, and dropped when it comes to the top
@@ -320,7 +338,7 @@ void Decimator::GatherRing(int32_t v0)
 }
 
 COLORDECIMATION_VECTOR_CLONES
-void Decimator::CostRing(int32_t v0)
+void Decimator::CostRing(int32_t v0, bool withColorError)
 {
   Ring& ring = this->CurrentRing;
   const int n = ring.PaddedSize();
@@ -332,10 +350,14 @@ void Decimator::CostRing(int32_t v0)
   const HotVertex& hot0 = this->Hot[v0];
   const double p0[3] = { hot0.P[0], hot0.P[1], hot0.P[2] };
   const bool paperMetric = this->Options.Metric == ErrorMetric::HalfEdgeColor;
-  if (paperMetric)
+  if (paperMetric && withColorError)
   {
     const double c0[3] = { hot0.C[0], hot0.C[1], hot0.C[2] };
     CollapseColorErrors(p0, c0, ring, costs);
+  }
+  else if (paperMetric)
+  {
+    std::fill(costs, costs + n, 0.0); // C >= 0: (1 + Q)(1 + I) bounds the cost from below
   }
   // (Q(v0) + Q(j))(pj): Q(v0) is centred at p0, Q(j) at pj (so it contributes its constant).
   const Quadric& q0 = this->Metrics[v0].Q;
@@ -358,7 +380,7 @@ void Decimator::CostRing(int32_t v0)
   }
 }
 
-Decimator::Choice Decimator::Evaluate(int32_t v0, bool exact)
+Decimator::Choice Decimator::Evaluate(int32_t v0, bool exact, bool allowBound)
 {
   Choice choice;
   if (!this->Mesh.IsCollapsible(v0) ||
@@ -375,7 +397,10 @@ Decimator::Choice Decimator::Evaluate(int32_t v0, bool exact)
   {
     __builtin_prefetch(&this->Metrics[v0]);
     this->GatherRing(v0);
-    this->CostRing(v0);
+    choice.Bound = allowBound && !exact && this->Options.BoundHighValence &&
+      this->CurrentRing.Size > LargeRing && this->Options.Metric == ErrorMetric::HalfEdgeColor &&
+      this->UseColor;
+    this->CostRing(v0, !choice.Bound);
   }
   const Ring& ring = this->CurrentRing;
   if (!exact)

@@ -23,6 +23,11 @@
  *
  * Vertices with no collapse left stay in the heap and are dropped when they reach the top.
  *
+ * High-valence vertices (more than LargeRing neighbours, such as the poles of a latitude-
+ * longitude sphere) are keyed by a cheap lower bound of their cost, (1 + Q)(1 + I), and get
+ * the exact cost, whose colour error is quadratic in the valence, only when they reach the
+ * top of the heap: by the same argument the collapse order is unchanged.
+ *
  * Data layout: what costing reads of a neighbour (position, colour, the constant term of its
  * quadric) sits in one 32-byte record per vertex, so a neighbour costs one cache line.
  *
@@ -84,6 +89,9 @@ struct DecimatorOptions
    * mean edge length 1 for HalfEdgeColor and Geometry, the unit cube for ColorQuadric).
    */
   double BoundaryWeight = 0.0;
+  /// Key vertices of more than LargeRing neighbours by a lower bound until they reach the top
+  /// of the heap (same result, less work; off only to test that claim).
+  bool BoundHighValence = true;
 };
 
 struct DecimatorInput
@@ -153,11 +161,17 @@ private:
   {
     int32_t Target = -1;
     double Cost = 0;
+    bool Bound = false; ///< Cost is only a lower bound (see Evaluate)
   };
-  /// Cheapest admissible (exact = false) or legal (exact = true) collapse of v0.
-  Choice Evaluate(int32_t v0, bool exact);
+  /**
+   * Cheapest admissible (exact = false) or legal (exact = true) collapse of v0. With
+   * allowBound, a vertex of more than LargeRing neighbours under the paper's metric gets the
+   * lower bound (1 + Q)(1 + I) instead (C >= 0): O(k) instead of the O(k^2) colour error.
+   */
+  Choice Evaluate(int32_t v0, bool exact, bool allowBound = false);
+  static constexpr int LargeRing = 16;
   void GatherRing(int32_t v0);
-  void CostRing(int32_t v0);
+  void CostRing(int32_t v0, bool withColorError = true);
   void Update(int32_t v);
   /// ColorQuadric: cost of every ring member (and, with OptimalPlacement, its placement).
   void CostRingColorQuadric(int32_t v0);
@@ -201,7 +215,8 @@ private:
   std::vector<VertexMetric> Metrics;
   std::vector<int32_t> FormerNeighbors;
   VertexHeap Heap;
-  std::vector<int32_t> Best; ///< vertex -> its chosen target, -1 if none
+  std::vector<int32_t> Best;    ///< vertex -> its chosen target, -1 if none
+  std::vector<uint8_t> Bounded; ///< vertex -> its heap key is a lower bound, to be made exact
   Ring CurrentRing;
   std::vector<double> Costs;
   std::vector<int> Order;

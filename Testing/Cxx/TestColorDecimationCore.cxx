@@ -10,6 +10,8 @@
 #include "VertexHeap.h"
 
 #include "ColorDecimationMeshes.h"
+#include "vtkDataArray.h"
+#include "vtkPointData.h"
 
 #include <algorithm>
 #include <cmath>
@@ -363,6 +365,57 @@ void TestCollapseCostFrame()
 }
 
 //------------------------------------------------------------------------------
+/// Keying high-valence vertices by a lower bound (Decimator::LargeRing) must not change the
+/// result: a UV sphere's poles have valence 120 here.
+void TestHighValenceBound()
+{
+  auto mesh = meshes::UVSphere(120, meshes::Pattern::SharpRegions);
+  const int32_t n = static_cast<int32_t>(mesh->GetNumberOfPoints());
+  std::vector<double> points(3 * static_cast<size_t>(n));
+  std::vector<float> colors(3 * static_cast<size_t>(n));
+  vtkDataArray* rgb = mesh->GetPointData()->GetScalars();
+  for (int32_t i = 0; i < n; ++i)
+  {
+    mesh->GetPoint(i, &points[3 * i]);
+    for (int k = 0; k < 3; ++k)
+    {
+      colors[3 * i + k] = static_cast<float>(rgb->GetComponent(i, k) / 255.0);
+    }
+  }
+  std::vector<int32_t> triangles;
+  for (const Tri& t : GetTriangles(mesh))
+  {
+    triangles.insert(triangles.end(), { int32_t(t[0]), int32_t(t[1]), int32_t(t[2]) });
+  }
+  DecimatorInput input;
+  input.NumberOfPoints = n;
+  input.Points = points.data();
+  input.Colors = colors.data();
+  input.NumberOfTriangles = static_cast<int32_t>(triangles.size() / 3);
+  input.Triangles = triangles.data();
+
+  std::vector<std::vector<int32_t>> faces;
+  for (bool bound : { true, false })
+  {
+    DecimatorOptions options;
+    options.BoundHighValence = bound;
+    Decimator decimator(options);
+    const DecimatorStatistics stats = decimator.Run(input, input.NumberOfTriangles / 10);
+    CD_CHECK(stats.OutputTriangles <= input.NumberOfTriangles / 10);
+    std::vector<int32_t> live;
+    const HalfEdgeMesh& m = decimator.GetMesh();
+    for (int32_t f = 0; f < m.GetNumberOfFaceSlots(); ++f)
+    {
+      if (m.IsFaceAlive(f))
+      {
+        live.insert(live.end(), { f, m.Origin(3 * f), m.Origin(3 * f + 1), m.Origin(3 * f + 2) });
+      }
+    }
+    faces.push_back(live);
+  }
+  CD_CHECK_MSG(faces[0] == faces[1], "the bounded and the exact keys give different meshes");
+}
+
 void TestVertexHeap()
 {
   const int32_t n = 400;
@@ -963,6 +1016,7 @@ int main(int argc, char* argv[])
                         { "CollapseCost", TestCollapseCost },
                         { "CollapseCostFrame", TestCollapseCostFrame },
                         { "VertexHeap", TestVertexHeap },
+                        { "HighValenceBound", TestHighValenceBound },
                         { "HalfEdgeBuildClosed", TestHalfEdgeBuildClosed },
                         { "HalfEdgeBuildOpen", TestHalfEdgeBuildOpen },
                         { "HalfEdgeNonManifold", TestHalfEdgeNonManifold },
