@@ -21,7 +21,6 @@
 #include "vtkColorHalfEdgeDecimation.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
-#include "vtkQuadricDecimation.h"
 
 #include <cstdlib>
 #include <cstring>
@@ -85,25 +84,7 @@ vtkSmartPointer<vtkPolyData> Simplify(vtkPolyData* input, const std::string& met
     output = filter->GetOutput();
     return output;
   }
-  vtkNew<vtkQuadricDecimation> filter;
-  filter->SetInputData(input);
-  filter->SetTargetReduction(r);
-  if (method == "quadric-attr")
-  {
-    filter->AttributeErrorMetricOn();
-    filter->ScalarsAttributeOn();
-    filter->NormalsAttributeOff();
-    filter->TCoordsAttributeOff();
-    filter->TensorsAttributeOff();
-    filter->VectorsAttributeOff();
-  }
-  filter->Update();
-  output = filter->GetOutput();
-  if (method == "quadric")
-  {
-    fid::TransferNearestColors(input, output);
-  }
-  return output;
+  return fid::SimplifyWithQuadric(input, r, method == "quadric-attr");
 }
 
 } // namespace

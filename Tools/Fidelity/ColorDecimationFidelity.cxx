@@ -17,6 +17,7 @@
 #include "vtkPointLocator.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
+#include "vtkQuadricDecimation.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSTLReader.h"
@@ -806,6 +807,31 @@ bool WriteSnapshot(vtkPolyData* original, vtkPolyData* simplified, const std::st
     return fail("could not write " + path);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> SimplifyWithQuadric(vtkPolyData* input, double reduction,
+                                                 bool attributes, const std::string& colorArray)
+{
+  vtkNew<vtkQuadricDecimation> filter;
+  filter->SetInputData(input);
+  filter->SetTargetReduction(reduction);
+  if (attributes)
+  {
+    filter->AttributeErrorMetricOn();
+    filter->ScalarsAttributeOn();
+    filter->NormalsAttributeOff();
+    filter->TCoordsAttributeOff();
+    filter->TensorsAttributeOff();
+    filter->VectorsAttributeOff();
+  }
+  filter->Update();
+  vtkSmartPointer<vtkPolyData> output = filter->GetOutput();
+  if (!attributes)
+  {
+    TransferNearestColors(input, output, colorArray);
+  }
+  return output;
 }
 
 bool TransferNearestColors(vtkPolyData* source, vtkPolyData* target, const std::string& colorArray)

@@ -177,6 +177,15 @@ bool TransferNearestColors(vtkPolyData* source, vtkPolyData* target,
                            const std::string& colorArray = std::string());
 
 /**
+ * vtkQuadricDecimation as the peer of the comparisons, to `reduction`: with `attributes`, the
+ * colour array as its only attribute (it interpolates colours); without, geometry only, then
+ * the nearest original point's colour (TransferNearestColors).
+ */
+vtkSmartPointer<vtkPolyData> SimplifyWithQuadric(vtkPolyData* input, double reduction,
+                                                 bool attributes,
+                                                 const std::string& colorArray = std::string());
+
+/**
  * Reads a mesh from .ply, .vtp, .vtk (legacy polydata or unstructured grid), .obj or .stl
  * (by extension, case-insensitive); the surface is triangulated. Returns null and says
  * why in `error` on failure.

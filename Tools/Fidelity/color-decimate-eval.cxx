@@ -8,7 +8,6 @@
 #include "vtkPLYWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkQuadricDecimation.h"
 #include "vtkTimerLog.h"
 #include "vtkXMLPolyDataWriter.h"
 
@@ -272,24 +271,8 @@ int main(int argc, char* argv[])
     }
     else
     {
-      vtkNew<vtkQuadricDecimation> filter;
-      filter->SetInputData(original);
-      filter->SetTargetReduction(reduction);
-      if (method == "quadric-attr")
-      {
-        filter->AttributeErrorMetricOn();
-        filter->ScalarsAttributeOn();
-        filter->NormalsAttributeOff();
-        filter->TCoordsAttributeOff();
-        filter->TensorsAttributeOff();
-        filter->VectorsAttributeOff();
-      }
-      filter->Update();
-      simplified = filter->GetOutput();
-      if (method == "quadric")
-      {
-        fid::TransferNearestColors(original, simplified, options.ColorArray);
-      }
+      simplified =
+        fid::SimplifyWithQuadric(original, reduction, method == "quadric-attr", options.ColorArray);
     }
     timer->StopTimer();
     const double in = static_cast<double>(original->GetNumberOfPolys());
