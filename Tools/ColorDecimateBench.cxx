@@ -10,6 +10,7 @@
 #include "ColorDecimationMeshes.h"
 #include "MeshIO.h"
 #include "ProcessMemory.h"
+#include "QuadricPeer.h"
 
 #include "vtkColorHalfEdgeDecimation.h"
 
@@ -448,12 +449,7 @@ Single RunQuadric(vtkPolyData* mesh, bool attributes, double reduction)
   vtkNew<vtkQuadricDecimation> filter;
   filter->SetInputData(mesh);
   filter->SetTargetReduction(reduction);
-  filter->SetAttributeErrorMetric(attributes);
-  filter->SetScalarsAttribute(attributes);
-  filter->SetVectorsAttribute(false);
-  filter->SetNormalsAttribute(false);
-  filter->SetTCoordsAttribute(false);
-  filter->SetTensorsAttribute(false);
+  ConfigureQuadricPeer(filter, attributes);
   const double cpu = ProcessCpuSeconds();
   const auto start = std::chrono::steady_clock::now();
   filter->Update();

@@ -1,5 +1,7 @@
 #include "ColorDecimationFidelity.h"
 
+#include "QuadricPeer.h"
+
 #include "vtkActor.h"
 #include "vtkActor2D.h"
 #include "vtkCamera.h"
@@ -816,15 +818,7 @@ vtkSmartPointer<vtkPolyData> SimplifyWithQuadric(vtkPolyData* input, double redu
   vtkNew<vtkQuadricDecimation> filter;
   filter->SetInputData(input);
   filter->SetTargetReduction(reduction);
-  if (attributes)
-  {
-    filter->AttributeErrorMetricOn();
-    filter->ScalarsAttributeOn();
-    filter->NormalsAttributeOff();
-    filter->TCoordsAttributeOff();
-    filter->TensorsAttributeOff();
-    filter->VectorsAttributeOff();
-  }
+  tools::ConfigureQuadricPeer(filter, attributes);
   filter->Update();
   vtkSmartPointer<vtkPolyData> output = filter->GetOutput();
   if (!attributes)

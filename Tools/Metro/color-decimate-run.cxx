@@ -5,6 +5,7 @@
 // metric's bytes per vertex.
 #include "MeshIO.h"
 #include "ProcessMemory.h"
+#include "QuadricPeer.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -307,12 +308,7 @@ int main(int argc, char* argv[])
       vtkNew<vtkQuadricDecimation> filter;
       filter->SetInputData(input);
       filter->SetTargetReduction(reduction);
-      filter->SetAttributeErrorMetric(attributes);
-      filter->SetScalarsAttribute(attributes);
-      filter->SetVectorsAttribute(false);
-      filter->SetNormalsAttribute(false);
-      filter->SetTCoordsAttribute(false);
-      filter->SetTensorsAttribute(false);
+      colordecimation::tools::ConfigureQuadricPeer(filter, attributes);
       filter->Update();
       output = filter->GetOutput();
       // vtkQuadricDecimation keeps per vertex a sparse quadric of 11 + 4 m doubles (m the
