@@ -190,14 +190,10 @@ CollapseVerdict CollapseRules::CheckFan(const HalfEdgeMesh& mesh, const float* p
         verdict = CollapseVerdict::Flip;
         return;
       }
-      if (this->ReferenceTriangles)
+      if (this->ReferenceNormals)
       {
-        const int32_t* ref = this->ReferenceTriangles + 3 * (h / 3);
-        const float* refPositions = this->ReferencePositions ? this->ReferencePositions : positions;
-        const int refStride = this->ReferencePositions ? this->ReferenceStride : stride;
-        double refN[3];
-        TriangleNormal(refPositions + refStride * ref[0], refPositions + refStride * ref[1],
-                       refPositions + refStride * ref[2], refN);
+        const float* ref = this->ReferenceNormals + 3 * (h / 3);
+        const double refN[3] = { ref[0], ref[1], ref[2] };
         if (TurnsTooFar(refN, newN, newLength2, this->Options.MinimumDriftCosine))
         {
           verdict = CollapseVerdict::Flip;
@@ -205,6 +201,33 @@ CollapseVerdict CollapseRules::CheckFan(const HalfEdgeMesh& mesh, const float* p
       }
     });
   return verdict;
+}
+
+void CollapseRules::ComputeReferenceNormals(const HalfEdgeMesh& mesh, const float* positions,
+                                            int stride, std::vector<float>& normals)
+{
+  const int32_t numFaces = mesh.GetNumberOfFaceSlots();
+  normals.assign(3 * static_cast<size_t>(numFaces), 0.0f);
+  for (int32_t f = 0; f < numFaces; ++f)
+  {
+    if (!mesh.IsFaceAlive(f))
+    {
+      continue;
+    }
+    int32_t ids[3];
+    mesh.GetFace(f, ids);
+    double n[3];
+    TriangleNormal(positions + stride * ids[0], positions + stride * ids[1],
+                   positions + stride * ids[2], n);
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (length > 0 && std::isfinite(length))
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        normals[3 * static_cast<size_t>(f) + k] = static_cast<float>(n[k] / length);
+      }
+    }
+  }
 }
 
 } // namespace colordecimation

@@ -36,7 +36,7 @@ struct CollapseRuleOptions
   /// in one collapse.
   double MinimumNormalCosine = 0.0;
   /// cos(maximum drift): nor may it end up further than that from the normal of the input
-  /// triangle of its face slot (see SetReferenceTriangles). -1 disables the test.
+  /// triangle of its face slot (see SetReferenceNormals). -1 disables the test.
   double MinimumDriftCosine = -1.0;
 };
 
@@ -62,23 +62,20 @@ public:
   const CollapseRuleOptions& GetOptions() const { return this->Options; }
 
   /**
-   * The input triangles (3 vertex ids per face slot, as given to HalfEdgeMesh::Build), whose
-   * normals bound the drift of each face slot's normal. Null (the default) disables that test.
-   * The array must outlive the checks.
+   * The input triangles' unit normals (3 floats per face slot, zero for a degenerate
+   * triangle; see ComputeReferenceNormals), which bound the drift of each face slot's normal.
+   * Null (the default) disables that test. The array must outlive the checks.
    */
-  void SetReferenceTriangles(const int32_t* triangles) { this->ReferenceTriangles = triangles; }
+  void SetReferenceNormals(const float* normals) { this->ReferenceNormals = normals; }
 
   /**
-   * Where the reference triangles' corners are read (stride floats per vertex): by default
-   * (null) from the positions given to each check, which is right as long as no vertex
-   * moves. Collapses that move vertices (full collapses with a placement) give the input
-   * positions here. The array must outlive the checks.
+   * The unit normal of every live face slot of `mesh` (zero where the triangle is
+   * degenerate), for SetReferenceNormals. Kept per face slot rather than recomputed from the
+   * input's corners, so that the check reads one record instead of three vertices that may
+   * long have been collapsed away, and stays right when collapses move vertices.
    */
-  void SetReferencePositions(const float* positions, int stride = 3)
-  {
-    this->ReferencePositions = positions;
-    this->ReferenceStride = stride;
-  }
+  static void ComputeReferenceNormals(const HalfEdgeMesh& mesh, const float* positions, int stride,
+                                      std::vector<float>& normals);
 
   /**
    * Full check of v0 -> v1. The position of vertex v is positions[stride * v + 0..2] (so that
@@ -128,9 +125,7 @@ private:
                            int32_t centre, int32_t other, const double newPosition[3]) const;
 
   CollapseRuleOptions Options;
-  const int32_t* ReferenceTriangles = nullptr;
-  const float* ReferencePositions = nullptr;
-  int ReferenceStride = 3;
+  const float* ReferenceNormals = nullptr;
   std::vector<int32_t> Neighbors; ///< scratch, reused
 };
 

@@ -42,9 +42,22 @@ std::vector<float> Decimator::GetNormalizedPositions() const
   return positions;
 }
 
-DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTriangles,
+DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targetTriangles,
                                    const std::function<bool(double)>& progress)
 {
+  // 0. Locality: a large mesh is decimated in a spatial order (SpatialOrder.h), on renumbered
+  // copies of its arrays, and mapped back to its own ids at the end.
+  DecimatorInput input = original;
+  SpatialOrder order;
+  std::vector<double> points;
+  std::vector<float> colors;
+  std::vector<int32_t> triangles;
+  std::vector<uint8_t> fixed;
+  if (this->Options.Renumber && original.NumberOfPoints >= RenumberMinimumVertices)
+  {
+    this->RenumberInput(original, order, points, colors, triangles, fixed, input);
+  }
+
   DecimatorStatistics stats;
   const int32_t n = input.NumberOfPoints;
   stats.InputTriangles = input.NumberOfTriangles;
@@ -125,7 +138,6 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
   // 3. Per-vertex metric state.
   this->AnyMoved = false;
   this->Moved.clear();
-  std::vector<float> inputPositions; // the reference of the drift guard, when vertices move
   if (this->QuadricMetric)
   {
     // GH98's frame: the bounding box scaled uniformly into the unit cube.
@@ -139,7 +151,6 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
     if (this->Placement)
     {
       this->Moved.assign(n, 0);
-      inputPositions = this->GetNormalizedPositions();
     }
   }
   else
@@ -151,8 +162,10 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
   }
 
   // Each face slot's input normal bounds how far collapses may turn it, in total.
-  this->Rules.SetReferenceTriangles(input.Triangles);
-  this->Rules.SetReferencePositions(inputPositions.empty() ? nullptr : inputPositions.data(), 3);
+  CollapseRules::ComputeReferenceNormals(this->Mesh, this->Positions(), HotStride,
+                                         this->ReferenceNormals);
+  this->Rules.SetReferenceNormals(this->ReferenceNormals.data());
+  triangles = std::vector<int32_t>(); // the renumbered copy, if any, is no longer needed
 
   // 4. Initial costs.
   this->Heap.Reset(n);
@@ -192,6 +205,7 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
       }
       continue;
     }
+    this->PrefetchNeighborhood(v0);
     // A full collapse (ColorQuadric with OptimalPlacement) puts v1 at the placement y.
     double y[6];
     bool moves = false;
@@ -247,7 +261,8 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
     this->Best[v0] = -1;
 
     // v1 and v0's former neighbours have a new 1-ring: re-cost them. The other neighbours
-    // of v1 only saw their cost towards v1 grow: re-cost those whose choice was v1. After a
+    // of v1 only saw their cost towards v1 grow: re-cost those whose choice was v1 (v0's
+    // former neighbours, now all neighbours of v1, were just re-costed). After a
     // full collapse every cost towards v1 may have changed (its point and quadric both
     // did): its whole new 1-ring, which holds v0's former neighbours, is re-costed.
     this->Update(v1);
@@ -267,7 +282,10 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
       this->Mesh.ForEachNeighbor(v1,
                                  [this, v1](int32_t u)
                                  {
-                                   if (this->Best[u] == v1)
+                                   if (this->Best[u] == v1 &&
+                                       std::find(this->FormerNeighbors.begin(),
+                                                 this->FormerNeighbors.end(),
+                                                 u) == this->FormerNeighbors.end())
                                    {
                                      this->Update(u);
                                    }
@@ -285,16 +303,146 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
       }
     }
   }
-  this->Rules.SetReferenceTriangles(nullptr); // the input may not outlive Run
-  this->Rules.SetReferencePositions(nullptr);
+  this->Rules.SetReferenceNormals(nullptr);
+  this->ReferenceNormals = std::vector<float>();
+  if (!order.Empty())
+  {
+    this->RestoreOrder(order);
+  }
   stats.OutputTriangles = this->Mesh.GetNumberOfLiveFaces();
-  // Connectivity 24 B/triangle + 5 B/vertex; metric 48; hot record 32; heap 16; choice 4.
+  // Connectivity 24 B/triangle + 5 B/vertex; reference normals 12 B/triangle; metric 48;
+  // hot record 32; heap 16 per entry + 20 per vertex; choice 4 + 1.
   // ColorQuadric: 112 instead of 48 for the metric, and 1 more for the moved flags.
   stats.MetricBytesPerVertex = this->QuadricMetric ? sizeof(ColorQuadric) : sizeof(VertexMetric);
-  stats.StateBytes = 24 * size_t(input.NumberOfTriangles) +
+  stats.StateBytes = (24 + 12) * size_t(input.NumberOfTriangles) +
     size_t(n) *
-      (5 + stats.MetricBytesPerVertex + sizeof(HotVertex) + 16 + 4 + 1 + (this->Placement ? 1 : 0));
+      (5 + stats.MetricBytesPerVertex + sizeof(HotVertex) + 36 + 4 + 1 + (this->Placement ? 1 : 0));
+  if (!order.Empty())
+  {
+    // The maps back to the input's ids, kept to the end.
+    stats.StateBytes += 4 * size_t(input.NumberOfTriangles) + 8 * size_t(n);
+  }
   return stats;
+}
+
+void Decimator::RenumberInput(const DecimatorInput& original, SpatialOrder& order,
+                              std::vector<double>& points, std::vector<float>& colors,
+                              std::vector<int32_t>& triangles, std::vector<uint8_t>& fixed,
+                              DecimatorInput& renumbered)
+{
+  const int32_t n = original.NumberOfPoints;
+  const int32_t nt = original.NumberOfTriangles;
+  ComputeSpatialOrder(n, original.Points, nt, original.Triangles, order);
+  points.resize(3 * size_t(n));
+  for (int32_t v = 0; v < n; ++v)
+  {
+    std::copy_n(original.Points + 3 * size_t(order.OldVertex[v]), 3,
+                points.begin() + 3 * size_t(v));
+  }
+  renumbered.Points = points.data();
+  if (original.Colors)
+  {
+    colors.resize(3 * size_t(n));
+    for (int32_t v = 0; v < n; ++v)
+    {
+      std::copy_n(original.Colors + 3 * size_t(order.OldVertex[v]), 3,
+                  colors.begin() + 3 * size_t(v));
+    }
+    renumbered.Colors = colors.data();
+  }
+  if (original.Fixed)
+  {
+    fixed.resize(n);
+    for (int32_t v = 0; v < n; ++v)
+    {
+      fixed[v] = original.Fixed[order.OldVertex[v]];
+    }
+    renumbered.Fixed = fixed.data();
+  }
+  triangles.resize(3 * size_t(nt));
+  for (int32_t f = 0; f < nt; ++f)
+  {
+    const int32_t* t = original.Triangles + 3 * size_t(order.OldFace[f]);
+    for (int k = 0; k < 3; ++k)
+    {
+      triangles[3 * size_t(f) + k] = order.NewVertex[t[k]];
+    }
+  }
+  renumbered.Triangles = triangles.data();
+}
+
+void Decimator::RestoreOrder(const SpatialOrder& order)
+{
+  this->Mesh.Renumber(order.OldVertex.data(), order.OldFace.data());
+  const auto n = order.OldVertex.size();
+  auto restore = [&order, n](auto& values)
+  {
+    if (values.size() != n)
+    {
+      return;
+    }
+    auto restored = values;
+    for (size_t v = 0; v < n; ++v)
+    {
+      restored[order.OldVertex[v]] = values[v];
+    }
+    values.swap(restored);
+  };
+  restore(this->Hot);
+  restore(this->Metrics);
+  restore(this->ColorQuadrics);
+  restore(this->Moved);
+  // The heap and the choices refer to the renumbered ids; they are of no use after Run.
+  this->Heap.Reset(0);
+  this->Best.clear();
+  this->Bounded.clear();
+}
+
+void Decimator::PrefetchNeighborhood(int32_t v0)
+{
+  constexpr int MaxWalks = 16;
+  constexpr int MaxSteps = 16;
+  int32_t start[MaxWalks], h[MaxWalks];
+  int count = 0;
+  this->Mesh.ForEachNeighbor(v0,
+                             [&](int32_t u)
+                             {
+                               if (count < MaxWalks)
+                               {
+                                 __builtin_prefetch(&this->Metrics[u]);
+                                 __builtin_prefetch(&this->Best[u]);
+                                 this->Heap.Prefetch(u);
+                                 start[count++] = u;
+                               }
+                             });
+  int active = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    const int32_t first = this->Mesh.Outgoing(start[i]);
+    if (first >= 0)
+    {
+      start[active] = first;
+      h[active] = first;
+      ++active;
+    }
+  }
+  for (int step = 0; step < MaxSteps && active > 0; ++step)
+  {
+    for (int i = 0; i < active;)
+    {
+      __builtin_prefetch(&this->Hot[this->Mesh.Target(h[i])]);
+      const int32_t next = this->Mesh.Twin(HalfEdgeMesh::Prev(h[i]));
+      if (next < 0 || next == start[i])
+      {
+        --active;
+        start[i] = start[active];
+        h[i] = h[active];
+        continue;
+      }
+      h[i] = next;
+      ++i;
+    }
+  }
 }
 
 void Decimator::Update(int32_t v)

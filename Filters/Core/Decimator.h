@@ -4,6 +4,9 @@
  * half-edge collapse, collapsed one at a time until the triangle target is met.
  *
  * Pipeline (in the order Run performs it):
+ * 0. meshes of RenumberMinimumVertices points or more are renumbered in a spatial order
+ *    (SpatialOrder.h) for cache locality; everything below runs on the renumbered copy, and
+ *    the mesh and per-vertex state are mapped back to the input's ids at the end;
  * 1. HalfEdgeMesh::Build: connectivity, locking of non-manifold places;
  * 2. the normalised frame: bounding-box centre at the origin, mean edge length 1 (SPEC.md);
  * 3. InitializeVertexMetrics: area-weighted quadrics and visual importance;
@@ -11,6 +14,12 @@
  * 5. pop, check CollapseRules, collapse, merge the metric state (Q and I accumulate into v1),
  *    re-cost v1, v0's former neighbours (their 1-ring changed) and those neighbours of v1
  *    whose chosen target was v1 (its quadric grew).
+ *
+ * The loop is bound by memory latency, not arithmetic: each collapse happens somewhere else
+ * on the surface and re-costs the 2-ring around it, which is seldom in cache. Three things
+ * keep that in check: the spatial order (a neighbourhood spans few cache lines), the walk of
+ * PrefetchNeighborhood (the rings of all of v0's neighbours are fetched side by side, so
+ * their misses overlap instead of queuing) and the heap's lazy increases (VertexHeap.h).
  *
  * Costing is lazy about legality: a vertex is keyed by its cheapest *admissible* target (the
  * boundary rule and locks only), which is a lower bound of its cheapest *valid* one. When a
@@ -29,7 +38,8 @@
  * top of the heap: by the same argument the collapse order is unchanged.
  *
  * Data layout: what costing reads of a neighbour (position, colour, the constant term of its
- * quadric) sits in one 32-byte record per vertex, so a neighbour costs one cache line.
+ * quadric) sits in one 32-byte record per vertex, so a neighbour costs one cache line. The
+ * flip guard reads each face slot's input normal from one 12-byte record.
  *
  * The comparison metric, ErrorMetric::ColorQuadric (ColorQuadric.h), replaces the 48-byte
  * VertexMetric by a 112-byte 6-D quadric per vertex, in Garland and Heckbert's frame (the
@@ -49,6 +59,7 @@
 #include "ColorQuadric.h"
 #include "ColorSpace.h"
 #include "HalfEdgeMesh.h"
+#include "SpatialOrder.h"
 #include "VertexHeap.h"
 #include "vtkColorDecimationModule.h" // for export macro
 
@@ -92,6 +103,12 @@ struct DecimatorOptions
   /// Key vertices of more than LargeRing neighbours by a lower bound until they reach the top
   /// of the heap (same result, less work; off only to test that claim).
   bool BoundHighValence = true;
+  /**
+   * Decimate meshes of at least RenumberMinimumVertices points in a spatial order
+   * (SpatialOrder.h) for cache locality, mapped back to the input's ids at the end. The same
+   * collapses up to the order of equal costs; off only to test that claim.
+   */
+  bool Renumber = true;
 };
 
 struct DecimatorInput
@@ -170,9 +187,23 @@ private:
    */
   Choice Evaluate(int32_t v0, bool exact, bool allowBound = false);
   static constexpr int LargeRing = 16;
+  /// Below this many points the arrays fit in cache and renumbering is not worth its copy.
+  static constexpr int32_t RenumberMinimumVertices = 32768;
+  /// The input in spatial order: renumbered copies of its arrays, and `renumbered` on them.
+  static void RenumberInput(const DecimatorInput& original, SpatialOrder& order,
+                            std::vector<double>& points, std::vector<float>& colors,
+                            std::vector<int32_t>& triangles, std::vector<uint8_t>& fixed,
+                            DecimatorInput& renumbered);
+  /// Map the decimated mesh and the per-vertex state back to the input's ids.
+  void RestoreOrder(const SpatialOrder& order);
   void GatherRing(int32_t v0);
   void CostRing(int32_t v0, bool withColorError = true);
   void Update(int32_t v);
+  /**
+   * Bring what re-costing the 2-ring of v0 will read into the cache, walking the rings of all
+   * of v0's neighbours side by side so that their cache misses overlap instead of queuing.
+   */
+  void PrefetchNeighborhood(int32_t v0);
   /// ColorQuadric: cost of every ring member (and, with OptimalPlacement, its placement).
   void CostRingColorQuadric(int32_t v0);
   /**
@@ -209,6 +240,7 @@ private:
   bool AnyMoved = false;
   std::vector<double> Placements; ///< scratch: 6 per ring member
   CollapseRules Rules;
+  std::vector<float> ReferenceNormals; ///< the input normal of every face slot (CollapseRules)
   HalfEdgeMesh Mesh;
   std::vector<HotVertex> Hot;
   bool UseColor = false;

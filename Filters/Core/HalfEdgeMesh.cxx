@@ -252,4 +252,32 @@ int HalfEdgeMesh::Collapse(int32_t v0, int32_t v1)
   return removed;
 }
 
+void HalfEdgeMesh::Renumber(const int32_t* vertexTo, const int32_t* faceTo)
+{
+  const int32_t numFaces = this->GetNumberOfFaceSlots();
+  const int32_t numVertices = this->GetNumberOfVertices();
+  auto halfEdgeTo = [faceTo](int32_t h) { return h < 0 ? h : 3 * faceTo[h / 3] + h % 3; };
+  std::vector<Corner> corners(this->Corners.size());
+  for (int32_t f = 0; f < numFaces; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Corner& from = this->Corners[3 * f + k];
+      Corner& to = corners[3 * faceTo[f] + k];
+      to.Vertex = from.Vertex < 0 ? -1 : vertexTo[from.Vertex];
+      to.Twin = halfEdgeTo(from.Twin);
+    }
+  }
+  this->Corners.swap(corners);
+  std::vector<int32_t> out(numVertices);
+  std::vector<uint8_t> flags(numVertices);
+  for (int32_t v = 0; v < numVertices; ++v)
+  {
+    out[vertexTo[v]] = halfEdgeTo(this->Out[v]);
+    flags[vertexTo[v]] = this->Flags[v];
+  }
+  this->Out.swap(out);
+  this->Flags.swap(flags);
+}
+
 } // namespace colordecimation

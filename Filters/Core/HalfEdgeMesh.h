@@ -153,6 +153,13 @@ public:
    */
   int Collapse(int32_t v0, int32_t v1);
 
+  /**
+   * Renumber: vertex v becomes vertexTo[v] and face slot f becomes faceTo[f] (both
+   * permutations), with every half-edge, twin and outgoing half-edge following. Used to map a
+   * mesh decimated in a spatial order (SpatialOrder.h) back to its input's ids.
+   */
+  void Renumber(const int32_t* vertexTo, const int32_t* faceTo);
+
 private:
   void RemoveFace(int32_t h);
   void RepairOutgoing(int32_t v, int32_t candidate);

@@ -7,6 +7,7 @@
 #include "Decimator.h"
 #include "HalfEdgeMesh.h"
 #include "Quadric.h"
+#include "SpatialOrder.h"
 #include "VertexHeap.h"
 
 #include "ColorDecimationMeshes.h"
@@ -802,6 +803,315 @@ void TestHalfEdgeCollapse()
 }
 
 //------------------------------------------------------------------------------
+void TestSpatialOrder()
+{
+  // Morton codes by hand: x, y and z take bits 0, 1 and 2 of each group of three.
+  const double lo[3] = { 0, 0, 0 };
+  const double cell = 1.0 / 1024; // box [0,1]^3
+  auto code = [&](double x, double y, double z)
+  {
+    const double p[3] = { (x + 0.5) * cell, (y + 0.5) * cell, (z + 0.5) * cell };
+    return MortonCode(p, lo, 1.0);
+  };
+  CD_CHECK(code(0, 0, 0) == 0u);
+  CD_CHECK(code(1, 0, 0) == 1u);
+  CD_CHECK(code(0, 1, 0) == 2u);
+  CD_CHECK(code(0, 0, 1) == 4u);
+  CD_CHECK(code(2, 0, 0) == 8u);
+  // x = 3 (bits 0, 1), y = 5 (bits 0, 2), z = 6 (bits 1, 2): bits 0, 3; 1, 7; 5, 8.
+  CD_CHECK(code(3, 5, 6) == 1u + 8u + 2u + 128u + 32u + 256u);
+  CD_CHECK(code(1023, 1023, 1023) == (1u << 30) - 1);
+  const double outside[3] = { -5, 2, std::nan("") };
+  CD_CHECK(MortonCode(outside, lo, 1.0) == code(0, 1023, 0)); // clamped; NaN goes to 0
+
+  // A whole mesh: both orders are permutations, vertices follow their codes, triangles their
+  // smallest renumbered vertex, and equal keys keep the input order.
+  PlainMesh m = ToPlain(meshes::Torus(40, 16, meshes::Pattern::Constant));
+  m.Points[0] = std::nan(""); // a non-finite point must not break the order
+  SpatialOrder order;
+  ComputeSpatialOrder(m.NumberOfPoints(), m.Points.data(), m.NumberOfTriangles(),
+                      m.Triangles.data(), order);
+  const int32_t n = m.NumberOfPoints();
+  CD_CHECK(static_cast<int32_t>(order.OldVertex.size()) == n);
+  CD_CHECK(static_cast<int32_t>(order.NewVertex.size()) == n);
+  std::vector<char> seen(n, 0);
+  for (int32_t v = 0; v < n; ++v)
+  {
+    const int32_t old = order.OldVertex[v];
+    CD_CHECK(old >= 0 && old < n && !seen[old]);
+    seen[old] = 1;
+    CD_CHECK(order.NewVertex[old] == v);
+  }
+  double boxLo[3] = { 1e300, 1e300, 1e300 }, boxHi[3] = { -1e300, -1e300, -1e300 };
+  for (int32_t v = 1; v < n; ++v)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      boxLo[k] = std::min(boxLo[k], m.Points[3 * v + k]);
+      boxHi[k] = std::max(boxHi[k], m.Points[3 * v + k]);
+    }
+  }
+  const double extent = std::max({ boxHi[0] - boxLo[0], boxHi[1] - boxLo[1], boxHi[2] - boxLo[2] });
+  for (int32_t v = 1; v < n; ++v)
+  {
+    const int32_t a = order.OldVertex[v - 1], b = order.OldVertex[v];
+    const uint32_t ca = MortonCode(&m.Points[3 * a], boxLo, extent);
+    const uint32_t cb = MortonCode(&m.Points[3 * b], boxLo, extent);
+    CD_CHECK(ca < cb || (ca == cb && a < b));
+  }
+  const int32_t nt = m.NumberOfTriangles();
+  CD_CHECK(static_cast<int32_t>(order.OldFace.size()) == nt);
+  std::vector<char> seenFace(nt, 0);
+  int32_t previousKey = -1, previousFace = -1;
+  for (int32_t f = 0; f < nt; ++f)
+  {
+    const int32_t old = order.OldFace[f];
+    CD_CHECK(old >= 0 && old < nt && !seenFace[old]);
+    seenFace[old] = 1;
+    const int32_t* t = &m.Triangles[3 * old];
+    const int32_t key =
+      std::min({ order.NewVertex[t[0]], order.NewVertex[t[1]], order.NewVertex[t[2]] });
+    CD_CHECK(key > previousKey || (key == previousKey && old > previousFace));
+    previousKey = key;
+    previousFace = old;
+  }
+}
+
+/// HalfEdgeMesh::Renumber: a renumbered mesh is the same mesh under new names, and renumbering
+/// it back restores every array, mid-decimation included.
+void TestHalfEdgeRenumber()
+{
+  for (bool closed : { true, false })
+  {
+    const PlainMesh m = ToPlain(closed ? meshes::Torus(30, 12, meshes::Pattern::Constant)
+                                       : meshes::Grid(20, 14, meshes::Pattern::Constant));
+    HalfEdgeMesh mesh;
+    mesh.Build(m.NumberOfPoints(), m.Triangles.data(), m.NumberOfTriangles());
+    mesh.Lock(7);
+    // Decimate a little first, so that dead faces and removed vertices are renumbered too.
+    CollapseRuleOptions options;
+    options.MinimumNormalCosine = -1.0;
+    CollapseRules rules(options);
+    std::mt19937 rng(5);
+    for (int attempt = 0; attempt < 400; ++attempt)
+    {
+      const int32_t v0 = static_cast<int32_t>(rng() % m.NumberOfPoints());
+      if (!mesh.IsCollapsible(v0))
+      {
+        continue;
+      }
+      std::vector<int32_t> ring;
+      mesh.ForEachNeighbor(v0, [&](int32_t u) { ring.push_back(u); });
+      const int32_t v1 = ring[rng() % ring.size()];
+      if (rules.IsLegal(mesh, m.Positions.data(), v0, v1))
+      {
+        mesh.Collapse(v0, v1);
+      }
+    }
+    const HalfEdgeMesh before = mesh;
+    const int32_t n = mesh.GetNumberOfVertices();
+    const int32_t nf = mesh.GetNumberOfFaceSlots();
+    std::vector<int32_t> vertexTo(n), faceTo(nf);
+    for (int32_t v = 0; v < n; ++v)
+    {
+      vertexTo[v] = v;
+    }
+    for (int32_t f = 0; f < nf; ++f)
+    {
+      faceTo[f] = f;
+    }
+    std::shuffle(vertexTo.begin(), vertexTo.end(), rng);
+    std::shuffle(faceTo.begin(), faceTo.end(), rng);
+    mesh.Renumber(vertexTo.data(), faceTo.data());
+    CheckMeshConsistency(mesh, closed);
+    CD_CHECK(mesh.GetNumberOfLiveFaces() == before.GetNumberOfLiveFaces());
+    for (int32_t f = 0; f < nf; ++f)
+    {
+      CD_CHECK(mesh.IsFaceAlive(faceTo[f]) == before.IsFaceAlive(f));
+      if (!before.IsFaceAlive(f))
+      {
+        continue;
+      }
+      int32_t a[3], b[3];
+      before.GetFace(f, a);
+      mesh.GetFace(faceTo[f], b);
+      for (int k = 0; k < 3; ++k)
+      {
+        CD_CHECK(b[k] == vertexTo[a[k]]);
+        const int32_t twin = before.Twin(3 * f + k);
+        CD_CHECK(mesh.Twin(3 * faceTo[f] + k) == (twin < 0 ? -1 : 3 * faceTo[twin / 3] + twin % 3));
+      }
+    }
+    for (int32_t v = 0; v < n; ++v)
+    {
+      const int32_t w = vertexTo[v];
+      CD_CHECK(mesh.IsLocked(w) == before.IsLocked(v));
+      CD_CHECK(mesh.IsRemoved(w) == before.IsRemoved(v));
+      CD_CHECK(mesh.IsCollapsible(w) == before.IsCollapsible(v));
+      if (before.IsCollapsible(v))
+      {
+        CD_CHECK(mesh.IsBoundaryVertex(w) == before.IsBoundaryVertex(v));
+        std::vector<int32_t> expected, got;
+        before.ForEachNeighbor(v, [&](int32_t u) { expected.push_back(vertexTo[u]); });
+        mesh.ForEachNeighbor(w, [&](int32_t u) { got.push_back(u); });
+        CD_CHECK(got == expected); // the same fan, from the same starting half-edge
+      }
+    }
+    // And back: the inverse permutations give the very same arrays.
+    std::vector<int32_t> vertexBack(n), faceBack(nf);
+    for (int32_t v = 0; v < n; ++v)
+    {
+      vertexBack[vertexTo[v]] = v;
+    }
+    for (int32_t f = 0; f < nf; ++f)
+    {
+      faceBack[faceTo[f]] = f;
+    }
+    mesh.Renumber(vertexBack.data(), faceBack.data());
+    for (int32_t h = 0; h < 3 * nf; ++h)
+    {
+      CD_CHECK(mesh.Origin(h) == before.Origin(h) && mesh.Twin(h) == before.Twin(h));
+    }
+    for (int32_t v = 0; v < n; ++v)
+    {
+      CD_CHECK(mesh.Outgoing(v) == before.Outgoing(v));
+      CD_CHECK(mesh.IsLocked(v) == before.IsLocked(v) && mesh.IsRemoved(v) == before.IsRemoved(v));
+    }
+  }
+}
+
+/**
+ * Decimating in the spatial order (DecimatorOptions::Renumber) is decimating the renumbered
+ * mesh and mapping the result back: it must give exactly what a plain run on the renumbered
+ * input gives, in the input's ids (faces, vertices, positions and metric state).
+ */
+void TestRenumberSameResult()
+{
+  auto poly = meshes::UVSphere(200, meshes::Pattern::FineDetail);
+  const PlainMesh m = ToPlain(poly);
+  const int32_t n = m.NumberOfPoints();
+  const int32_t nt = m.NumberOfTriangles();
+  CD_CHECK(n >= 32768); // above Decimator::RenumberMinimumVertices
+  std::vector<float> colors(m.Points.size());
+  vtkDataArray* rgb = poly->GetPointData()->GetScalars();
+  for (int32_t i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      colors[3 * i + k] = static_cast<float>(rgb->GetComponent(i, k) / 255.0);
+    }
+  }
+  std::vector<uint8_t> fixed(n, 0);
+  for (int32_t i = 0; i < n; i += 97)
+  {
+    fixed[i] = 1;
+  }
+  DecimatorInput input;
+  input.NumberOfPoints = n;
+  input.Points = m.Points.data();
+  input.Colors = colors.data();
+  input.NumberOfTriangles = nt;
+  input.Triangles = m.Triangles.data();
+  input.Fixed = fixed.data();
+
+  // The same input, renumbered by hand.
+  SpatialOrder order;
+  ComputeSpatialOrder(n, m.Points.data(), nt, m.Triangles.data(), order);
+  std::vector<double> points(m.Points.size());
+  std::vector<float> colors2(colors.size());
+  std::vector<uint8_t> fixed2(n);
+  std::vector<int32_t> triangles(m.Triangles.size());
+  for (int32_t v = 0; v < n; ++v)
+  {
+    const int32_t old = order.OldVertex[v];
+    for (int k = 0; k < 3; ++k)
+    {
+      points[3 * v + k] = m.Points[3 * old + k];
+      colors2[3 * v + k] = colors[3 * old + k];
+    }
+    fixed2[v] = fixed[old];
+  }
+  for (int32_t f = 0; f < nt; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      triangles[3 * f + k] = order.NewVertex[m.Triangles[3 * order.OldFace[f] + k]];
+    }
+  }
+  DecimatorInput renumbered = input;
+  renumbered.Points = points.data();
+  renumbered.Colors = colors2.data();
+  renumbered.Fixed = fixed2.data();
+  renumbered.Triangles = triangles.data();
+
+  for (ErrorMetric metric : { ErrorMetric::HalfEdgeColor, ErrorMetric::ColorQuadric })
+  {
+    DecimatorOptions options;
+    options.Metric = metric;
+    options.OptimalPlacement = metric == ErrorMetric::ColorQuadric;
+    Decimator inOrder(options);
+    const DecimatorStatistics a = inOrder.Run(input, nt / 10);
+    options.Renumber = false;
+    Decimator byHand(options);
+    const DecimatorStatistics b = byHand.Run(renumbered, nt / 10);
+    CD_CHECK(a.OutputTriangles <= nt / 10);
+    CD_CHECK(a.Collapses == b.Collapses && a.OutputTriangles == b.OutputTriangles);
+
+    const HalfEdgeMesh& ma = inOrder.GetMesh();
+    const HalfEdgeMesh& mb = byHand.GetMesh();
+    CD_CHECK(ma.GetNumberOfFaceSlots() == nt && mb.GetNumberOfFaceSlots() == nt);
+    long long mismatches = 0;
+    for (int32_t f = 0; f < nt; ++f)
+    {
+      const int32_t slot = order.OldFace[f]; // b's face f is the input's face `slot`
+      if (ma.IsFaceAlive(slot) != mb.IsFaceAlive(f))
+      {
+        ++mismatches;
+        continue;
+      }
+      if (!mb.IsFaceAlive(f))
+      {
+        continue;
+      }
+      int32_t ta[3], tb[3];
+      ma.GetFace(slot, ta);
+      mb.GetFace(f, tb);
+      for (int k = 0; k < 3; ++k)
+      {
+        mismatches += ta[k] != order.OldVertex[tb[k]] ? 1 : 0;
+      }
+    }
+    CD_CHECK_MSG(mismatches == 0,
+                 mismatches << " faces differ from the run on the renumbered input");
+    mismatches = 0;
+    for (int32_t v = 0; v < n; ++v)
+    {
+      const int32_t old = order.OldVertex[v];
+      mismatches += ma.IsRemoved(old) != mb.IsRemoved(v) ? 1 : 0;
+      mismatches += inOrder.IsMoved(old) != byHand.IsMoved(v) ? 1 : 0;
+      const float* pa = inOrder.GetNormalizedPosition(old);
+      const float* pb = byHand.GetNormalizedPosition(v);
+      mismatches += std::equal(pa, pa + 3, pb) ? 0 : 1;
+      if (metric == ErrorMetric::HalfEdgeColor)
+      {
+        mismatches += inOrder.GetMetrics()[old].Importance != byHand.GetMetrics()[v].Importance;
+        mismatches += inOrder.GetMetrics()[old].Q.C != byHand.GetMetrics()[v].Q.C;
+      }
+      else
+      {
+        mismatches += inOrder.GetColorQuadrics()[old].C != byHand.GetColorQuadrics()[v].C;
+      }
+    }
+    CD_CHECK_MSG(mismatches == 0, mismatches << " vertex states differ");
+    for (int32_t i = 0; i < n; i += 97)
+    {
+      CD_CHECK(!ma.IsRemoved(i)); // the fixed points followed their vertices
+    }
+    CD_CHECK(b.Collapses > nt / 3); // a real decimation, not an empty comparison
+  }
+}
+
+//------------------------------------------------------------------------------
 void TestRulesLinkCondition()
 {
   CollapseRules rules{ CollapseRuleOptions() };
@@ -1021,6 +1331,9 @@ int main(int argc, char* argv[])
                         { "HalfEdgeBuildOpen", TestHalfEdgeBuildOpen },
                         { "HalfEdgeNonManifold", TestHalfEdgeNonManifold },
                         { "HalfEdgeCollapse", TestHalfEdgeCollapse },
+                        { "HalfEdgeRenumber", TestHalfEdgeRenumber },
+                        { "SpatialOrder", TestSpatialOrder },
+                        { "RenumberSameResult", TestRenumberSameResult },
                         { "RulesLinkCondition", TestRulesLinkCondition },
                         { "RulesFlip", TestRulesFlip },
                         { "RulesDegenerate", TestRulesDegenerate },
