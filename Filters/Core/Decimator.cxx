@@ -53,7 +53,8 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   std::vector<float> colors;
   std::vector<int32_t> triangles;
   std::vector<uint8_t> fixed;
-  if (this->Options.Renumber && original.NumberOfPoints >= RenumberMinimumVertices)
+  const bool large = original.NumberOfPoints >= LargeMeshVertices;
+  if (this->Options.Renumber && large)
   {
     this->RenumberInput(original, order, points, colors, triangles, fixed, input);
   }
@@ -178,6 +179,8 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
 
   // 5. Collapse.
   const int64_t startFaces = this->Mesh.GetNumberOfLiveFaces();
+  // Prefetching pays for itself only when the neighbourhoods are not in cache anyway.
+  const bool prefetch = large;
   const int64_t toRemove = std::max<int64_t>(startFaces - stats.TargetTriangles, 1);
   int64_t nextReport = 0;
   while (this->Mesh.GetNumberOfLiveFaces() > stats.TargetTriangles && !this->Heap.Empty())
@@ -205,7 +208,10 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
       }
       continue;
     }
-    this->PrefetchNeighborhood(v0);
+    if (prefetch)
+    {
+      this->PrefetchNeighborhood(v0);
+    }
     // A full collapse (ColorQuadric with OptimalPlacement) puts v1 at the placement y.
     double y[6];
     bool moves = false;

@@ -224,13 +224,24 @@ private:
       {
         break;
       }
-      const int32_t last = first + 4 < n ? first + 4 : n;
       int32_t best = first;
-      for (int32_t c = first + 1; c < last; ++c)
+      if (first + 4 <= n)
       {
-        if (this->Heap[c].Key < this->Heap[best].Key)
+        // All four children: a tournament the compiler turns into conditional moves (which
+        // child wins is unpredictable, and a mispredicted branch costs as much as a miss).
+        const double k0 = this->Heap[first].Key, k1 = this->Heap[first + 1].Key;
+        const double k2 = this->Heap[first + 2].Key, k3 = this->Heap[first + 3].Key;
+        const int32_t a = k1 < k0 ? first + 1 : first;
+        const double ka = k1 < k0 ? k1 : k0;
+        const int32_t b = k3 < k2 ? first + 3 : first + 2;
+        const double kb = k3 < k2 ? k3 : k2;
+        best = kb < ka ? b : a;
+      }
+      else
+      {
+        for (int32_t c = first + 1; c < n; ++c)
         {
-          best = c;
+          best = this->Heap[c].Key < this->Heap[best].Key ? c : best;
         }
       }
       if (!(this->Heap[best].Key < e.Key))

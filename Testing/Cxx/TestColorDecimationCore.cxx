@@ -987,11 +987,11 @@ void TestHalfEdgeRenumber()
  */
 void TestRenumberSameResult()
 {
-  auto poly = meshes::UVSphere(200, meshes::Pattern::FineDetail);
+  auto poly = meshes::UVSphere(260, meshes::Pattern::FineDetail);
   const PlainMesh m = ToPlain(poly);
   const int32_t n = m.NumberOfPoints();
   const int32_t nt = m.NumberOfTriangles();
-  CD_CHECK(n >= 32768); // above Decimator::RenumberMinimumVertices
+  CD_CHECK(n >= 65536); // above Decimator::LargeMeshVertices
   std::vector<float> colors(m.Points.size());
   vtkDataArray* rgb = poly->GetPointData()->GetScalars();
   for (int32_t i = 0; i < n; ++i)
