@@ -30,12 +30,15 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
   {
     offsets[v + 1] += offsets[v];
   }
-  std::vector<int32_t> outgoing(numHalfEdges);
+  // Their targets alongside, so that pairing scans two short contiguous rows.
+  std::vector<int32_t> outgoing(numHalfEdges), targets(numHalfEdges);
   {
     std::vector<int32_t> fill(offsets.begin(), offsets.end() - 1);
     for (int32_t h = 0; h < numHalfEdges; ++h)
     {
-      outgoing[fill[this->Corners[h].Vertex]++] = h;
+      const int32_t k = fill[this->Corners[h].Vertex]++;
+      outgoing[k] = h;
+      targets[k] = this->Target(h);
     }
   }
 
@@ -47,21 +50,19 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
     int32_t forward = 0, backward = 0, twin = -1, smallest = h;
     for (int32_t k = offsets[a]; k < offsets[a + 1]; ++k)
     {
-      const int32_t g = outgoing[k];
-      if (this->Target(g) == b)
+      if (targets[k] == b)
       {
         ++forward;
-        smallest = std::min(smallest, g);
+        smallest = std::min(smallest, outgoing[k]);
       }
     }
     for (int32_t k = offsets[b]; k < offsets[b + 1]; ++k)
     {
-      const int32_t g = outgoing[k];
-      if (this->Target(g) == a)
+      if (targets[k] == a)
       {
         ++backward;
-        twin = g;
-        smallest = std::min(smallest, g);
+        twin = outgoing[k];
+        smallest = std::min(smallest, outgoing[k]);
       }
     }
     if (forward == 1 && backward == 1)
