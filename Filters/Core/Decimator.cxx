@@ -166,7 +166,17 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   CollapseRules::ComputeReferenceNormals(this->Mesh, this->Positions(), HotStride,
                                          this->ReferenceNormals);
   this->Rules.SetReferenceNormals(this->ReferenceNormals.data());
-  triangles = std::vector<int32_t>(); // the renumbered copy, if any, is no longer needed
+  // The renumbered copies of the input, if any, are no longer needed: everything below reads
+  // the mesh, the hot records and the metric state.
+  points = std::vector<double>();
+  colors = std::vector<float>();
+  triangles = std::vector<int32_t>();
+  fixed = std::vector<uint8_t>();
+  order.NewVertex = std::vector<int32_t>();
+  input.Points = nullptr;
+  input.Colors = nullptr;
+  input.Triangles = nullptr;
+  input.Fixed = nullptr;
 
   // 4. Initial costs.
   this->Heap.Reset(n);
@@ -326,7 +336,7 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   if (!order.Empty())
   {
     // The maps back to the input's ids, kept to the end.
-    stats.StateBytes += 4 * size_t(input.NumberOfTriangles) + 8 * size_t(n);
+    stats.StateBytes += 4 * size_t(input.NumberOfTriangles) + 4 * size_t(n);
   }
   return stats;
 }
@@ -379,29 +389,24 @@ void Decimator::RenumberInput(const DecimatorInput& original, SpatialOrder& orde
 
 void Decimator::RestoreOrder(const SpatialOrder& order)
 {
+  // The heap and the choices refer to the renumbered ids and are of no use after Run: freed
+  // first, so that mapping back adds nothing to the peak.
+  this->Heap.Release();
+  this->Best = std::vector<int32_t>();
+  this->Bounded = std::vector<uint8_t>();
   this->Mesh.Renumber(order.OldVertex.data(), order.OldFace.data());
-  const auto n = order.OldVertex.size();
+  const auto n = static_cast<int64_t>(order.OldVertex.size());
   auto restore = [&order, n](auto& values)
   {
-    if (values.size() != n)
+    if (static_cast<int64_t>(values.size()) == n)
     {
-      return;
+      PermuteInPlace(values.data(), n, order.OldVertex.data());
     }
-    auto restored = values;
-    for (size_t v = 0; v < n; ++v)
-    {
-      restored[order.OldVertex[v]] = values[v];
-    }
-    values.swap(restored);
   };
   restore(this->Hot);
   restore(this->Metrics);
   restore(this->ColorQuadrics);
   restore(this->Moved);
-  // The heap and the choices refer to the renumbered ids; they are of no use after Run.
-  this->Heap.Reset(0);
-  this->Best.clear();
-  this->Bounded.clear();
 }
 
 void Decimator::PrefetchNeighborhood(int32_t v0)

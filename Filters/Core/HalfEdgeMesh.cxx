@@ -1,5 +1,7 @@
 #include "HalfEdgeMesh.h"
 
+#include "SpatialOrder.h"
+
 #include <algorithm>
 
 namespace colordecimation
@@ -255,30 +257,20 @@ int HalfEdgeMesh::Collapse(int32_t v0, int32_t v1)
 
 void HalfEdgeMesh::Renumber(const int32_t* vertexTo, const int32_t* faceTo)
 {
-  const int32_t numFaces = this->GetNumberOfFaceSlots();
-  const int32_t numVertices = this->GetNumberOfVertices();
-  auto halfEdgeTo = [faceTo](int32_t h) { return h < 0 ? h : 3 * faceTo[h / 3] + h % 3; };
-  std::vector<Corner> corners(this->Corners.size());
-  for (int32_t f = 0; f < numFaces; ++f)
+  // New names first, then every face and vertex record moved to its new slot (in place: the
+  // mesh is renumbered when it is largest, at the end of a decimation).
+  for (Corner& corner : this->Corners)
   {
-    for (int k = 0; k < 3; ++k)
-    {
-      const Corner& from = this->Corners[3 * f + k];
-      Corner& to = corners[3 * faceTo[f] + k];
-      to.Vertex = from.Vertex < 0 ? -1 : vertexTo[from.Vertex];
-      to.Twin = halfEdgeTo(from.Twin);
-    }
+    corner.Vertex = corner.Vertex < 0 ? -1 : vertexTo[corner.Vertex];
+    corner.Twin = corner.Twin < 0 ? -1 : 3 * faceTo[corner.Twin / 3] + corner.Twin % 3;
   }
-  this->Corners.swap(corners);
-  std::vector<int32_t> out(numVertices);
-  std::vector<uint8_t> flags(numVertices);
-  for (int32_t v = 0; v < numVertices; ++v)
+  for (int32_t& out : this->Out)
   {
-    out[vertexTo[v]] = halfEdgeTo(this->Out[v]);
-    flags[vertexTo[v]] = this->Flags[v];
+    out = out < 0 ? -1 : 3 * faceTo[out / 3] + out % 3;
   }
-  this->Out.swap(out);
-  this->Flags.swap(flags);
+  PermuteInPlace(this->Corners.data(), this->GetNumberOfFaceSlots(), faceTo, 3);
+  PermuteInPlace(this->Out.data(), this->GetNumberOfVertices(), vertexTo);
+  PermuteInPlace(this->Flags.data(), this->GetNumberOfVertices(), vertexTo);
 }
 
 } // namespace colordecimation

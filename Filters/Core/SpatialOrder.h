@@ -19,6 +19,7 @@
 
 #include "vtkColorDecimationModule.h" // for export macro
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -48,6 +49,36 @@ VTKCOLORDECIMATION_EXPORT uint32_t MortonCode(const double p[3], const double lo
 VTKCOLORDECIMATION_EXPORT void ComputeSpatialOrder(int32_t numVertices, const double* points,
                                                    int32_t numTriangles, const int32_t* triangles,
                                                    SpatialOrder& order);
+
+/**
+ * Move block i of `block` consecutive values to block to[i], for i in [0, count), in place
+ * (`to` is a permutation of [0, count)): one pass along the permutation's cycles, with one
+ * bit of scratch per block instead of a second copy of the array.
+ */
+template <typename T>
+void PermuteInPlace(T* values, int64_t count, const int32_t* to, int block = 1)
+{
+  std::vector<bool> done(static_cast<size_t>(count), false);
+  std::vector<T> carried(block), displaced(block);
+  for (int64_t start = 0; start < count; ++start)
+  {
+    if (done[start])
+    {
+      continue;
+    }
+    std::copy(values + block * start, values + block * (start + 1), carried.begin());
+    int64_t i = start;
+    do
+    {
+      const int64_t j = to[i];
+      std::copy(values + block * j, values + block * (j + 1), displaced.begin());
+      std::copy(carried.begin(), carried.end(), values + block * j);
+      carried.swap(displaced);
+      done[j] = true;
+      i = j;
+    } while (i != start);
+  }
+}
 
 } // namespace colordecimation
 

@@ -45,6 +45,15 @@ public:
     this->Placed.assign(numVertices, 0.0);
   }
 
+  /// Empty the heap and give its memory back.
+  void Release()
+  {
+    this->Heap = Entries();
+    this->Slot = std::vector<int32_t>();
+    this->Key = std::vector<double>();
+    this->Placed = std::vector<double>();
+  }
+
   bool Empty() const { return this->Heap.empty(); }
   size_t Size() const { return this->Heap.size(); }
   bool Contains(int32_t v) const { return this->Slot[v] >= 0; }

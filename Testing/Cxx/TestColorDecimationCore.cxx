@@ -824,6 +824,21 @@ void TestSpatialOrder()
   const double outside[3] = { -5, 2, std::nan("") };
   CD_CHECK(MortonCode(outside, lo, 1.0) == code(0, 1023, 0)); // clamped; NaN goes to 0
 
+  // PermuteInPlace: block i goes to block to[i], cycles of every length included.
+  {
+    const int32_t to[7] = { 3, 0, 1, 2, 4, 6, 5 }; // a 4-cycle, a fixed point, a swap
+    std::vector<int> values;
+    for (int i = 0; i < 7; ++i)
+    {
+      values.insert(values.end(), { 10 * i, 10 * i + 1 });
+    }
+    PermuteInPlace(values.data(), 7, to, 2);
+    for (int i = 0; i < 7; ++i)
+    {
+      CD_CHECK(values[2 * to[i]] == 10 * i && values[2 * to[i] + 1] == 10 * i + 1);
+    }
+  }
+
   // A whole mesh: both orders are permutations, vertices follow their codes, triangles their
   // smallest renumbered vertex, and equal keys keep the input order.
   PlainMesh m = ToPlain(meshes::Torus(40, 16, meshes::Pattern::Constant));
