@@ -103,6 +103,19 @@ void TestInvariantsGridSharp()
   CheckInvariants(meshes::Grid(90, 70, Pattern::SharpRegions), OpenSheet(), "Grid(90,70)");
 }
 
+/// Meshes of more than Decimator::LargeMeshVertices points are decimated renumbered in a
+/// spatial order and with prefetching: the same invariants, in the input's ids.
+void TestInvariantsLargeTorus()
+{
+  CheckInvariants(meshes::Torus(400, 180, Pattern::FineDetail), ClosedSurface(0, TorusNormal),
+                  "Torus(400,180)");
+}
+
+void TestInvariantsLargeGrid()
+{
+  CheckInvariants(meshes::Grid(290, 260, Pattern::SharpRegions), OpenSheet(), "Grid(290,260)");
+}
+
 //------------------------------------------------------------------------------
 void CheckScaleInvariance(vtkPolyData* mesh, int metric, const std::string& name)
 {
@@ -491,6 +504,8 @@ int main(int argc, char* argv[])
                         { "InvariantsTorusFineDetail", TestInvariantsTorusFineDetail },
                         { "InvariantsGridSmooth", TestInvariantsGridSmooth },
                         { "InvariantsGridSharp", TestInvariantsGridSharp },
+                        { "InvariantsLargeTorus", TestInvariantsLargeTorus },
+                        { "InvariantsLargeGrid", TestInvariantsLargeGrid },
                         { "ScaleTranslationInvariance", TestScaleTranslationInvariance },
                         { "TargetReductionZero", TestTargetReductionZero },
                         { "TargetReductionOne", TestTargetReductionOne },
