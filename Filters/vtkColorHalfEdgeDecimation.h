@@ -231,8 +231,9 @@ public:
   vtkGetMacro(NumberOfCollapses, vtkIdType);
 
   /**
-   * Bytes held by the decimation's own arrays in the last execution (connectivity, frame,
-   * the metric's 48 bytes per vertex, heap); input and output data sets not included.
+   * Bytes held by the decimation's own arrays in the last execution (connectivity, input
+   * normals, the metric's 48 bytes per vertex, heap, the maps back from the spatial order of
+   * large meshes); input and output data sets not included.
    */
   vtkGetMacro(StateMemory, vtkIdType);
 
