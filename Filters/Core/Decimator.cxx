@@ -1,5 +1,7 @@
 #include "Decimator.h"
 
+#include "Prefetch.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -420,8 +422,16 @@ void Decimator::PrefetchNeighborhood(int32_t v0)
                              {
                                if (count < MaxWalks)
                                {
-                                 __builtin_prefetch(&this->Metrics[u]);
-                                 __builtin_prefetch(&this->Best[u]);
+                                 // The metric state of whichever metric runs.
+                                 if (this->QuadricMetric)
+                                 {
+                                   COLORDECIMATION_PREFETCH(this->ColorQuadrics.data() + u);
+                                 }
+                                 else
+                                 {
+                                   COLORDECIMATION_PREFETCH(this->Metrics.data() + u);
+                                 }
+                                 COLORDECIMATION_PREFETCH(this->Best.data() + u);
                                  this->Heap.Prefetch(u);
                                  start[count++] = u;
                                }
@@ -441,7 +451,7 @@ void Decimator::PrefetchNeighborhood(int32_t v0)
   {
     for (int i = 0; i < active;)
     {
-      __builtin_prefetch(&this->Hot[this->Mesh.Target(h[i])]);
+      COLORDECIMATION_PREFETCH(this->Hot.data() + this->Mesh.Target(h[i]));
       const int32_t next = this->Mesh.Twin(HalfEdgeMesh::Prev(h[i]));
       if (next < 0 || next == start[i])
       {
@@ -554,7 +564,7 @@ Decimator::Choice Decimator::Evaluate(int32_t v0, bool exact, bool allowBound)
   }
   else
   {
-    __builtin_prefetch(&this->Metrics[v0]);
+    COLORDECIMATION_PREFETCH(this->Metrics.data() + v0);
     this->GatherRing(v0);
     choice.Bound = allowBound && !exact && this->Options.BoundHighValence &&
       this->CurrentRing.Size > LargeRing && this->Options.Metric == ErrorMetric::HalfEdgeColor &&

@@ -24,6 +24,8 @@
 #ifndef colordecimation_VertexHeap_h
 #define colordecimation_VertexHeap_h
 
+#include "Prefetch.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -74,9 +76,9 @@ public:
   /// Hint that v's key is about to be set.
   void Prefetch(int32_t v) const
   {
-    __builtin_prefetch(&this->Slot[v]);
-    __builtin_prefetch(&this->Key[v]);
-    __builtin_prefetch(&this->Placed[v]);
+    COLORDECIMATION_PREFETCH(this->Slot.data() + v);
+    COLORDECIMATION_PREFETCH(this->Key.data() + v);
+    COLORDECIMATION_PREFETCH(this->Placed.data() + v);
   }
 
   /// Insert v, or give it a new key if it is already in.
