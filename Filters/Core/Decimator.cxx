@@ -402,7 +402,7 @@ void Decimator::RestoreOrder(const SpatialOrder& order)
   {
     if (static_cast<int64_t>(values.size()) == n)
     {
-      PermuteInPlace(values.data(), n, order.OldVertex.data());
+      Permute(values, n, order.OldVertex.data());
     }
   };
   restore(this->Hot);

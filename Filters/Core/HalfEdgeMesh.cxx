@@ -257,8 +257,7 @@ int HalfEdgeMesh::Collapse(int32_t v0, int32_t v1)
 
 void HalfEdgeMesh::Renumber(const int32_t* vertexTo, const int32_t* faceTo)
 {
-  // New names first, then every face and vertex record moved to its new slot (in place: the
-  // mesh is renumbered when it is largest, at the end of a decimation).
+  // New names first, then every face and vertex record moved to its new slot.
   for (Corner& corner : this->Corners)
   {
     corner.Vertex = corner.Vertex < 0 ? -1 : vertexTo[corner.Vertex];
@@ -268,9 +267,9 @@ void HalfEdgeMesh::Renumber(const int32_t* vertexTo, const int32_t* faceTo)
   {
     out = out < 0 ? -1 : 3 * faceTo[out / 3] + out % 3;
   }
-  PermuteInPlace(this->Corners.data(), this->GetNumberOfFaceSlots(), faceTo, 3);
-  PermuteInPlace(this->Out.data(), this->GetNumberOfVertices(), vertexTo);
-  PermuteInPlace(this->Flags.data(), this->GetNumberOfVertices(), vertexTo);
+  Permute(this->Corners, this->GetNumberOfFaceSlots(), faceTo, 3);
+  Permute(this->Out, this->GetNumberOfVertices(), vertexTo);
+  Permute(this->Flags, this->GetNumberOfVertices(), vertexTo);
 }
 
 } // namespace colordecimation

@@ -824,7 +824,7 @@ void TestSpatialOrder()
   const double outside[3] = { -5, 2, std::nan("") };
   CD_CHECK(MortonCode(outside, lo, 1.0) == code(0, 1023, 0)); // clamped; NaN goes to 0
 
-  // PermuteInPlace: block i goes to block to[i], cycles of every length included.
+  // Permute: block i goes to block to[i], cycles of every length included.
   {
     const int32_t to[7] = { 3, 0, 1, 2, 4, 6, 5 }; // a 4-cycle, a fixed point, a swap
     std::vector<int> values;
@@ -832,7 +832,7 @@ void TestSpatialOrder()
     {
       values.insert(values.end(), { 10 * i, 10 * i + 1 });
     }
-    PermuteInPlace(values.data(), 7, to, 2);
+    Permute(values, 7, to, 2);
     for (int i = 0; i < 7; ++i)
     {
       CD_CHECK(values[2 * to[i]] == 10 * i && values[2 * to[i] + 1] == 10 * i + 1);
