@@ -392,7 +392,7 @@ void Decimator::RenumberInput(const DecimatorInput& original, SpatialOrder& orde
 void Decimator::RestoreOrder(const SpatialOrder& order)
 {
   // The heap and the choices refer to the renumbered ids and are of no use after Run: freed
-  // first, so that mapping back adds nothing to the peak.
+  // first, so that each copy made while mapping back is smaller than what they held.
   this->Heap.Release();
   this->Best = std::vector<int32_t>();
   this->Bounded = std::vector<uint8_t>();

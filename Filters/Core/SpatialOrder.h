@@ -54,7 +54,7 @@ VTKCOLORDECIMATION_EXPORT void ComputeSpatialOrder(int32_t numVertices, const do
  * Move block i of `block` consecutive values to block to[i], for i in [0, count) (`to` is a
  * permutation of [0, count)), through a second array: independent moves, so the cache misses
  * of the scattered writes overlap (following the permutation's cycles in place is several
- * times slower). The caller frees what it can before, so as not to raise the peak.
+ * times slower). The caller frees what it can before, so that the copy fits in what it freed.
  */
 template <typename T>
 void Permute(std::vector<T>& values, int64_t count, const int32_t* to, int block = 1)
