@@ -420,6 +420,8 @@ void KeepConsistentArrays(vtkDataSetAttributes* data, vtkIdType tuples,
 //------------------------------------------------------------------------------
 vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   : ErrorMetric(HalfEdgeColor)
+  , CollapseSchedule(Greedy)
+  , NumberOfThreads(0)
   , ColorSpace(RGB)
   , OptimalPlacement(false)
   , ColorWeight(1.0)
@@ -457,6 +459,12 @@ const char* vtkColorHalfEdgeDecimation::GetErrorMetricAsString()
     default:
       return "HalfEdgeColor";
   }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkColorHalfEdgeDecimation::GetCollapseScheduleAsString()
+{
+  return this->CollapseSchedule == Batched ? "Batched" : "Greedy";
 }
 
 //------------------------------------------------------------------------------
@@ -601,6 +609,9 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   options.Space = this->ColorSpace == CIELab ? colordecimation::ColorSpace::CIELab
                                              : colordecimation::ColorSpace::RGB;
   options.OptimalPlacement = this->OptimalPlacement != 0;
+  options.Schedule = this->CollapseSchedule == Batched ? colordecimation::CollapseSchedule::Batched
+                                                       : colordecimation::CollapseSchedule::Greedy;
+  options.NumberOfThreads = this->NumberOfThreads;
   options.ColorWeight = this->ColorWeight;
   options.BoundaryWeight = this->BoundaryWeight;
   options.PreserveBoundary = this->PreserveBoundary != 0;
@@ -818,6 +829,8 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ErrorMetric: " << this->GetErrorMetricAsString() << "\n";
+  os << indent << "CollapseSchedule: " << this->GetCollapseScheduleAsString() << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "ColorSpace: " << this->GetColorSpaceAsString() << "\n";
   os << indent << "OptimalPlacement: " << (this->OptimalPlacement ? "On" : "Off") << "\n";
   os << indent << "ColorWeight: " << this->ColorWeight << "\n";

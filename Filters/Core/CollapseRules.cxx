@@ -92,7 +92,7 @@ CollapseVerdict CollapseRules::CheckTopology(const HalfEdgeMesh& mesh, int32_t v
     {
       return CollapseVerdict::LinkCondition;
     }
-    if (!mesh.IsBoundaryVertex(x) && mesh.Valence(x) <= 3)
+    if (!mesh.IsBoundaryVertex(x) && mesh.IsValenceAtMost(x, 3))
     {
       return CollapseVerdict::LinkCondition;
     }

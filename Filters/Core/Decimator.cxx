@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
+#include <thread>
 
 namespace colordecimation
 {
@@ -30,7 +32,7 @@ CollapseRuleOptions MakeRuleOptions(const DecimatorOptions& options)
 
 Decimator::Decimator(const DecimatorOptions& options)
   : Options(options)
-  , Rules(MakeRuleOptions(options))
+  , Main(CollapseRules(MakeRuleOptions(options)))
 {
 }
 
@@ -167,7 +169,7 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   // Each face slot's input normal bounds how far collapses may turn it, in total.
   CollapseRules::ComputeReferenceNormals(this->Mesh, this->Positions(), HotStride,
                                          this->ReferenceNormals);
-  this->Rules.SetReferenceNormals(this->ReferenceNormals.data());
+  this->Main.Rules.SetReferenceNormals(this->ReferenceNormals.data());
   // The renumbered copies of the input, if any, are no longer needed: everything below reads
   // the mesh, the hot records and the metric state.
   points = std::vector<double>();
@@ -180,148 +182,20 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   input.Triangles = nullptr;
   input.Fixed = nullptr;
 
-  // 4. Initial costs.
-  this->Heap.Reset(n);
-  this->Best.assign(n, -1);
-  this->Bounded.assign(n, 0);
-  for (int32_t v = 0; v < n; ++v)
+  this->ThreadsUsed = 1;
+  // 4-5. Cost every vertex, then collapse: one at a time in the heap's order (the paper's),
+  // or in batches of independent collapses, each followed by a re-costing pass.
+  if (this->Options.Schedule == CollapseSchedule::Batched)
   {
-    this->Update(v);
+    this->CollapseInBatches(stats, progress);
   }
-
-  // 5. Collapse.
-  const int64_t startFaces = this->Mesh.GetNumberOfLiveFaces();
-  // Prefetching pays for itself only when the neighbourhoods are not in cache anyway.
-  const bool prefetch = large;
-  const int64_t toRemove = std::max<int64_t>(startFaces - stats.TargetTriangles, 1);
-  int64_t nextReport = 0;
-  while (this->Mesh.GetNumberOfLiveFaces() > stats.TargetTriangles && !this->Heap.Empty())
+  else
   {
-    const int32_t v0 = this->Heap.Top();
-    const int32_t v1 = this->Best[v0];
-    if (v1 < 0)
-    {
-      this->Heap.Pop(); // no collapse left for v0 (removed lazily)
-      continue;
-    }
-    if (this->Bounded[v0])
-    {
-      // Its key was a lower bound (a high-valence vertex): cost it exactly, and back it goes.
-      this->Bounded[v0] = 0;
-      const Choice exact = this->Evaluate(v0, false);
-      this->Best[v0] = exact.Target;
-      if (exact.Target < 0)
-      {
-        this->Heap.Remove(v0);
-      }
-      else
-      {
-        this->Heap.Set(v0, exact.Cost);
-      }
-      continue;
-    }
-    if (prefetch)
-    {
-      this->PrefetchNeighborhood(v0);
-    }
-    // A full collapse (ColorQuadric with OptimalPlacement) puts v1 at the placement y.
-    double y[6];
-    bool moves = false;
-    double newPosition[3];
-    if (this->Placement)
-    {
-      double d01[6];
-      this->Offset6(v0, v1, d01);
-      this->PlaceCollapse(v0, v1, d01, y);
-      moves = !std::equal(y, y + 6, d01);
-      this->PlacementPosition(v0, y, newPosition);
-    }
-    if (!(moves ? this->Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride, newPosition)
-                : this->Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride)))
-    {
-      ++stats.RejectedPops;
-      const Choice legal = this->Evaluate(v0, true);
-      this->Best[v0] = legal.Target;
-      if (legal.Target < 0)
-      {
-        this->Heap.Remove(v0);
-      }
-      else
-      {
-        this->Heap.Set(v0, legal.Cost);
-      }
-      continue;
-    }
-    this->Heap.Pop();
-
-    if (this->QuadricMetric)
-    {
-      this->MergeColorQuadric(v0, v1, moves, y);
-    }
-    else
-    {
-      // eq. 9 and 15: v1 takes over v0's quadric and importance.
-      VertexMetric& m0 = this->Metrics[v0];
-      VertexMetric& m1 = this->Metrics[v1];
-      const float* p0 = this->Hot[v0].P;
-      const float* p1 = this->Hot[v1].P;
-      const double d[3] = { double(p1[0]) - p0[0], double(p1[1]) - p0[1], double(p1[2]) - p0[2] };
-      m1.Q.AddShifted(m0.Q, d);
-      m1.Importance += m0.Importance;
-      m1.MaxColorDistance = std::max(m1.MaxColorDistance, m0.MaxColorDistance);
-      this->Hot[v1].QC = m1.Q.C;
-    }
-
-    this->FormerNeighbors.clear();
-    this->Mesh.ForEachNeighbor(v0, [this](int32_t u) { this->FormerNeighbors.push_back(u); });
-    this->Mesh.Collapse(v0, v1);
-    ++stats.Collapses;
-    this->Best[v0] = -1;
-
-    // v1 and v0's former neighbours have a new 1-ring: re-cost them. The other neighbours
-    // of v1 only saw their cost towards v1 grow: re-cost those whose choice was v1 (v0's
-    // former neighbours, now all neighbours of v1, were just re-costed). After a
-    // full collapse every cost towards v1 may have changed (its point and quadric both
-    // did): its whole new 1-ring, which holds v0's former neighbours, is re-costed.
-    this->Update(v1);
-    if (this->Placement)
-    {
-      this->Mesh.ForEachNeighbor(v1, [this](int32_t u) { this->Update(u); });
-    }
-    else
-    {
-      for (int32_t u : this->FormerNeighbors)
-      {
-        if (u != v1)
-        {
-          this->Update(u);
-        }
-      }
-      this->Mesh.ForEachNeighbor(v1,
-                                 [this, v1](int32_t u)
-                                 {
-                                   if (this->Best[u] == v1 &&
-                                       std::find(this->FormerNeighbors.begin(),
-                                                 this->FormerNeighbors.end(),
-                                                 u) == this->FormerNeighbors.end())
-                                   {
-                                     this->Update(u);
-                                   }
-                                 });
-    }
-
-    if (progress && stats.Collapses >= nextReport)
-    {
-      nextReport = stats.Collapses + 8192;
-      const double done = double(startFaces - this->Mesh.GetNumberOfLiveFaces()) / toRemove;
-      if (!progress(std::min(done, 1.0)))
-      {
-        stats.Aborted = true;
-        break;
-      }
-    }
+    this->CollapseGreedily(stats, large, progress);
   }
-  this->Rules.SetReferenceNormals(nullptr);
+  stats.Threads = this->ThreadsUsed;
+  this->Workers.clear();
+  this->Main.Rules.SetReferenceNormals(nullptr);
   this->ReferenceNormals = std::vector<float>();
   if (!order.Empty())
   {
@@ -432,7 +306,14 @@ void Decimator::PrefetchNeighborhood(int32_t v0)
                                    COLORDECIMATION_PREFETCH(this->Metrics.data() + u);
                                  }
                                  COLORDECIMATION_PREFETCH(this->Best.data() + u);
-                                 this->Heap.Prefetch(u);
+                                 if (this->Stamp.empty())
+                                 {
+                                   this->Heap.Prefetch(u);
+                                 }
+                                 else
+                                 {
+                                   COLORDECIMATION_PREFETCH(this->Stamp.data() + u);
+                                 }
                                  start[count++] = u;
                                }
                              });
@@ -472,7 +353,7 @@ void Decimator::Update(int32_t v)
   {
     return;
   }
-  const Choice best = this->Evaluate(v, false, true);
+  const Choice best = this->Evaluate(v, false, true, this->Main);
   this->Best[v] = best.Target;
   this->Bounded[v] = best.Bound ? 1 : 0;
   if (best.Target < 0)
@@ -482,9 +363,374 @@ void Decimator::Update(int32_t v)
   this->Heap.Set(v, best.Cost);
 }
 
-void Decimator::GatherRing(int32_t v0)
+int Decimator::ThreadCount(size_t evaluations) const
 {
-  Ring& ring = this->CurrentRing;
+  int threads = this->Options.NumberOfThreads;
+  if (threads <= 0)
+  {
+    threads = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  }
+  // A thread is worth starting for some thousands of evaluations only.
+  const size_t useful = std::max<size_t>(1, evaluations / MinimumThreadWork);
+  return static_cast<int>(std::min<size_t>(static_cast<size_t>(threads), useful));
+}
+
+void Decimator::EvaluateAll(const int32_t* vertices, size_t count, bool exact, bool allowBound,
+                            double* keys)
+{
+  // Each evaluation reads the mesh and the per-vertex state, and writes its own vertex's
+  // entries only: the vertices can be shared among threads in any way, with the same result.
+  auto evaluate = [this, vertices, exact, allowBound, keys](Workspace& ws, size_t begin, size_t end)
+  {
+    for (size_t i = begin; i < end; ++i)
+    {
+      const int32_t v = vertices[i];
+      Choice choice;
+      if (!this->Mesh.IsLocked(v) && !this->Mesh.IsRemoved(v))
+      {
+        choice = this->Evaluate(v, exact, allowBound, ws);
+      }
+      this->Best[v] = choice.Target;
+      this->Bounded[v] = choice.Bound ? 1 : 0;
+      keys[v] = choice.Cost;
+    }
+  };
+  const int threads = this->ThreadCount(count);
+  this->ThreadsUsed = std::max(this->ThreadsUsed, threads);
+  if (threads <= 1)
+  {
+    evaluate(this->Main, 0, count);
+    return;
+  }
+  while (this->Workers.size() < static_cast<size_t>(threads - 1))
+  {
+    this->Workers.push_back(this->Main); // its own scratch; the same rules and normals
+  }
+  std::vector<std::thread> pool;
+  pool.reserve(threads - 1);
+  for (int t = 1; t < threads; ++t)
+  {
+    pool.emplace_back(evaluate, std::ref(this->Workers[t - 1]), count * t / threads,
+                      count * (t + 1) / threads);
+  }
+  evaluate(this->Main, 0, count / threads);
+  for (std::thread& thread : pool)
+  {
+    thread.join();
+  }
+}
+
+bool Decimator::IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, double y[6])
+{
+  // A full collapse (ColorQuadric with OptimalPlacement) puts v1 at the placement y.
+  moves = false;
+  if (this->Placement)
+  {
+    double d01[6];
+    this->Offset6(v0, v1, d01);
+    this->PlaceCollapse(v0, v1, d01, y);
+    moves = !std::equal(y, y + 6, d01);
+    if (moves)
+    {
+      double newPosition[3];
+      this->PlacementPosition(v0, y, newPosition);
+      return this->Main.Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride,
+                                      newPosition);
+    }
+  }
+  return this->Main.Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride);
+}
+
+void Decimator::ApplyCollapse(int32_t v0, int32_t v1, bool moves, const double y[6])
+{
+  if (this->QuadricMetric)
+  {
+    this->MergeColorQuadric(v0, v1, moves, y);
+  }
+  else
+  {
+    // eq. 9 and 15: v1 takes over v0's quadric and importance.
+    VertexMetric& m0 = this->Metrics[v0];
+    VertexMetric& m1 = this->Metrics[v1];
+    const float* p0 = this->Hot[v0].P;
+    const float* p1 = this->Hot[v1].P;
+    const double d[3] = { double(p1[0]) - p0[0], double(p1[1]) - p0[1], double(p1[2]) - p0[2] };
+    m1.Q.AddShifted(m0.Q, d);
+    m1.Importance += m0.Importance;
+    m1.MaxColorDistance = std::max(m1.MaxColorDistance, m0.MaxColorDistance);
+    this->Hot[v1].QC = m1.Q.C;
+  }
+  this->FormerNeighbors.clear();
+  this->Mesh.ForEachNeighbor(v0, [this](int32_t u) { this->FormerNeighbors.push_back(u); });
+  this->Mesh.Collapse(v0, v1);
+  this->Best[v0] = -1;
+}
+
+template <typename Function>
+void Decimator::ForEachAffected(int32_t v1, Function&& f) const
+{
+  // v1 and v0's former neighbours have a new 1-ring. The other neighbours of v1 only saw their
+  // cost towards v1 grow: only those whose choice was v1 are affected. After a full collapse
+  // every cost towards v1 may have changed (its point and quadric both did): its whole new
+  // 1-ring, which holds v0's former neighbours, is affected.
+  f(v1);
+  if (this->Placement)
+  {
+    this->Mesh.ForEachNeighbor(v1, f);
+    return;
+  }
+  for (int32_t u : this->FormerNeighbors)
+  {
+    if (u != v1)
+    {
+      f(u);
+    }
+  }
+  this->Mesh.ForEachNeighbor(v1,
+                             [this, v1, &f](int32_t u)
+                             {
+                               if (this->Best[u] == v1 &&
+                                   std::find(this->FormerNeighbors.begin(),
+                                             this->FormerNeighbors.end(),
+                                             u) == this->FormerNeighbors.end())
+                               {
+                                 f(u);
+                               }
+                             });
+}
+
+void Decimator::CollapseGreedily(DecimatorStatistics& stats, bool prefetch,
+                                 const std::function<bool(double)>& progress)
+{
+  const int32_t n = this->Mesh.GetNumberOfVertices();
+  this->Heap.Reset(n);
+  this->Best.assign(n, -1);
+  this->Bounded.assign(n, 0);
+  {
+    std::vector<int32_t> all(n);
+    std::iota(all.begin(), all.end(), 0);
+    std::vector<double> keys(n);
+    this->EvaluateAll(all.data(), all.size(), false, true, keys.data());
+    for (int32_t v = 0; v < n; ++v)
+    {
+      if (this->Best[v] >= 0)
+      {
+        this->Heap.Set(v, keys[v]);
+      }
+    }
+  }
+
+  const int64_t startFaces = this->Mesh.GetNumberOfLiveFaces();
+  const int64_t toRemove = std::max<int64_t>(startFaces - stats.TargetTriangles, 1);
+  int64_t nextReport = 0;
+  while (this->Mesh.GetNumberOfLiveFaces() > stats.TargetTriangles && !this->Heap.Empty())
+  {
+    const int32_t v0 = this->Heap.Top();
+    const int32_t v1 = this->Best[v0];
+    if (v1 < 0)
+    {
+      this->Heap.Pop(); // no collapse left for v0 (removed lazily)
+      continue;
+    }
+    if (this->Bounded[v0])
+    {
+      // Its key was a lower bound (a high-valence vertex): cost it exactly, and back it goes.
+      this->Bounded[v0] = 0;
+      const Choice exact = this->Evaluate(v0, false, false, this->Main);
+      this->Best[v0] = exact.Target;
+      if (exact.Target < 0)
+      {
+        this->Heap.Remove(v0);
+      }
+      else
+      {
+        this->Heap.Set(v0, exact.Cost);
+      }
+      continue;
+    }
+    if (prefetch)
+    {
+      this->PrefetchNeighborhood(v0);
+    }
+    double y[6];
+    bool moves = false;
+    if (!this->IsCollapseLegal(v0, v1, moves, y))
+    {
+      ++stats.RejectedPops;
+      const Choice legal = this->Evaluate(v0, true, false, this->Main);
+      this->Best[v0] = legal.Target;
+      if (legal.Target < 0)
+      {
+        this->Heap.Remove(v0);
+      }
+      else
+      {
+        this->Heap.Set(v0, legal.Cost);
+      }
+      continue;
+    }
+    this->Heap.Pop();
+    this->ApplyCollapse(v0, v1, moves, y);
+    ++stats.Collapses;
+    this->ForEachAffected(v1, [this](int32_t u) { this->Update(u); });
+
+    if (progress && stats.Collapses >= nextReport)
+    {
+      nextReport = stats.Collapses + 8192;
+      const double done = double(startFaces - this->Mesh.GetNumberOfLiveFaces()) / toRemove;
+      if (!progress(std::min(done, 1.0)))
+      {
+        stats.Aborted = true;
+        break;
+      }
+    }
+  }
+}
+
+void Decimator::CollapseInBatches(DecimatorStatistics& stats,
+                                  const std::function<bool(double)>& progress)
+{
+  const int32_t n = this->Mesh.GetNumberOfVertices();
+  this->Best.assign(n, -1);
+  this->Bounded.assign(n, 0);
+  std::vector<double> keys(n);
+  {
+    std::vector<int32_t> all(n);
+    std::iota(all.begin(), all.end(), 0);
+    this->EvaluateAll(all.data(), all.size(), false, false, keys.data());
+  }
+  // stamp[v] == pass: v was affected by a collapse of this pass (its key is stale) or its
+  // chosen collapse was found illegal; either way it waits for the re-costing.
+  this->Stamp.assign(n, 0);
+  std::vector<int32_t>& stamp = this->Stamp;
+  std::vector<std::pair<double, int32_t>> candidates;
+  std::vector<int32_t> affected, rejected;
+  const int64_t startFaces = this->Mesh.GetNumberOfLiveFaces();
+  const int64_t toRemove = std::max<int64_t>(startFaces - stats.TargetTriangles, 1);
+  int64_t nextReport = 8192;
+  int32_t pass = 0;
+  while (this->Mesh.GetNumberOfLiveFaces() > stats.TargetTriangles && !stats.Aborted)
+  {
+    ++pass;
+    candidates.clear();
+    for (int32_t v = 0; v < n; ++v)
+    {
+      if (this->Best[v] >= 0)
+      {
+        candidates.emplace_back(keys[v], v);
+      }
+    }
+    if (candidates.empty())
+    {
+      break;
+    }
+    // The batch: the cheapest fraction of the candidates, no more than the collapses still
+    // needed (each removes two triangles, one on a boundary).
+    const int64_t needed = (this->Mesh.GetNumberOfLiveFaces() - stats.TargetTriangles + 1) / 2;
+    const size_t batch = static_cast<size_t>(std::max<int64_t>(
+      1,
+      std::min<int64_t>(needed,
+                        static_cast<int64_t>(std::ceil(this->Options.BatchFraction *
+                                                       static_cast<double>(candidates.size()))))));
+    const auto end = candidates.begin() + std::min(batch, candidates.size());
+    std::nth_element(candidates.begin(), end - 1, candidates.end());
+    std::sort(candidates.begin(), end);
+
+    affected.clear();
+    rejected.clear();
+    const size_t count = static_cast<size_t>(end - candidates.begin());
+    for (size_t i = 0; i < count; ++i)
+    {
+      if (this->Mesh.GetNumberOfLiveFaces() <= stats.TargetTriangles)
+      {
+        break;
+      }
+      // The batch is known in advance: its neighbourhoods are fetched a few collapses ahead,
+      // in three stages (the vertex, its first face, its 2-ring), none of which waits.
+      if (i + FarAhead < count)
+      {
+        const int32_t v = candidates[i + FarAhead].second;
+        this->Mesh.PrefetchVertex(v);
+        COLORDECIMATION_PREFETCH(stamp.data() + v);
+        COLORDECIMATION_PREFETCH(this->Best.data() + v);
+      }
+      if (i + MiddleAhead < count)
+      {
+        const int32_t v = candidates[i + MiddleAhead].second;
+        this->Mesh.PrefetchFirstFace(v);
+        const int32_t target = this->Best[v];
+        if (target >= 0)
+        {
+          this->Mesh.PrefetchVertex(target);
+          COLORDECIMATION_PREFETCH(stamp.data() + target);
+        }
+        COLORDECIMATION_PREFETCH(this->Hot.data() + v);
+      }
+      if (i + NearAhead < count)
+      {
+        const int32_t v = candidates[i + NearAhead].second;
+        const int32_t target = this->Best[v];
+        if (target >= 0)
+        {
+          this->Mesh.PrefetchFirstFace(target);
+          COLORDECIMATION_PREFETCH(this->Hot.data() + target);
+        }
+      }
+      const int32_t v0 = candidates[i].second;
+      const int32_t v1 = this->Best[v0];
+      if (stamp[v0] == pass || v1 < 0 || stamp[v1] == pass)
+      {
+        continue; // its key is stale (a neighbour collapsed) or its target moved
+      }
+      double y[6];
+      bool moves = false;
+      if (!this->IsCollapseLegal(v0, v1, moves, y))
+      {
+        ++stats.RejectedPops;
+        stamp[v0] = pass;
+        rejected.push_back(v0);
+        continue;
+      }
+      this->ApplyCollapse(v0, v1, moves, y);
+      ++stats.Collapses;
+      this->ForEachAffected(v1,
+                            [pass, &stamp, &affected](int32_t u)
+                            {
+                              if (stamp[u] != pass)
+                              {
+                                stamp[u] = pass;
+                                affected.push_back(u);
+                              }
+                            });
+      if (progress && stats.Collapses >= nextReport)
+      {
+        nextReport = stats.Collapses + 8192;
+        const double done = double(startFaces - this->Mesh.GetNumberOfLiveFaces()) / toRemove;
+        if (!progress(std::min(done, 1.0)))
+        {
+          stats.Aborted = true;
+          break;
+        }
+      }
+    }
+    ++stats.Passes;
+
+    // Re-cost in vertex order (neighbours in memory are neighbours on the surface); the
+    // rejected ones over their legal collapses only.
+    std::sort(affected.begin(), affected.end());
+    this->EvaluateAll(affected.data(), affected.size(), false, false, keys.data());
+    this->EvaluateAll(rejected.data(), rejected.size(), true, false, keys.data());
+    if (progress && !stats.Aborted)
+    {
+      const double done = double(startFaces - this->Mesh.GetNumberOfLiveFaces()) / toRemove;
+      stats.Aborted = !progress(std::min(done, 1.0));
+    }
+  }
+  this->Stamp = std::vector<int32_t>();
+}
+
+void Decimator::GatherRing(int32_t v0, Ring& ring) const
+{
   ring.Clear();
   const bool boundary = this->Mesh.IsBoundaryVertex(v0);
   this->Mesh.ForEachNeighbor(v0,
@@ -507,15 +753,15 @@ void Decimator::GatherRing(int32_t v0)
 }
 
 COLORDECIMATION_VECTOR_CLONES
-void Decimator::CostRing(int32_t v0, bool withColorError)
+void Decimator::CostRing(int32_t v0, bool withColorError, Workspace& ws) const
 {
-  Ring& ring = this->CurrentRing;
+  Ring& ring = ws.CurrentRing;
   const int n = ring.PaddedSize();
-  if (this->Costs.size() < static_cast<size_t>(n))
+  if (ws.Costs.size() < static_cast<size_t>(n))
   {
-    this->Costs.resize(2 * n);
+    ws.Costs.resize(2 * n);
   }
-  double* costs = this->Costs.data();
+  double* costs = ws.Costs.data();
   const HotVertex& hot0 = this->Hot[v0];
   const double p0[3] = { hot0.P[0], hot0.P[1], hot0.P[2] };
   const bool paperMetric = this->Options.Metric == ErrorMetric::HalfEdgeColor;
@@ -549,7 +795,7 @@ void Decimator::CostRing(int32_t v0, bool withColorError)
   }
 }
 
-Decimator::Choice Decimator::Evaluate(int32_t v0, bool exact, bool allowBound)
+Decimator::Choice Decimator::Evaluate(int32_t v0, bool exact, bool allowBound, Workspace& ws) const
 {
   Choice choice;
   if (!this->Mesh.IsCollapsible(v0) ||
@@ -559,60 +805,60 @@ Decimator::Choice Decimator::Evaluate(int32_t v0, bool exact, bool allowBound)
   }
   if (this->QuadricMetric)
   {
-    this->GatherRing(v0);
-    this->CostRingColorQuadric(v0);
+    this->GatherRing(v0, ws.CurrentRing);
+    this->CostRingColorQuadric(v0, ws);
   }
   else
   {
     COLORDECIMATION_PREFETCH(this->Metrics.data() + v0);
-    this->GatherRing(v0);
+    this->GatherRing(v0, ws.CurrentRing);
     choice.Bound = allowBound && !exact && this->Options.BoundHighValence &&
-      this->CurrentRing.Size > LargeRing && this->Options.Metric == ErrorMetric::HalfEdgeColor &&
+      ws.CurrentRing.Size > LargeRing && this->Options.Metric == ErrorMetric::HalfEdgeColor &&
       this->UseColor;
-    this->CostRing(v0, !choice.Bound);
+    this->CostRing(v0, !choice.Bound, ws);
   }
-  const Ring& ring = this->CurrentRing;
+  const Ring& ring = ws.CurrentRing;
   if (!exact)
   {
     double best = std::numeric_limits<double>::infinity();
     for (int j = 0; j < ring.Size; ++j)
     {
-      if (ring.IsCandidate[j] && this->Costs[j] < best)
+      if (ring.IsCandidate[j] && ws.Costs[j] < best)
       {
-        best = this->Costs[j];
+        best = ws.Costs[j];
         choice.Target = ring.Vertex[j];
       }
     }
     choice.Cost = best;
     return choice;
   }
-  this->Order.clear();
+  ws.Order.clear();
   for (int j = 0; j < ring.Size; ++j)
   {
     if (ring.IsCandidate[j])
     {
-      this->Order.push_back(j);
+      ws.Order.push_back(j);
     }
   }
-  std::sort(this->Order.begin(), this->Order.end(),
-            [this](int a, int b) { return this->Costs[a] < this->Costs[b]; });
-  for (int j : this->Order)
+  std::sort(ws.Order.begin(), ws.Order.end(),
+            [&ws](int a, int b) { return ws.Costs[a] < ws.Costs[b]; });
+  for (int j : ws.Order)
   {
     bool legal;
     if (this->Placement)
     {
       double p[3];
-      this->PlacementPosition(v0, &this->Placements[6 * j], p);
-      legal = this->Rules.IsLegal(this->Mesh, this->Positions(), v0, ring.Vertex[j], HotStride, p);
+      this->PlacementPosition(v0, &ws.Placements[6 * j], p);
+      legal = ws.Rules.IsLegal(this->Mesh, this->Positions(), v0, ring.Vertex[j], HotStride, p);
     }
     else
     {
-      legal = this->Rules.IsLegal(this->Mesh, this->Positions(), v0, ring.Vertex[j], HotStride);
+      legal = ws.Rules.IsLegal(this->Mesh, this->Positions(), v0, ring.Vertex[j], HotStride);
     }
     if (legal)
     {
       choice.Target = ring.Vertex[j];
-      choice.Cost = this->Costs[j];
+      choice.Cost = ws.Costs[j];
       break;
     }
   }
@@ -625,24 +871,25 @@ double Decimator::CollapseCost(int32_t v0, int32_t v1)
   {
     return -1;
   }
-  this->GatherRing(v0);
-  for (int j = 0; j < this->CurrentRing.Size; ++j)
+  Workspace& ws = this->Main;
+  this->GatherRing(v0, ws.CurrentRing);
+  for (int j = 0; j < ws.CurrentRing.Size; ++j)
   {
-    this->CurrentRing.IsCandidate[j] = this->CurrentRing.Vertex[j] == v1;
+    ws.CurrentRing.IsCandidate[j] = ws.CurrentRing.Vertex[j] == v1;
   }
   if (this->QuadricMetric)
   {
-    this->CostRingColorQuadric(v0);
+    this->CostRingColorQuadric(v0, ws);
   }
   else
   {
-    this->CostRing(v0);
+    this->CostRing(v0, true, ws);
   }
-  for (int j = 0; j < this->CurrentRing.Size; ++j)
+  for (int j = 0; j < ws.CurrentRing.Size; ++j)
   {
-    if (this->CurrentRing.Vertex[j] == v1)
+    if (ws.CurrentRing.Vertex[j] == v1)
     {
-      return this->Costs[j];
+      return ws.Costs[j];
     }
   }
   return -1;
@@ -673,19 +920,19 @@ void Decimator::PlacementPosition(int32_t v0, const double y[6], double p[3]) co
   }
 }
 
-void Decimator::CostRingColorQuadric(int32_t v0)
+void Decimator::CostRingColorQuadric(int32_t v0, Workspace& ws) const
 {
-  Ring& ring = this->CurrentRing;
+  Ring& ring = ws.CurrentRing;
   const int n = ring.PaddedSize();
-  if (this->Costs.size() < static_cast<size_t>(n))
+  if (ws.Costs.size() < static_cast<size_t>(n))
   {
-    this->Costs.resize(2 * n);
+    ws.Costs.resize(2 * n);
   }
-  if (this->Placement && this->Placements.size() < 6 * static_cast<size_t>(n))
+  if (this->Placement && ws.Placements.size() < 6 * static_cast<size_t>(n))
   {
-    this->Placements.resize(12 * n);
+    ws.Placements.resize(12 * n);
   }
-  double* costs = this->Costs.data();
+  double* costs = ws.Costs.data();
   const HotVertex& hot0 = this->Hot[v0];
   const double g = this->CubeScale;
   const double w = std::max(this->Options.ColorWeight, 0.0);
@@ -698,7 +945,7 @@ void Decimator::CostRingColorQuadric(int32_t v0)
     if (this->Placement)
     {
       costs[j] = ring.IsCandidate[j]
-        ? this->PlaceCollapse(v0, ring.Vertex[j], d, &this->Placements[6 * j])
+        ? this->PlaceCollapse(v0, ring.Vertex[j], d, &ws.Placements[6 * j])
         : std::numeric_limits<double>::infinity();
     }
     else

@@ -10,10 +10,19 @@
  * 1. HalfEdgeMesh::Build: connectivity, locking of non-manifold places;
  * 2. the normalised frame: bounding-box centre at the origin, mean edge length 1 (SPEC.md);
  * 3. InitializeVertexMetrics: area-weighted quadrics and visual importance;
- * 4. every vertex costed (Evaluate) and pushed on the VertexHeap;
- * 5. pop, check CollapseRules, collapse, merge the metric state (Q and I accumulate into v1),
- *    re-cost v1, v0's former neighbours (their 1-ring changed) and those neighbours of v1
- *    whose chosen target was v1 (its quadric grew).
+ * 4. every vertex costed (Evaluate, on NumberOfThreads threads: EvaluateAll) and, with the
+ *    Greedy schedule, pushed on the VertexHeap;
+ * 5. Greedy (CollapseGreedily): pop, check CollapseRules, collapse, merge the metric state
+ *    (Q and I accumulate into v1), re-cost v1, v0's former neighbours (their 1-ring changed)
+ *    and those neighbours of v1 whose chosen target was v1 (its quadric grew).
+ *    Batched (CollapseInBatches): take the cheapest BatchFraction of the vertices' chosen
+ *    collapses, sorted; make each in turn unless a collapse before it in this pass affected
+ *    its vertex or its target (its key is stale) or the rules forbid it (it is re-costed
+ *    over its legal collapses); then re-cost every affected vertex at once, in memory order
+ *    and on several threads. The affected vertices are those Greedy re-costs, so a batch of
+ *    one is exactly Greedy (tested); larger batches trade the strict global order for
+ *    locality and parallelism. The batch is known in advance, so its neighbourhoods are
+ *    prefetched a few collapses ahead.
  *
  * The loop is bound by memory latency, not arithmetic: each collapse happens somewhere else
  * on the surface and re-costs the 2-ring around it, which is seldom in cache. Three things
@@ -77,6 +86,25 @@ enum class ErrorMetric
   ColorQuadric = 2   ///< Garland-Heckbert's 6-D colour quadric (ColorQuadric.h)
 };
 
+/// The order in which collapses are made.
+enum class CollapseSchedule
+{
+  /**
+   * One at a time, always the cheapest valid collapse of the whole mesh (the paper's
+   * order): a min-heap of vertices, the affected neighbours re-costed after each collapse.
+   */
+  Greedy = 0,
+  /**
+   * In passes: the cheapest BatchFraction of the vertices' chosen collapses, in cost order,
+   * each made unless a collapse earlier in the pass made its cost stale (a neighbour
+   * collapsed) or the rules forbid it; then every affected vertex is re-costed, on
+   * NumberOfThreads threads. The same cost, rules and re-costing as Greedy; the order is
+   * greedy within each batch. Cache-friendly (re-costing sweeps memory in order) and
+   * parallel; the result does not depend on the number of threads.
+   */
+  Batched = 1
+};
+
 struct DecimatorOptions
 {
   ErrorMetric Metric = ErrorMetric::HalfEdgeColor;
@@ -109,6 +137,12 @@ struct DecimatorOptions
    * collapses up to the order of equal costs; off only to test that claim.
    */
   bool Renumber = true;
+  CollapseSchedule Schedule = CollapseSchedule::Greedy;
+  /// Batched: the share of the candidate collapses that each pass considers, in (0, 1].
+  double BatchFraction = 0.125;
+  /// Threads that cost vertices (the initial costs; Batched: the re-costing passes); 0: one
+  /// per hardware thread. The result is the same for any number.
+  int NumberOfThreads = 0;
 };
 
 struct DecimatorInput
@@ -128,7 +162,9 @@ struct DecimatorStatistics
   int64_t TargetTriangles = 0;
   int64_t OutputTriangles = 0;
   int64_t Collapses = 0;
-  int64_t RejectedPops = 0;  ///< popped collapses that failed the rules and were re-costed
+  int64_t RejectedPops = 0;  ///< chosen collapses that failed the rules and were re-costed
+  int64_t Passes = 0;        ///< Batched: re-costing passes
+  int Threads = 1;           ///< the most threads that costed vertices at once
   double MeanEdgeLength = 0; ///< of the input, in its own units (the frame's unit)
   bool Aborted = false;
   size_t StateBytes = 0; ///< bytes held by the decimator's arrays
@@ -185,7 +221,44 @@ private:
    * allowBound, a vertex of more than LargeRing neighbours under the paper's metric gets the
    * lower bound (1 + Q)(1 + I) instead (C >= 0): O(k) instead of the O(k^2) colour error.
    */
-  Choice Evaluate(int32_t v0, bool exact, bool allowBound = false);
+  /// What costing one vertex writes to: one per thread.
+  struct Workspace
+  {
+    explicit Workspace(const CollapseRules& rules)
+      : Rules(rules)
+    {
+    }
+    Ring CurrentRing;
+    std::vector<double> Costs;
+    std::vector<int> Order;
+    std::vector<double> Placements; ///< ColorQuadric with OptimalPlacement: 6 per ring member
+    CollapseRules Rules;            ///< its own copy (the rules keep scratch)
+  };
+  Choice Evaluate(int32_t v0, bool exact, bool allowBound, Workspace& ws) const;
+  /**
+   * Evaluate each listed vertex (none twice) into Best, Bounded and keys[v], on up to
+   * ThreadCount threads; locked and removed vertices get no choice.
+   */
+  void EvaluateAll(const int32_t* vertices, size_t count, bool exact, bool allowBound,
+                   double* keys);
+  /// Threads worth starting for this many evaluations (NumberOfThreads at most).
+  int ThreadCount(size_t evaluations) const;
+  static constexpr size_t MinimumThreadWork = 4096;
+  /// Batched: how many collapses ahead each prefetch stage works.
+  static constexpr size_t FarAhead = 16, MiddleAhead = 8, NearAhead = 4;
+  /// Step 5, Greedy: the heap of vertices, one collapse at a time.
+  void CollapseGreedily(DecimatorStatistics& stats, bool prefetch,
+                        const std::function<bool(double)>& progress);
+  /// Step 5, Batched (CollapseSchedule::Batched).
+  void CollapseInBatches(DecimatorStatistics& stats, const std::function<bool(double)>& progress);
+  /// The rules' verdict on v0 -> v1; with OptimalPlacement, y is the placement and `moves`
+  /// whether it differs from v1's point.
+  bool IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, double y[6]);
+  /// Merge v0's metric state into v1 and collapse (FormerNeighbors: v0's neighbours before).
+  void ApplyCollapse(int32_t v0, int32_t v1, bool moves, const double y[6]);
+  /// The vertices whose chosen collapse or its cost the collapse into v1 may have changed.
+  template <typename Function>
+  void ForEachAffected(int32_t v1, Function&& f) const;
   static constexpr int LargeRing = 16;
   /**
    * From this many points on, the decimation's arrays (about 200 bytes per point) are far
@@ -201,8 +274,8 @@ private:
                             DecimatorInput& renumbered);
   /// Map the decimated mesh and the per-vertex state back to the input's ids.
   void RestoreOrder(const SpatialOrder& order);
-  void GatherRing(int32_t v0);
-  void CostRing(int32_t v0, bool withColorError = true);
+  void GatherRing(int32_t v0, Ring& ring) const;
+  void CostRing(int32_t v0, bool withColorError, Workspace& ws) const;
   void Update(int32_t v);
   /**
    * Bring what re-costing the 2-ring of v0 will read into the cache, walking the rings of all
@@ -210,7 +283,7 @@ private:
    */
   void PrefetchNeighborhood(int32_t v0);
   /// ColorQuadric: cost of every ring member (and, with OptimalPlacement, its placement).
-  void CostRingColorQuadric(int32_t v0);
+  void CostRingColorQuadric(int32_t v0, Workspace& ws) const;
   /**
    * ColorQuadric with OptimalPlacement: the cost of the full collapse of v0 and v1 and the
    * new vertex's offset y from v0's point of R^6 (d01: v1's offset from v0's point).
@@ -243,8 +316,9 @@ private:
   std::vector<ColorQuadric> ColorQuadrics;
   std::vector<uint8_t> Moved;
   bool AnyMoved = false;
-  std::vector<double> Placements; ///< scratch: 6 per ring member
-  CollapseRules Rules;
+  Workspace Main;                      ///< the calling thread's
+  std::vector<Workspace> Workers;      ///< the other threads' (during Run only)
+  int ThreadsUsed = 1;                 ///< the most threads EvaluateAll started in this Run
   std::vector<float> ReferenceNormals; ///< the input normal of every face slot (CollapseRules)
   HalfEdgeMesh Mesh;
   std::vector<HotVertex> Hot;
@@ -254,9 +328,7 @@ private:
   VertexHeap Heap;
   std::vector<int32_t> Best;    ///< vertex -> its chosen target, -1 if none
   std::vector<uint8_t> Bounded; ///< vertex -> its heap key is a lower bound, to be made exact
-  Ring CurrentRing;
-  std::vector<double> Costs;
-  std::vector<int> Order;
+  std::vector<int32_t> Stamp;   ///< Batched: vertex -> the last pass that made its key stale
 };
 
 } // namespace colordecimation

@@ -139,18 +139,51 @@ int HalfEdgeMesh::Valence(int32_t v) const
   return valence;
 }
 
+bool HalfEdgeMesh::IsValenceAtMost(int32_t v, int most) const
+{
+  // Counts as ForEachNeighbor visits, but stops as soon as the answer is known.
+  const int32_t start = this->Out[v];
+  if (start < 0)
+  {
+    return true;
+  }
+  int valence = 0;
+  int32_t h = start;
+  do
+  {
+    if (++valence > most)
+    {
+      return false;
+    }
+    const int32_t p = Prev(h);
+    h = this->Corners[p].Twin;
+    if (h < 0)
+    {
+      ++valence; // a boundary fan's last neighbour
+      break;
+    }
+  } while (h != start);
+  return valence <= most;
+}
+
 int32_t HalfEdgeMesh::FindHalfEdge(int32_t a, int32_t b) const
 {
-  int32_t found = -1;
-  this->ForEachOutgoing(a,
-                        [&](int32_t h)
-                        {
-                          if (this->Target(h) == b)
-                          {
-                            found = h;
-                          }
-                        });
-  return found;
+  // The fan of an unlocked vertex reaches each neighbour once: the first match is the one.
+  const int32_t start = this->Out[a];
+  if (start < 0)
+  {
+    return -1;
+  }
+  int32_t h = start;
+  do
+  {
+    if (this->Target(h) == b)
+    {
+      return h;
+    }
+    h = this->Corners[Prev(h)].Twin;
+  } while (h >= 0 && h != start);
+  return -1;
 }
 
 void HalfEdgeMesh::RemoveFace(int32_t h)

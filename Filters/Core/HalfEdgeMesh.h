@@ -32,6 +32,7 @@
 #ifndef colordecimation_HalfEdgeMesh_h
 #define colordecimation_HalfEdgeMesh_h
 
+#include "Prefetch.h"
 #include "vtkColorDecimationModule.h" // for export macro
 
 #include <cstdint>
@@ -70,6 +71,22 @@ public:
   int32_t Target(int32_t h) const { return this->Corners[Next(h)].Vertex; }
   int32_t Twin(int32_t h) const { return this->Corners[h].Twin; }
   int32_t Outgoing(int32_t v) const { return this->Out[v]; }
+
+  /// Hint that v's record is about to be read (the first stage of a prefetch pipeline).
+  void PrefetchVertex(int32_t v) const
+  {
+    COLORDECIMATION_PREFETCH(this->Out.data() + v);
+    COLORDECIMATION_PREFETCH(this->Flags.data() + v);
+  }
+  /// Hint that the face of v's outgoing half-edge is about to be read (reads Out[v]).
+  void PrefetchFirstFace(int32_t v) const
+  {
+    const int32_t h = this->Out[v];
+    if (h >= 0)
+    {
+      COLORDECIMATION_PREFETCH(this->Corners.data() + (h - h % 3));
+    }
+  }
 
   int32_t GetNumberOfVertices() const { return static_cast<int32_t>(this->Out.size()); }
   int32_t GetNumberOfFaceSlots() const { return static_cast<int32_t>(this->Corners.size() / 3); }
@@ -143,6 +160,8 @@ public:
 
   /// Number of neighbours of an unlocked vertex.
   int Valence(int32_t v) const;
+  /// Valence(v) <= most, walking no further than needed.
+  bool IsValenceAtMost(int32_t v, int most) const;
 
   /// The half-edge a -> b of an unlocked vertex a, or -1.
   int32_t FindHalfEdge(int32_t a, int32_t b) const;

@@ -690,6 +690,17 @@ void TestHalfEdgeBuildOpen()
   CD_CHECK(mesh.Valence((nx + 1) + 1) == 6);
   CD_CHECK(mesh.Valence(0) == 3);
   CD_CHECK(mesh.Valence(nx) == 2);
+  // The early-stopping test agrees with the count, at and around each vertex's valence.
+  long long disagreements = 0;
+  for (int32_t v = 0; v < m.NumberOfPoints(); ++v)
+  {
+    const int valence = mesh.Valence(v);
+    for (int most = valence - 2; most <= valence + 1; ++most)
+    {
+      disagreements += mesh.IsValenceAtMost(v, most) != (valence <= most) ? 1 : 0;
+    }
+  }
+  CD_CHECK(disagreements == 0);
   // A single triangle: three boundary edges.
   const int32_t one[3] = { 0, 1, 2 };
   HalfEdgeMesh single;
@@ -1127,6 +1138,156 @@ void TestRenumberSameResult()
 }
 
 //------------------------------------------------------------------------------
+/// A jittered sphere with random colours: no two collapses cost exactly the same.
+DecimatorInput JitteredSphere(int resolution, std::vector<double>& points,
+                              std::vector<float>& colors, std::vector<int32_t>& triangles)
+{
+  const PlainMesh m = ToPlain(meshes::UVSphere(resolution, meshes::Pattern::SmoothGradient));
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> jitter(-1e-3, 1e-3);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  points = m.Points;
+  for (double& x : points)
+  {
+    x += jitter(rng);
+  }
+  colors.resize(points.size());
+  for (float& c : colors)
+  {
+    c = unit(rng);
+  }
+  triangles = m.Triangles;
+  DecimatorInput input;
+  input.NumberOfPoints = m.NumberOfPoints();
+  input.Points = points.data();
+  input.Colors = colors.data();
+  input.NumberOfTriangles = m.NumberOfTriangles();
+  input.Triangles = triangles.data();
+  return input;
+}
+
+/// Faces, removed vertices, positions and metric state that differ between two runs.
+long long CountDifferences(const Decimator& a, const Decimator& b, ErrorMetric metric)
+{
+  const HalfEdgeMesh& ma = a.GetMesh();
+  const HalfEdgeMesh& mb = b.GetMesh();
+  if (ma.GetNumberOfFaceSlots() != mb.GetNumberOfFaceSlots() ||
+      ma.GetNumberOfVertices() != mb.GetNumberOfVertices())
+  {
+    return -1;
+  }
+  long long differences = 0;
+  for (int32_t f = 0; f < ma.GetNumberOfFaceSlots(); ++f)
+  {
+    int32_t ta[3], tb[3];
+    ma.GetFace(f, ta);
+    mb.GetFace(f, tb);
+    differences += std::equal(ta, ta + 3, tb) ? 0 : 1;
+  }
+  for (int32_t v = 0; v < ma.GetNumberOfVertices(); ++v)
+  {
+    differences += ma.IsRemoved(v) != mb.IsRemoved(v) ? 1 : 0;
+    const float* pa = a.GetNormalizedPosition(v);
+    const float* pb = b.GetNormalizedPosition(v);
+    differences += std::equal(pa, pa + 3, pb) ? 0 : 1;
+    if (metric == ErrorMetric::ColorQuadric)
+    {
+      differences += a.GetColorQuadrics()[v].C != b.GetColorQuadrics()[v].C ? 1 : 0;
+    }
+    else
+    {
+      differences += a.GetMetrics()[v].Importance != b.GetMetrics()[v].Importance ? 1 : 0;
+      differences += a.GetMetrics()[v].Q.C != b.GetMetrics()[v].Q.C ? 1 : 0;
+    }
+  }
+  return differences;
+}
+
+/**
+ * Costing on several threads gives the same decimation as on one, for both schedules and
+ * the metrics with and without placement (each evaluation writes its own vertex only).
+ */
+void TestThreadsSameResult()
+{
+  std::vector<double> points;
+  std::vector<float> colors;
+  std::vector<int32_t> triangles;
+  const DecimatorInput input = JitteredSphere(200, points, colors, triangles);
+  const int64_t target = input.NumberOfTriangles / 10;
+  for (CollapseSchedule schedule : { CollapseSchedule::Greedy, CollapseSchedule::Batched })
+  {
+    for (ErrorMetric metric : { ErrorMetric::HalfEdgeColor, ErrorMetric::ColorQuadric })
+    {
+      DecimatorOptions options;
+      options.Metric = metric;
+      options.OptimalPlacement = metric == ErrorMetric::ColorQuadric;
+      options.Schedule = schedule;
+      options.NumberOfThreads = 1;
+      Decimator one(options);
+      const DecimatorStatistics a = one.Run(input, target);
+      options.NumberOfThreads = 3;
+      Decimator three(options);
+      const DecimatorStatistics b = three.Run(input, target);
+      std::cout << "  schedule " << static_cast<int>(schedule) << ", metric "
+                << static_cast<int>(metric) << ": " << a.Collapses << " collapses, " << b.Passes
+                << " passes, " << b.Threads << " threads" << std::endl;
+      CD_CHECK(a.Threads == 1 && b.Threads == 3); // the threads did start
+      CD_CHECK(a.OutputTriangles <= target && a.Collapses > input.NumberOfPoints / 3);
+      CD_CHECK(a.Collapses == b.Collapses && a.OutputTriangles == b.OutputTriangles);
+      CD_CHECK(a.RejectedPops == b.RejectedPops && a.Passes == b.Passes);
+      const long long differences = CountDifferences(one, three, metric);
+      CD_CHECK_MSG(differences == 0, differences << " differences between 1 and 3 threads");
+      CD_CHECK((schedule == CollapseSchedule::Batched) == (a.Passes > 0));
+    }
+  }
+}
+
+/**
+ * With a batch of one collapse per pass, the Batched schedule is the Greedy one: the
+ * cheapest valid collapse of the whole mesh each time, the same rejections and re-costs
+ * (costs are distinct on this mesh, so that ties cannot be broken differently).
+ */
+void TestBatchedOneAtATimeIsGreedy()
+{
+  std::vector<double> points;
+  std::vector<float> colors;
+  std::vector<int32_t> triangles;
+  const DecimatorInput input = JitteredSphere(30, points, colors, triangles);
+  const int64_t target = input.NumberOfTriangles / 8;
+  for (ErrorMetric metric :
+       { ErrorMetric::HalfEdgeColor, ErrorMetric::Geometry, ErrorMetric::ColorQuadric })
+  {
+    // (Half-edge collapses only: a full collapse of v0 and v1 costs the same from either
+    // side, a tie that the two schedules may break differently.)
+    DecimatorOptions options;
+    options.Metric = metric;
+    options.BoundHighValence = false; // exact keys, as the Batched schedule uses
+    Decimator greedy(options);
+    const DecimatorStatistics a = greedy.Run(input, target);
+    options.Schedule = CollapseSchedule::Batched;
+    options.BatchFraction = 1e-12; // one candidate per pass
+    Decimator batched(options);
+    const DecimatorStatistics b = batched.Run(input, target);
+    std::cout << "  metric " << static_cast<int>(metric) << ": " << a.Collapses << " collapses, "
+              << a.RejectedPops << " rejected; batched " << b.Collapses << ", " << b.RejectedPops
+              << ", " << b.Passes << " passes" << std::endl;
+    CD_CHECK(a.Collapses > input.NumberOfPoints / 2);
+    CD_CHECK(a.RejectedPops > 0 || metric == ErrorMetric::Geometry); // rejections are covered
+    CD_CHECK(b.Collapses == a.Collapses && b.RejectedPops == a.RejectedPops);
+    CD_CHECK(b.Passes == b.Collapses + b.RejectedPops);
+    const long long differences = CountDifferences(greedy, batched, metric);
+    CD_CHECK_MSG(differences == 0, differences << " differences from the greedy run");
+
+    // Larger batches change the order, not the guarantees: the target is met.
+    options.BatchFraction = 0.25;
+    Decimator quarter(options);
+    const DecimatorStatistics c = quarter.Run(input, target);
+    CD_CHECK(c.OutputTriangles <= target && c.OutputTriangles >= target - 2);
+    CD_CHECK(c.Passes > 1 && c.Passes < c.Collapses / 4);
+  }
+}
+
+//------------------------------------------------------------------------------
 void TestRulesLinkCondition()
 {
   CollapseRules rules{ CollapseRuleOptions() };
@@ -1349,6 +1510,8 @@ int main(int argc, char* argv[])
                         { "HalfEdgeRenumber", TestHalfEdgeRenumber },
                         { "SpatialOrder", TestSpatialOrder },
                         { "RenumberSameResult", TestRenumberSameResult },
+                        { "ThreadsSameResult", TestThreadsSameResult },
+                        { "BatchedOneAtATimeIsGreedy", TestBatchedOneAtATimeIsGreedy },
                         { "RulesLinkCondition", TestRulesLinkCondition },
                         { "RulesFlip", TestRulesFlip },
                         { "RulesDegenerate", TestRulesDegenerate },

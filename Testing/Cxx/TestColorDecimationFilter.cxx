@@ -14,6 +14,7 @@
 #include "vtkPoints.h"
 
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <random>
 #include <sstream>
@@ -27,7 +28,8 @@ namespace
 const double Reductions[3] = { 0.5, 0.9, 0.97 };
 
 /// Decimate a decorated copy of `mesh` at 0.5, 0.9 and 0.97 and check every invariant.
-void CheckInvariants(vtkPolyData* mesh, const Expectation& expected, const std::string& name)
+void CheckInvariants(vtkPolyData* mesh, const Expectation& expected, const std::string& name,
+                     const std::function<void(vtkColorHalfEdgeDecimation*)>& configure = nullptr)
 {
   Decorate(mesh);
   const vtkIdType input = mesh->GetNumberOfPolys();
@@ -35,7 +37,7 @@ void CheckInvariants(vtkPolyData* mesh, const Expectation& expected, const std::
   {
     std::ostringstream label;
     label << name << " at " << reduction;
-    const RunResult r = Decimate(mesh, reduction);
+    const RunResult r = Decimate(mesh, reduction, configure);
     const vtkIdType output = r.Output->GetNumberOfPolys();
     std::cout << "  " << label.str() << ": " << input << " -> " << output << " triangles, "
               << r.Collapses << " collapses, actual " << r.ActualReduction << std::endl;
@@ -114,6 +116,32 @@ void TestInvariantsLargeTorus()
 void TestInvariantsLargeGrid()
 {
   CheckInvariants(meshes::Grid(290, 260, Pattern::SharpRegions), OpenSheet(), "Grid(290,260)");
+}
+
+/// The Batched schedule keeps every invariant: the same rules decide each collapse.
+void Batched(vtkColorHalfEdgeDecimation* f)
+{
+  f->SetCollapseScheduleToBatched();
+  f->SetNumberOfThreads(2);
+}
+
+void TestInvariantsBatchedTorus()
+{
+  CheckInvariants(meshes::Torus(150, 60, Pattern::SharpRegions), ClosedSurface(0, TorusNormal),
+                  "Torus(150,60) batched", Batched);
+}
+
+void TestInvariantsBatchedSphere()
+{
+  CheckInvariants(meshes::UVSphere(100, Pattern::FineDetail), ClosedSurface(2, SphereNormal),
+                  "UVSphere(100) batched", Batched);
+}
+
+/// Large enough to be renumbered, and to re-cost on both threads.
+void TestInvariantsBatchedLargeGrid()
+{
+  CheckInvariants(meshes::Grid(290, 260, Pattern::SharpRegions), OpenSheet(),
+                  "Grid(290,260) batched", Batched);
 }
 
 //------------------------------------------------------------------------------
@@ -300,11 +328,13 @@ void OnProgress(vtkObject* caller, unsigned long, void* clientData, void* callDa
   }
 }
 
-RunResult RunWithProgress(vtkPolyData* mesh, double reduction, ProgressLog& log)
+RunResult RunWithProgress(vtkPolyData* mesh, double reduction, ProgressLog& log,
+                          int schedule = vtkColorHalfEdgeDecimation::Greedy)
 {
   return Decimate(mesh, reduction,
-                  [&log](vtkColorHalfEdgeDecimation* f)
+                  [&log, schedule](vtkColorHalfEdgeDecimation* f)
                   {
+                    f->SetCollapseSchedule(schedule);
                     vtkNew<vtkCallbackCommand> callback;
                     callback->SetCallback(OnProgress);
                     callback->SetClientData(&log);
@@ -312,11 +342,12 @@ RunResult RunWithProgress(vtkPolyData* mesh, double reduction, ProgressLog& log)
                   });
 }
 
-void TestProgress()
+void CheckProgress(int schedule)
 {
+  std::cout << "  schedule " << schedule << std::endl;
   auto mesh = meshes::Icosphere(5, Pattern::SmoothGradient);
   ProgressLog log;
-  const RunResult r = RunWithProgress(mesh, 0.9, log);
+  const RunResult r = RunWithProgress(mesh, 0.9, log, schedule);
   CD_CHECK(std::abs(r.ActualReduction - 0.9) <= 0.01);
   CD_CHECK(log.Values.size() >= 3);
   int between = 0;
@@ -334,12 +365,21 @@ void TestProgress()
   CD_CHECK(!log.Values.empty() && log.Values.back() == 1.0);
 }
 
-void TestAbort()
+void TestProgress()
 {
+  for (int schedule : { vtkColorHalfEdgeDecimation::Greedy, vtkColorHalfEdgeDecimation::Batched })
+  {
+    CheckProgress(schedule);
+  }
+}
+
+void CheckAbort(int schedule)
+{
+  std::cout << "  schedule " << schedule << std::endl;
   auto mesh = meshes::Icosphere(5, Pattern::SharpRegions);
   Decorate(mesh);
   ProgressLog full;
-  const RunResult complete = RunWithProgress(mesh, 0.9, full);
+  const RunResult complete = RunWithProgress(mesh, 0.9, full, schedule);
   CD_CHECK(std::abs(complete.ActualReduction - 0.9) <= 0.01);
 
   // Abort in the middle (at the first report past 30 %) and right at the start.
@@ -347,7 +387,7 @@ void TestAbort()
   {
     ProgressLog log;
     log.AbortAt = abortAt;
-    const RunResult r = RunWithProgress(mesh, 0.9, log);
+    const RunResult r = RunWithProgress(mesh, 0.9, log, schedule);
     std::cout << "  abort at progress >= " << abortAt << ": " << r.Collapses << " of "
               << complete.Collapses << " collapses, actual reduction " << r.ActualReduction
               << std::endl;
@@ -363,6 +403,14 @@ void TestAbort()
   }
 }
 
+void TestAbort()
+{
+  for (int schedule : { vtkColorHalfEdgeDecimation::Greedy, vtkColorHalfEdgeDecimation::Batched })
+  {
+    CheckAbort(schedule);
+  }
+}
+
 //------------------------------------------------------------------------------
 void TestPrintSelf()
 {
@@ -374,14 +422,16 @@ void TestPrintSelf()
   filter->SetGeometryWeight(7.25);
   filter->GenerateOriginalPointIdsOff();
   filter->SetOriginalPointIdsArrayName("SourcePoint");
+  filter->SetCollapseScheduleToBatched();
+  filter->SetNumberOfThreads(3);
   std::ostringstream os;
   filter->Print(os);
   const std::string text = os.str();
   for (const char* expected :
        { "ErrorMetric: Geometry", "TargetReduction: 0.25", "PreserveBoundary: On",
          "MaximumNormalAngle: 33.5", "GeometryWeight: 7.25", "GenerateOriginalPointIds: Off",
-         "OriginalPointIdsArrayName: SourcePoint",
-         "ActualReduction: ", "NumberOfCollapses: ", "StateMemory: " })
+         "OriginalPointIdsArrayName: SourcePoint", "CollapseSchedule: Batched",
+         "NumberOfThreads: 3", "ActualReduction: ", "NumberOfCollapses: ", "StateMemory: " })
   {
     CD_CHECK_MSG(text.find(expected) != std::string::npos, "PrintSelf lacks '" << expected << "'");
   }
@@ -411,6 +461,14 @@ void TestProperties()
   CD_CHECK(f->GetGeometryWeight() == 1.0);
   CD_CHECK(f->GetGenerateOriginalPointIds());
   CD_CHECK(std::string(f->GetOriginalPointIdsArrayName()) == "vtkOriginalPointIds");
+  CD_CHECK(f->GetCollapseSchedule() == vtkColorHalfEdgeDecimation::Greedy);
+  CD_CHECK(std::string(f->GetCollapseScheduleAsString()) == "Greedy");
+  CD_CHECK(f->GetNumberOfThreads() == 0);
+  f->SetCollapseSchedule(7);
+  CD_CHECK(f->GetCollapseSchedule() == vtkColorHalfEdgeDecimation::Batched);
+  CD_CHECK(std::string(f->GetCollapseScheduleAsString()) == "Batched");
+  f->SetNumberOfThreads(-2);
+  CD_CHECK(f->GetNumberOfThreads() == 0);
   f->SetTargetReduction(1.5);
   CD_CHECK(f->GetTargetReduction() == 1.0);
   f->SetTargetReduction(-0.5);
@@ -506,6 +564,9 @@ int main(int argc, char* argv[])
                         { "InvariantsGridSharp", TestInvariantsGridSharp },
                         { "InvariantsLargeTorus", TestInvariantsLargeTorus },
                         { "InvariantsLargeGrid", TestInvariantsLargeGrid },
+                        { "InvariantsBatchedTorus", TestInvariantsBatchedTorus },
+                        { "InvariantsBatchedSphere", TestInvariantsBatchedSphere },
+                        { "InvariantsBatchedLargeGrid", TestInvariantsBatchedLargeGrid },
                         { "ScaleTranslationInvariance", TestScaleTranslationInvariance },
                         { "TargetReductionZero", TestTargetReductionZero },
                         { "TargetReductionOne", TestTargetReductionOne },

@@ -1,7 +1,8 @@
 # Checks the JSON written by color-decimate --stats (a ctest helper).
 #
 #   cmake -DSTATS=file.json -DINPUT_POINTS=N -DINPUT_TRIANGLES=N -DREDUCTION=R -DMETRIC=name
-#         [-DCHECK_FILE=mesh -DMESH_CHECK=ColorDecimationMeshCheck] -P CheckStats.cmake
+#         [-DSCHEDULE=greedy|batched] [-DCHECK_FILE=mesh -DMESH_CHECK=ColorDecimationMeshCheck]
+#         -P CheckStats.cmake
 #
 # Every required key must be there with a plausible value; with CHECK_FILE, the output
 # counts in the JSON must be those of the mesh file (read by MESH_CHECK).
@@ -12,7 +13,7 @@ file(READ "${STATS}" json)
 message(STATUS "${STATS}:\n${json}")
 
 foreach (key IN ITEMS filter_seconds input_triangles output_triangles input_points output_points
-    peak_rss_bytes reduction metric state_memory_bytes)
+    peak_rss_bytes reduction metric schedule state_memory_bytes)
   string(JSON value ERROR_VARIABLE problem GET "${json}" ${key})
   if (problem)
     message(FATAL_ERROR "key '${key}' missing: ${problem}")
@@ -41,6 +42,10 @@ endfunction ()
 expect("input_points = ${INPUT_POINTS}" input_points EQUAL INPUT_POINTS)
 expect("input_triangles = ${INPUT_TRIANGLES}" input_triangles EQUAL INPUT_TRIANGLES)
 expect("metric = ${METRIC}" metric STREQUAL METRIC)
+if (NOT DEFINED SCHEDULE)
+  set(SCHEDULE greedy)
+endif ()
+expect("schedule = ${SCHEDULE}" schedule STREQUAL SCHEDULE)
 to_millionths("${REDUCTION}" target)
 math(EXPR kept "${INPUT_TRIANGLES} - (${INPUT_TRIANGLES} * ${target}) / 1000000")
 math(EXPR kept_high "${kept} + 4")
