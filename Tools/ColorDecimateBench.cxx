@@ -73,6 +73,7 @@ enum Method
 {
   OursColor = 0,
   OursGeometry,
+  OursBatched,
   QuadricAttributes,
   QuadricGeometry,
   MeshOptimizer,
@@ -87,6 +88,8 @@ const char* MethodName(int method)
       return "vtkColorHalfEdgeDecimation, HalfEdgeColor";
     case OursGeometry:
       return "vtkColorHalfEdgeDecimation, Geometry";
+    case OursBatched:
+      return "vtkColorHalfEdgeDecimation, HalfEdgeColor, Batched schedule";
     case QuadricAttributes:
       return "vtkQuadricDecimation, AttributeErrorMetric on (colour as scalars)";
     case QuadricGeometry:
@@ -106,6 +109,8 @@ const char* MethodShortName(int method)
       return "HalfEdgeColor";
     case OursGeometry:
       return "Geometry";
+    case OursBatched:
+      return "HalfEdgeColor batched";
     case QuadricAttributes:
       return "vtkQD attr on";
     case QuadricGeometry:
@@ -160,7 +165,8 @@ void PrintHelp(std::ostream& os)
 {
   os << "Usage: color-decimate-bench [MESH ...] [options]\n"
         "\n"
-        "Times vtkColorHalfEdgeDecimation (HalfEdgeColor and Geometry metrics) against\n"
+        "Times vtkColorHalfEdgeDecimation (HalfEdgeColor and Geometry metrics with the\n"
+        "Greedy schedule, HalfEdgeColor with the Batched schedule on all cores) against\n"
         "vtkQuadricDecimation with AttributeErrorMetric on (the colour array as scalars) and\n"
         "off"
 #if COLORDECIMATION_WITH_MESHOPTIMIZER
@@ -419,7 +425,8 @@ struct Single
   std::string Error;
 };
 
-Single RunOurs(vtkPolyData* mesh, int metric, double reduction)
+Single RunOurs(vtkPolyData* mesh, int metric, double reduction,
+               int schedule = vtkColorHalfEdgeDecimation::Greedy)
 {
   Single result;
   MessageCatcher::Scope quiet; // the filter's warnings (e.g. no colours) are not timing data
@@ -427,6 +434,7 @@ Single RunOurs(vtkPolyData* mesh, int metric, double reduction)
   filter->SetInputData(mesh);
   filter->SetTargetReduction(reduction);
   filter->SetErrorMetric(metric);
+  filter->SetCollapseSchedule(schedule);
   const double cpu = ProcessCpuSeconds();
   const auto start = std::chrono::steady_clock::now();
   filter->Update();
@@ -515,6 +523,10 @@ RunResult Measure(int method, vtkPolyData* given, const Options& options, const 
           break;
         case OursGeometry:
           single = RunOurs(mesh, vtkColorHalfEdgeDecimation::Geometry, options.Reduction);
+          break;
+        case OursBatched:
+          single = RunOurs(mesh, vtkColorHalfEdgeDecimation::HalfEdgeColor, options.Reduction,
+                           vtkColorHalfEdgeDecimation::Batched);
           break;
         case QuadricAttributes:
           single = RunQuadric(mesh, true, options.Reduction);
