@@ -124,6 +124,21 @@ def main():
         fail("SetErrorMetricToGeometry")
     if not target - 1 <= decimation.GetOutput().GetNumberOfPolys() <= target:
         fail("the geometry metric missed the target")
+
+    # The batched schedule on two threads, through the enum setter and the class constant.
+    decimation.SetErrorMetricToHalfEdgeColor()
+    decimation.SetCollapseScheduleToBatched()
+    decimation.SetNumberOfThreads(2)
+    decimation.Update()
+    if decimation.GetCollapseSchedule() != vtkColorHalfEdgeDecimation.Batched:
+        fail("SetCollapseScheduleToBatched")
+    if "CollapseSchedule: Batched" not in str(decimation):
+        fail("PrintSelf does not show the schedule")
+    batched = decimation.GetOutput()
+    if not target - 1 <= batched.GetNumberOfPolys() <= target:
+        fail("the batched schedule missed the target")
+    if batched.GetNumberOfPoints() - batched.GetNumberOfPolys() // 2 != 2:
+        fail("the batched schedule changed the Euler characteristic")
     print("OK")
 
 
