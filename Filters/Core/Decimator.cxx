@@ -3,6 +3,7 @@
 #include "Prefetch.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -183,6 +184,7 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   input.Fixed = nullptr;
 
   this->ThreadsUsed = 1;
+  this->CollapseThreadsUsed = 1;
   // 4-5. Cost every vertex, then collapse: one at a time in the heap's order (the paper's),
   // or in batches of independent collapses, each followed by a re-costing pass.
   if (this->Options.Schedule == CollapseSchedule::Batched)
@@ -194,7 +196,9 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
     this->CollapseGreedily(stats, large, progress);
   }
   stats.Threads = this->ThreadsUsed;
+  stats.CollapseThreads = this->CollapseThreadsUsed;
   this->Workers.clear();
+  this->AnyMoved = std::find(this->Moved.begin(), this->Moved.end(), 1) != this->Moved.end();
   this->Main.Rules.SetReferenceNormals(nullptr);
   this->ReferenceNormals = std::vector<float>();
   if (!order.Empty())
@@ -420,7 +424,8 @@ void Decimator::EvaluateAll(const int32_t* vertices, size_t count, bool exact, b
   }
 }
 
-bool Decimator::IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, double y[6])
+bool Decimator::IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, double y[6],
+                                Workspace& ws) const
 {
   // A full collapse (ColorQuadric with OptimalPlacement) puts v1 at the placement y.
   moves = false;
@@ -434,14 +439,14 @@ bool Decimator::IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, double y[6]
     {
       double newPosition[3];
       this->PlacementPosition(v0, y, newPosition);
-      return this->Main.Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride,
-                                      newPosition);
+      return ws.Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride, newPosition);
     }
   }
-  return this->Main.Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride);
+  return ws.Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride);
 }
 
-void Decimator::ApplyCollapse(int32_t v0, int32_t v1, bool moves, const double y[6])
+int Decimator::ApplyCollapse(int32_t v0, int32_t v1, bool moves, const double y[6], Workspace& ws,
+                             bool counted)
 {
   if (this->QuadricMetric)
   {
@@ -460,14 +465,15 @@ void Decimator::ApplyCollapse(int32_t v0, int32_t v1, bool moves, const double y
     m1.MaxColorDistance = std::max(m1.MaxColorDistance, m0.MaxColorDistance);
     this->Hot[v1].QC = m1.Q.C;
   }
-  this->FormerNeighbors.clear();
-  this->Mesh.ForEachNeighbor(v0, [this](int32_t u) { this->FormerNeighbors.push_back(u); });
-  this->Mesh.Collapse(v0, v1);
+  ws.FormerNeighbors.clear();
+  this->Mesh.ForEachNeighbor(v0, [&ws](int32_t u) { ws.FormerNeighbors.push_back(u); });
   this->Best[v0] = -1;
+  return counted ? this->Mesh.Collapse(v0, v1) : this->Mesh.CollapseUncounted(v0, v1);
 }
 
 template <typename Function>
-void Decimator::ForEachAffected(int32_t v1, Function&& f) const
+void Decimator::ForEachAffected(int32_t v1, const std::vector<int32_t>& formerNeighbors,
+                                Function&& f) const
 {
   // v1 and v0's former neighbours have a new 1-ring. The other neighbours of v1 only saw their
   // cost towards v1 grow: only those whose choice was v1 are affected. After a full collapse
@@ -479,7 +485,7 @@ void Decimator::ForEachAffected(int32_t v1, Function&& f) const
     this->Mesh.ForEachNeighbor(v1, f);
     return;
   }
-  for (int32_t u : this->FormerNeighbors)
+  for (int32_t u : formerNeighbors)
   {
     if (u != v1)
     {
@@ -487,12 +493,11 @@ void Decimator::ForEachAffected(int32_t v1, Function&& f) const
     }
   }
   this->Mesh.ForEachNeighbor(v1,
-                             [this, v1, &f](int32_t u)
+                             [this, v1, &formerNeighbors, &f](int32_t u)
                              {
                                if (this->Best[u] == v1 &&
-                                   std::find(this->FormerNeighbors.begin(),
-                                             this->FormerNeighbors.end(),
-                                             u) == this->FormerNeighbors.end())
+                                   std::find(formerNeighbors.begin(), formerNeighbors.end(), u) ==
+                                     formerNeighbors.end())
                                {
                                  f(u);
                                }
@@ -554,7 +559,7 @@ void Decimator::CollapseGreedily(DecimatorStatistics& stats, bool prefetch,
     }
     double y[6];
     bool moves = false;
-    if (!this->IsCollapseLegal(v0, v1, moves, y))
+    if (!this->IsCollapseLegal(v0, v1, moves, y, this->Main))
     {
       ++stats.RejectedPops;
       const Choice legal = this->Evaluate(v0, true, false, this->Main);
@@ -570,9 +575,9 @@ void Decimator::CollapseGreedily(DecimatorStatistics& stats, bool prefetch,
       continue;
     }
     this->Heap.Pop();
-    this->ApplyCollapse(v0, v1, moves, y);
+    this->ApplyCollapse(v0, v1, moves, y, this->Main, true);
     ++stats.Collapses;
-    this->ForEachAffected(v1, [this](int32_t u) { this->Update(u); });
+    this->ForEachAffected(v1, this->Main.FormerNeighbors, [this](int32_t u) { this->Update(u); });
 
     if (progress && stats.Collapses >= nextReport)
     {
@@ -599,15 +604,17 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
     std::iota(all.begin(), all.end(), 0);
     this->EvaluateAll(all.data(), all.size(), false, false, keys.data());
   }
-  // stamp[v] == pass: v was affected by a collapse of this pass (its key is stale) or its
+  // Stamp[v] == pass: v was affected by a collapse of this pass (its key is stale) or its
   // chosen collapse was found illegal; either way it waits for the re-costing.
   this->Stamp.assign(n, 0);
-  std::vector<int32_t>& stamp = this->Stamp;
-  std::vector<std::pair<double, int32_t>> candidates;
+  // Blocks: ranges of BlockSize ids (neighbours on the surface in the spatial order), a fixed
+  // partition, so that the result does not depend on the number of threads.
+  const int32_t blocks = (n >> BlockShift) + 1;
+  std::vector<Candidate> candidates, batch, deferred;
+  std::vector<size_t> blockStart(blocks + 1);
   std::vector<int32_t> affected, rejected;
   const int64_t startFaces = this->Mesh.GetNumberOfLiveFaces();
   const int64_t toRemove = std::max<int64_t>(startFaces - stats.TargetTriangles, 1);
-  int64_t nextReport = 8192;
   int32_t pass = 0;
   while (this->Mesh.GetNumberOfLiveFaces() > stats.TargetTriangles && !stats.Aborted)
   {
@@ -617,7 +624,7 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
     {
       if (this->Best[v] >= 0)
       {
-        candidates.emplace_back(keys[v], v);
+        candidates.push_back({ keys[v], v });
       }
     }
     if (candidates.empty())
@@ -625,108 +632,255 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
       break;
     }
     // The batch: the cheapest fraction of the candidates, no more than the collapses still
-    // needed (each removes two triangles, one on a boundary).
+    // needed (each removes two triangles, one on a boundary), so that the block phase, which
+    // does not stop half-way, ends at the target or one triangle below at the lowest.
     const int64_t needed = (this->Mesh.GetNumberOfLiveFaces() - stats.TargetTriangles + 1) / 2;
-    const size_t batch = static_cast<size_t>(std::max<int64_t>(
+    const size_t size = static_cast<size_t>(std::max<int64_t>(
       1,
       std::min<int64_t>(needed,
                         static_cast<int64_t>(std::ceil(this->Options.BatchFraction *
                                                        static_cast<double>(candidates.size()))))));
-    const auto end = candidates.begin() + std::min(batch, candidates.size());
+    const auto end = candidates.begin() + std::min(size, candidates.size());
     std::nth_element(candidates.begin(), end - 1, candidates.end());
     std::sort(candidates.begin(), end);
 
+    // Each block's candidates, still in cost order (a stable counting sort by block).
+    std::fill(blockStart.begin(), blockStart.end(), 0);
+    for (auto c = candidates.begin(); c != end; ++c)
+    {
+      ++blockStart[(c->Vertex >> BlockShift) + 1];
+    }
+    std::partial_sum(blockStart.begin(), blockStart.end(), blockStart.begin());
+    batch.resize(static_cast<size_t>(end - candidates.begin()));
+    {
+      std::vector<size_t> next(blockStart.begin(), blockStart.end() - 1);
+      for (auto c = candidates.begin(); c != end; ++c)
+      {
+        batch[next[c->Vertex >> BlockShift]++] = *c;
+      }
+    }
+
+    // 1. The blocks, on several threads: the collapses whose whole neighbourhood lies in their
+    // block; the others are deferred.
+    this->CollapseBlocks(batch, blockStart, pass);
     affected.clear();
     rejected.clear();
-    const size_t count = static_cast<size_t>(end - candidates.begin());
-    for (size_t i = 0; i < count; ++i)
+    deferred.clear();
+    int64_t removed = 0;
+    auto gather = [&](Workspace& ws)
+    {
+      affected.insert(affected.end(), ws.Affected.begin(), ws.Affected.end());
+      rejected.insert(rejected.end(), ws.Rejected.begin(), ws.Rejected.end());
+      deferred.insert(deferred.end(), ws.Deferred.begin(), ws.Deferred.end());
+      stats.Collapses += ws.Collapses;
+      stats.RejectedPops += ws.Rejections;
+      removed += ws.RemovedFaces;
+    };
+    gather(this->Main);
+    for (Workspace& ws : this->Workers)
+    {
+      gather(ws);
+    }
+    this->Mesh.RemoveLiveFaces(removed);
+
+    // 2. The deferred ones, in cost order, on this thread, up to the target.
+    std::sort(deferred.begin(), deferred.end());
+    Workspace& ws = this->Main;
+    ws.Affected.clear();
+    ws.Rejected.clear();
+    for (const Candidate& c : deferred)
     {
       if (this->Mesh.GetNumberOfLiveFaces() <= stats.TargetTriangles)
       {
         break;
       }
-      // The batch is known in advance: its neighbourhoods are fetched a few collapses ahead,
-      // in three stages (the vertex, its first face, its 2-ring), none of which waits.
-      if (i + FarAhead < count)
-      {
-        const int32_t v = candidates[i + FarAhead].second;
-        this->Mesh.PrefetchVertex(v);
-        COLORDECIMATION_PREFETCH(stamp.data() + v);
-        COLORDECIMATION_PREFETCH(this->Best.data() + v);
-      }
-      if (i + MiddleAhead < count)
-      {
-        const int32_t v = candidates[i + MiddleAhead].second;
-        this->Mesh.PrefetchFirstFace(v);
-        const int32_t target = this->Best[v];
-        if (target >= 0)
-        {
-          this->Mesh.PrefetchVertex(target);
-          COLORDECIMATION_PREFETCH(stamp.data() + target);
-        }
-        COLORDECIMATION_PREFETCH(this->Hot.data() + v);
-      }
-      if (i + NearAhead < count)
-      {
-        const int32_t v = candidates[i + NearAhead].second;
-        const int32_t target = this->Best[v];
-        if (target >= 0)
-        {
-          this->Mesh.PrefetchFirstFace(target);
-          COLORDECIMATION_PREFETCH(this->Hot.data() + target);
-        }
-      }
-      const int32_t v0 = candidates[i].second;
+      const int32_t v0 = c.Vertex;
       const int32_t v1 = this->Best[v0];
-      if (stamp[v0] == pass || v1 < 0 || stamp[v1] == pass)
+      if (this->Stamp[v0] == pass || v1 < 0 || this->Stamp[v1] == pass)
       {
-        continue; // its key is stale (a neighbour collapsed) or its target moved
-      }
-      double y[6];
-      bool moves = false;
-      if (!this->IsCollapseLegal(v0, v1, moves, y))
-      {
-        ++stats.RejectedPops;
-        stamp[v0] = pass;
-        rejected.push_back(v0);
         continue;
       }
-      this->ApplyCollapse(v0, v1, moves, y);
-      ++stats.Collapses;
-      this->ForEachAffected(v1,
-                            [pass, &stamp, &affected](int32_t u)
-                            {
-                              if (stamp[u] != pass)
-                              {
-                                stamp[u] = pass;
-                                affected.push_back(u);
-                              }
-                            });
-      if (progress && stats.Collapses >= nextReport)
-      {
-        nextReport = stats.Collapses + 8192;
-        const double done = double(startFaces - this->Mesh.GetNumberOfLiveFaces()) / toRemove;
-        if (!progress(std::min(done, 1.0)))
-        {
-          stats.Aborted = true;
-          break;
-        }
-      }
+      const Outcome outcome = this->TryCollapse(v0, v1, pass, ws, true);
+      stats.Collapses += outcome == Outcome::Collapsed ? 1 : 0;
+      stats.RejectedPops += outcome == Outcome::Rejected ? 1 : 0;
     }
+    affected.insert(affected.end(), ws.Affected.begin(), ws.Affected.end());
+    rejected.insert(rejected.end(), ws.Rejected.begin(), ws.Rejected.end());
     ++stats.Passes;
-
-    // Re-cost in vertex order (neighbours in memory are neighbours on the surface); the
+    // 3. Re-cost in vertex order (neighbours in memory are neighbours on the surface); the
     // rejected ones over their legal collapses only.
     std::sort(affected.begin(), affected.end());
     this->EvaluateAll(affected.data(), affected.size(), false, false, keys.data());
     this->EvaluateAll(rejected.data(), rejected.size(), true, false, keys.data());
-    if (progress && !stats.Aborted)
+    if (progress)
     {
       const double done = double(startFaces - this->Mesh.GetNumberOfLiveFaces()) / toRemove;
       stats.Aborted = !progress(std::min(done, 1.0));
     }
   }
   this->Stamp = std::vector<int32_t>();
+}
+
+void Decimator::CollapseBlocks(const std::vector<Candidate>& batch,
+                               const std::vector<size_t>& blockStart, int32_t pass)
+{
+  const int32_t blocks = static_cast<int32_t>(blockStart.size()) - 1;
+  std::atomic<int32_t> nextBlock(0);
+  auto work = [this, &batch, &blockStart, &nextBlock, blocks, pass](Workspace& ws)
+  {
+    ws.Affected.clear();
+    ws.Rejected.clear();
+    ws.Deferred.clear();
+    ws.Collapses = ws.Rejections = ws.RemovedFaces = 0;
+    for (int32_t block = nextBlock++; block < blocks; block = nextBlock++)
+    {
+      this->CollapseBlock(batch.data() + blockStart[block], batch.data() + blockStart[block + 1],
+                          block, pass, ws);
+    }
+  };
+  // A thread is worth it for some thousands of candidates only; either way the blocks are
+  // the same, and so is the result.
+  const int threads = this->ThreadCount(batch.size());
+  this->CollapseThreadsUsed = std::max(this->CollapseThreadsUsed, threads);
+  while (this->Workers.size() < static_cast<size_t>(threads - 1))
+  {
+    this->Workers.push_back(this->Main);
+  }
+  for (Workspace& ws : this->Workers)
+  {
+    ws.Affected.clear();
+    ws.Rejected.clear();
+    ws.Deferred.clear();
+    ws.Collapses = ws.Rejections = ws.RemovedFaces = 0;
+  }
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t)
+  {
+    pool.emplace_back(work, std::ref(this->Workers[t - 1]));
+  }
+  work(this->Main);
+  for (std::thread& thread : pool)
+  {
+    thread.join();
+  }
+}
+
+void Decimator::CollapseBlock(const Candidate* begin, const Candidate* end, int32_t block,
+                              int32_t pass, Workspace& ws)
+{
+  const auto inBlock = [block](int32_t v) { return (v >> BlockShift) == block; };
+  int32_t* stamp = this->Stamp.data();
+  const size_t count = static_cast<size_t>(end - begin);
+  for (size_t i = 0; i < count; ++i)
+  {
+    // The candidates are known in advance: their neighbourhoods are fetched a few collapses
+    // ahead, in three stages (the vertex, its first face and target, the target's first
+    // face), none of which waits. Only this block's records are read.
+    if (i + FarAhead < count)
+    {
+      const int32_t v = begin[i + FarAhead].Vertex;
+      this->Mesh.PrefetchVertex(v);
+      COLORDECIMATION_PREFETCH(stamp + v);
+      COLORDECIMATION_PREFETCH(this->Best.data() + v);
+    }
+    if (i + MiddleAhead < count)
+    {
+      const int32_t v = begin[i + MiddleAhead].Vertex;
+      this->Mesh.PrefetchFirstFace(v);
+      const int32_t target = this->Best[v];
+      if (target >= 0 && inBlock(target))
+      {
+        this->Mesh.PrefetchVertex(target);
+        COLORDECIMATION_PREFETCH(stamp + target);
+      }
+      COLORDECIMATION_PREFETCH(this->Hot.data() + v);
+    }
+    if (i + NearAhead < count)
+    {
+      const int32_t target = this->Best[begin[i + NearAhead].Vertex];
+      if (target >= 0 && inBlock(target))
+      {
+        this->Mesh.PrefetchFirstFace(target);
+        COLORDECIMATION_PREFETCH(this->Hot.data() + target);
+      }
+    }
+    const int32_t v0 = begin[i].Vertex;
+    const int32_t v1 = this->Best[v0];
+    if (stamp[v0] == pass || v1 < 0)
+    {
+      continue; // its key is stale: a neighbour collapsed in this pass
+    }
+    if (!inBlock(v1) || !this->IsInsideBlock(v0, v1, block))
+    {
+      ws.Deferred.push_back(begin[i]);
+      continue;
+    }
+    if (stamp[v1] == pass)
+    {
+      continue;
+    }
+    const Outcome outcome = this->TryCollapse(v0, v1, pass, ws, false);
+    ws.Collapses += outcome == Outcome::Collapsed ? 1 : 0;
+    ws.Rejections += outcome == Outcome::Rejected ? 1 : 0;
+  }
+}
+
+bool Decimator::IsInsideBlock(int32_t v0, int32_t v1, int32_t block) const
+{
+  // The collapse reads and writes the faces around v0, v1 and their common neighbours (vl
+  // and vr), and the records of their vertices: all of them must be in the block. Each fan
+  // is walked only once its centre is known to be in the block (no other thread writes the
+  // faces around a vertex of this block).
+  bool inside = true;
+  const auto check = [&inside, block](int32_t u) { inside = inside && (u >> BlockShift) == block; };
+  this->Mesh.ForEachNeighbor(v0, check);
+  if (!inside)
+  {
+    return false;
+  }
+  this->Mesh.ForEachNeighbor(v1, check);
+  if (!inside)
+  {
+    return false;
+  }
+  for (const int32_t h : { this->Mesh.FindHalfEdge(v0, v1), this->Mesh.FindHalfEdge(v1, v0) })
+  {
+    if (h < 0)
+    {
+      continue;
+    }
+    const int32_t x = this->Mesh.Origin(HalfEdgeMesh::Prev(h)); // vl or vr
+    if (!this->Mesh.IsLocked(x)) // a locked one fails the rules without its fan being read
+    {
+      this->Mesh.ForEachNeighbor(x, check);
+    }
+  }
+  return inside;
+}
+
+Decimator::Outcome Decimator::TryCollapse(int32_t v0, int32_t v1, int32_t pass, Workspace& ws,
+                                          bool counted)
+{
+  int32_t* stamp = this->Stamp.data();
+  double y[6];
+  bool moves = false;
+  if (!this->IsCollapseLegal(v0, v1, moves, y, ws))
+  {
+    stamp[v0] = pass;
+    ws.Rejected.push_back(v0);
+    return Outcome::Rejected;
+  }
+  ws.RemovedFaces += this->ApplyCollapse(v0, v1, moves, y, ws, counted);
+  this->ForEachAffected(v1, ws.FormerNeighbors,
+                        [pass, stamp, &ws](int32_t u)
+                        {
+                          if (stamp[u] != pass)
+                          {
+                            stamp[u] = pass;
+                            ws.Affected.push_back(u);
+                          }
+                        });
+  return Outcome::Collapsed;
 }
 
 void Decimator::GatherRing(int32_t v0, Ring& ring) const
@@ -1089,7 +1243,6 @@ void Decimator::MergeColorQuadric(int32_t v0, int32_t v1, bool moved, const doub
   b.C[2] = placed.C[2];
   b.QC = q1.C;
   this->Moved[v1] = 1;
-  this->AnyMoved = true;
 }
 
 void Decimator::GetOutputPosition(int32_t v, double p[3]) const

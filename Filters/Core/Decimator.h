@@ -165,6 +165,7 @@ struct DecimatorStatistics
   int64_t RejectedPops = 0;  ///< chosen collapses that failed the rules and were re-costed
   int64_t Passes = 0;        ///< Batched: re-costing passes
   int Threads = 1;           ///< the most threads that costed vertices at once
+  int CollapseThreads = 1;   ///< Batched: the most threads that collapsed blocks at once
   double MeanEdgeLength = 0; ///< of the input, in its own units (the frame's unit)
   bool Aborted = false;
   size_t StateBytes = 0; ///< bytes held by the decimator's arrays
@@ -221,6 +222,16 @@ private:
    * allowBound, a vertex of more than LargeRing neighbours under the paper's metric gets the
    * lower bound (1 + Q)(1 + I) instead (C >= 0): O(k) instead of the O(k^2) colour error.
    */
+  /// Batched: a vertex and its key (cost order, ties by id).
+  struct Candidate
+  {
+    double Key;
+    int32_t Vertex;
+    bool operator<(const Candidate& other) const
+    {
+      return this->Key < other.Key || (this->Key == other.Key && this->Vertex < other.Vertex);
+    }
+  };
   /// What costing one vertex writes to: one per thread.
   struct Workspace
   {
@@ -231,8 +242,14 @@ private:
     Ring CurrentRing;
     std::vector<double> Costs;
     std::vector<int> Order;
-    std::vector<double> Placements; ///< ColorQuadric with OptimalPlacement: 6 per ring member
-    CollapseRules Rules;            ///< its own copy (the rules keep scratch)
+    std::vector<double> Placements;       ///< ColorQuadric with OptimalPlacement: 6 per ring member
+    CollapseRules Rules;                  ///< its own copy (the rules keep scratch)
+    std::vector<int32_t> FormerNeighbors; ///< v0's neighbours before the last collapse
+    // Batched: what this thread's collapses of a pass produced.
+    std::vector<int32_t> Affected;   ///< vertices to re-cost
+    std::vector<int32_t> Rejected;   ///< vertices whose choice the rules forbade
+    std::vector<Candidate> Deferred; ///< candidates reaching out of their block
+    int64_t Collapses = 0, Rejections = 0, RemovedFaces = 0;
   };
   Choice Evaluate(int32_t v0, bool exact, bool allowBound, Workspace& ws) const;
   /**
@@ -249,16 +266,40 @@ private:
   /// Step 5, Greedy: the heap of vertices, one collapse at a time.
   void CollapseGreedily(DecimatorStatistics& stats, bool prefetch,
                         const std::function<bool(double)>& progress);
-  /// Step 5, Batched (CollapseSchedule::Batched).
+  /**
+   * Step 5, Batched (CollapseSchedule::Batched). Each pass sorts the batch by block (ranges
+   * of 2^BlockShift vertex ids, a fixed partition) and runs the blocks on several threads
+   * (CollapseBlocks): in each block, in cost order, the collapses whose whole neighbourhood
+   * lies inside it (IsInsideBlock); no two threads ever touch the same face or vertex. The
+   * others are deferred and made afterwards on this thread, in cost order. Then the affected
+   * vertices are re-costed. The outcome depends on the blocks, never on the threads.
+   */
   void CollapseInBatches(DecimatorStatistics& stats, const std::function<bool(double)>& progress);
+  static constexpr int BlockShift = 14; ///< blocks of 16384 vertex ids
+  void CollapseBlocks(const std::vector<Candidate>& batch, const std::vector<size_t>& blockStart,
+                      int32_t pass);
+  void CollapseBlock(const Candidate* begin, const Candidate* end, int32_t block, int32_t pass,
+                     Workspace& ws);
+  /// Whether every vertex of every face the collapse v0 -> v1 reads or writes is in `block`.
+  bool IsInsideBlock(int32_t v0, int32_t v1, int32_t block) const;
+  enum class Outcome
+  {
+    Collapsed,
+    Rejected
+  };
+  /// Batched: check v0 -> v1, then collapse it and stamp the affected vertices, or stamp v0
+  /// as rejected; `counted` whether the mesh counts the removed faces itself.
+  Outcome TryCollapse(int32_t v0, int32_t v1, int32_t pass, Workspace& ws, bool counted);
   /// The rules' verdict on v0 -> v1; with OptimalPlacement, y is the placement and `moves`
   /// whether it differs from v1's point.
-  bool IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, double y[6]);
-  /// Merge v0's metric state into v1 and collapse (FormerNeighbors: v0's neighbours before).
-  void ApplyCollapse(int32_t v0, int32_t v1, bool moves, const double y[6]);
+  bool IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, double y[6], Workspace& ws) const;
+  /// Merge v0's metric state into v1 and collapse (ws.FormerNeighbors: v0's neighbours
+  /// before); the number of faces removed.
+  int ApplyCollapse(int32_t v0, int32_t v1, bool moves, const double y[6], Workspace& ws,
+                    bool counted);
   /// The vertices whose chosen collapse or its cost the collapse into v1 may have changed.
   template <typename Function>
-  void ForEachAffected(int32_t v1, Function&& f) const;
+  void ForEachAffected(int32_t v1, const std::vector<int32_t>& formerNeighbors, Function&& f) const;
   static constexpr int LargeRing = 16;
   /**
    * From this many points on, the decimation's arrays (about 200 bytes per point) are far
@@ -319,12 +360,12 @@ private:
   Workspace Main;                      ///< the calling thread's
   std::vector<Workspace> Workers;      ///< the other threads' (during Run only)
   int ThreadsUsed = 1;                 ///< the most threads EvaluateAll started in this Run
+  int CollapseThreadsUsed = 1;         ///< the most threads CollapseBlocks started in this Run
   std::vector<float> ReferenceNormals; ///< the input normal of every face slot (CollapseRules)
   HalfEdgeMesh Mesh;
   std::vector<HotVertex> Hot;
   bool UseColor = false;
   std::vector<VertexMetric> Metrics;
-  std::vector<int32_t> FormerNeighbors;
   VertexHeap Heap;
   std::vector<int32_t> Best;    ///< vertex -> its chosen target, -1 if none
   std::vector<uint8_t> Bounded; ///< vertex -> its heap key is a lower bound, to be made exact

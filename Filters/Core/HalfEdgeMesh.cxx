@@ -204,7 +204,6 @@ void HalfEdgeMesh::RemoveFace(int32_t h)
     this->Corners[k].Vertex = -1;
     this->Corners[k].Twin = -1;
   }
-  --this->LiveFaces;
 }
 
 void HalfEdgeMesh::RepairOutgoing(int32_t v, int32_t candidate)
@@ -234,13 +233,19 @@ void HalfEdgeMesh::RepairOutgoing(int32_t v, int32_t candidate)
 
 int HalfEdgeMesh::Collapse(int32_t v0, int32_t v1)
 {
+  const int removed = this->CollapseUncounted(v0, v1);
+  this->LiveFaces -= removed;
+  return removed;
+}
+
+int HalfEdgeMesh::CollapseUncounted(int32_t v0, int32_t v1)
+{
   const int32_t h01 = this->FindHalfEdge(v0, v1);
   const int32_t h10 = this->FindHalfEdge(v1, v0);
 
-  // v0's corners, gathered before anything changes (the valence is small; the buffer is
-  // reused so that a collapse allocates nothing in the steady state).
-  this->Scratch.clear();
-  this->ForEachOutgoing(v0, [&](int32_t h) { this->Scratch.push_back(h); });
+  // v0's corners become v1's first (the fan is walked before anything else changes; the
+  // corners of the two faces that go are cleared below anyway).
+  this->ForEachOutgoing(v0, [this, v1](int32_t h) { this->Corners[h].Vertex = v1; });
 
   int32_t vl = -1, vr = -1, leftCandidate = -1, rightCandidate = -1, keepCandidate = -1;
   int removed = 0;
@@ -265,13 +270,6 @@ int HalfEdgeMesh::Collapse(int32_t v0, int32_t v1)
     keepCandidate = tb >= 0 ? tb : Next(ta);
     this->RemoveFace(h10);
     ++removed;
-  }
-  for (int32_t h : this->Scratch)
-  {
-    if (this->Corners[h].Vertex == v0)
-    {
-      this->Corners[h].Vertex = v1;
-    }
   }
   this->Out[v0] = -1;
   this->Flags[v0] |= Removed;

@@ -173,6 +173,16 @@ public:
   int Collapse(int32_t v0, int32_t v1);
 
   /**
+   * Collapse without counting: the live-face count is left to the caller (RemoveLiveFaces).
+   * Collapses on different threads are safe when every vertex of every face around v0, v1
+   * and their common neighbours (the faces it reads and writes) is touched by one thread
+   * only; the count is the one thing they would otherwise share.
+   */
+  int CollapseUncounted(int32_t v0, int32_t v1);
+  /// Account for `count` faces removed by CollapseUncounted.
+  void RemoveLiveFaces(int64_t count) { this->LiveFaces -= count; }
+
+  /**
    * Renumber: vertex v becomes vertexTo[v] and face slot f becomes faceTo[f] (both
    * permutations), with every half-edge, twin and outgoing half-edge following. Used to map a
    * mesh decimated in a spatial order (SpatialOrder.h) back to its input's ids.
@@ -191,9 +201,8 @@ private:
     int32_t Twin;   ///< twin half-edge, -1 on boundaries
   };
   std::vector<Corner> Corners;
-  std::vector<int32_t> Out;     ///< vertex -> one outgoing half-edge, -1 if it has none
-  std::vector<uint8_t> Flags;   ///< VertexFlag bits
-  std::vector<int32_t> Scratch; ///< reused by Collapse
+  std::vector<int32_t> Out;   ///< vertex -> one outgoing half-edge, -1 if it has none
+  std::vector<uint8_t> Flags; ///< VertexFlag bits
   int64_t LiveFaces = 0;
 };
 
