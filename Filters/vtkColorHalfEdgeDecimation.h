@@ -170,11 +170,12 @@ public:
   /**
    * The order of the collapses. Greedy (default): one at a time, always the cheapest valid
    * collapse of the whole mesh, as in the paper (and in vtkQuadricDecimation). Batched: in
-   * passes; each takes the cheapest eighth of the vertices' chosen collapses and makes them
+   * passes; each takes the cheapest quarter of the vertices' chosen collapses and makes them
    * in cost order, skipping those whose cost a collapse earlier in the pass made stale, then
-   * re-costs every affected vertex, on NumberOfThreads threads. Same cost, same rules, the
-   * order greedy within each pass: faster on large meshes, the result is close to Greedy's
-   * but not the same.
+   * re-costs every affected vertex. The collapses of a pass run on NumberOfThreads threads,
+   * by blocks of the mesh (those that reach across blocks afterwards), and so does the
+   * re-costing. Same cost, same rules, so the same guarantees; faster on large meshes, and a
+   * result close to Greedy's but not the same. It does not depend on NumberOfThreads.
    */
   enum CollapseSchedules
   {

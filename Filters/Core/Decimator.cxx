@@ -208,10 +208,10 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   stats.OutputTriangles = this->Mesh.GetNumberOfLiveFaces();
   // Connectivity 24 B/triangle + 5 B/vertex; reference normals 12 B/triangle; metric 48;
   // hot record 32; Greedy: heap 16 per entry + 20 per vertex; Batched: key 8, stamp 4, the
-  // candidates 16 and the batch (at most an eighth of them) 2; choice 4 + 1.
+  // candidates 16 and the batch (at most a quarter of them) 4; choice 4 + 1.
   // ColorQuadric: 112 instead of 48 for the metric, and 1 more for the moved flags.
   stats.MetricBytesPerVertex = this->QuadricMetric ? sizeof(ColorQuadric) : sizeof(VertexMetric);
-  const size_t ordering = this->Options.Schedule == CollapseSchedule::Batched ? 30 : 36;
+  const size_t ordering = this->Options.Schedule == CollapseSchedule::Batched ? 32 : 36;
   stats.StateBytes = (24 + 12) * size_t(input.NumberOfTriangles) +
     size_t(n) *
       (5 + stats.MetricBytesPerVertex + sizeof(HotVertex) + ordering + 4 + 1 +

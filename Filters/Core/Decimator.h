@@ -139,7 +139,7 @@ struct DecimatorOptions
   bool Renumber = true;
   CollapseSchedule Schedule = CollapseSchedule::Greedy;
   /// Batched: the share of the candidate collapses that each pass considers, in (0, 1].
-  double BatchFraction = 0.125;
+  double BatchFraction = 0.25;
   /// Threads that cost vertices (the initial costs; Batched: the re-costing passes); 0: one
   /// per hardware thread. The result is the same for any number.
   int NumberOfThreads = 0;

@@ -1212,7 +1212,7 @@ void TestThreadsSameResult()
   std::vector<double> points;
   std::vector<float> colors;
   std::vector<int32_t> triangles;
-  // Large enough for the blocks of a pass to be collapsed on two threads.
+  // Large enough for the blocks of a pass to be collapsed on several threads.
   const DecimatorInput input = JitteredSphere(260, points, colors, triangles);
   const int64_t target = input.NumberOfTriangles / 10;
   for (CollapseSchedule schedule : { CollapseSchedule::Greedy, CollapseSchedule::Batched })
@@ -1235,7 +1235,8 @@ void TestThreadsSameResult()
                 << " collapsing" << std::endl;
       CD_CHECK(a.Threads == 1 && b.Threads == 3); // the threads did start
       CD_CHECK(a.CollapseThreads == 1);
-      CD_CHECK(b.CollapseThreads == (schedule == CollapseSchedule::Batched ? 2 : 1));
+      CD_CHECK(schedule == CollapseSchedule::Batched ? b.CollapseThreads >= 2
+                                                     : b.CollapseThreads == 1);
       CD_CHECK(a.OutputTriangles <= target && a.Collapses > input.NumberOfPoints / 3);
       CD_CHECK(a.Collapses == b.Collapses && a.OutputTriangles == b.OutputTriangles);
       CD_CHECK(a.RejectedPops == b.RejectedPops && a.Passes == b.Passes);
