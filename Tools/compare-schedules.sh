@@ -25,7 +25,7 @@ run_x=()
 if [ -z "${DISPLAY:-}" ]; then
   run_x=(xvfb-run -a)
 fi
-json() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print($2)" "$3"; }
+json() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print($1)" "$2"; }
 
 echo "| mesh | input triangles | schedule | seconds | output triangles | colour PSNR (dB) | shape PSNR (dB) | Metro RMS (% diag) | Metro max (% diag) |"
 echo "|---|--:|---|--:|--:|--:|--:|--:|--:|"
