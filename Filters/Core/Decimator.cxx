@@ -610,7 +610,7 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
   // Stamp[v] == pass: v was affected by a collapse of this pass (its key is stale) or its
   // chosen collapse was found illegal; either way it waits for the re-costing.
   this->Stamp.assign(n, 0);
-  // Blocks: ranges of BlockSize ids (neighbours on the surface in the spatial order), a fixed
+  // Blocks: ranges of 2^BlockShift ids (neighbours on the surface in the spatial order), a fixed
   // partition, so that the result does not depend on the number of threads.
   const int32_t blocks = (n >> BlockShift) + 1;
   std::vector<Candidate> candidates, batch, deferred;
@@ -689,8 +689,7 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
     // 2. The deferred ones, in cost order, on this thread, up to the target.
     std::sort(deferred.begin(), deferred.end());
     Workspace& ws = this->Main;
-    ws.Affected.clear();
-    ws.Rejected.clear();
+    ws.ClearPass();
     for (const Candidate& c : deferred)
     {
       if (this->Mesh.GetNumberOfLiveFaces() <= stats.TargetTriangles)
@@ -731,10 +730,6 @@ void Decimator::CollapseBlocks(const std::vector<Candidate>& batch,
   std::atomic<int32_t> nextBlock(0);
   auto work = [this, &batch, &blockStart, &nextBlock, blocks, pass](Workspace& ws)
   {
-    ws.Affected.clear();
-    ws.Rejected.clear();
-    ws.Deferred.clear();
-    ws.Collapses = ws.Rejections = ws.RemovedFaces = 0;
     for (int32_t block = nextBlock++; block < blocks; block = nextBlock++)
     {
       this->CollapseBlock(batch.data() + blockStart[block], batch.data() + blockStart[block + 1],
@@ -749,12 +744,11 @@ void Decimator::CollapseBlocks(const std::vector<Candidate>& batch,
   {
     this->Workers.push_back(this->Main);
   }
+  // Every workspace starts the pass empty, those of idle threads too (they are gathered).
+  this->Main.ClearPass();
   for (Workspace& ws : this->Workers)
   {
-    ws.Affected.clear();
-    ws.Rejected.clear();
-    ws.Deferred.clear();
-    ws.Collapses = ws.Rejections = ws.RemovedFaces = 0;
+    ws.ClearPass();
   }
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t)

@@ -250,6 +250,13 @@ private:
     std::vector<int32_t> Rejected;   ///< vertices whose choice the rules forbade
     std::vector<Candidate> Deferred; ///< candidates reaching out of their block
     int64_t Collapses = 0, Rejections = 0, RemovedFaces = 0;
+    void ClearPass()
+    {
+      this->Affected.clear();
+      this->Rejected.clear();
+      this->Deferred.clear();
+      this->Collapses = this->Rejections = this->RemovedFaces = 0;
+    }
   };
   Choice Evaluate(int32_t v0, bool exact, bool allowBound, Workspace& ws) const;
   /**
