@@ -507,6 +507,20 @@ void Decimator::ForEachAffected(int32_t v1, const std::vector<int32_t>& formerNe
                              });
 }
 
+void Decimator::Requeue(int32_t v0, bool exact)
+{
+  const Choice choice = this->Evaluate(v0, exact, false, this->Main);
+  this->Best[v0] = choice.Target;
+  if (choice.Target < 0)
+  {
+    this->Heap.Remove(v0);
+  }
+  else
+  {
+    this->Heap.Set(v0, choice.Cost);
+  }
+}
+
 void Decimator::CollapseGreedily(DecimatorStatistics& stats, bool prefetch,
                                  const std::function<bool(double)>& progress)
 {
@@ -544,16 +558,7 @@ void Decimator::CollapseGreedily(DecimatorStatistics& stats, bool prefetch,
     {
       // Its key was a lower bound (a high-valence vertex): cost it exactly, and back it goes.
       this->Bounded[v0] = 0;
-      const Choice exact = this->Evaluate(v0, false, false, this->Main);
-      this->Best[v0] = exact.Target;
-      if (exact.Target < 0)
-      {
-        this->Heap.Remove(v0);
-      }
-      else
-      {
-        this->Heap.Set(v0, exact.Cost);
-      }
+      this->Requeue(v0, false);
       continue;
     }
     if (prefetch)
@@ -565,16 +570,7 @@ void Decimator::CollapseGreedily(DecimatorStatistics& stats, bool prefetch,
     if (!this->IsCollapseLegal(v0, v1, moves, y, this->Main))
     {
       ++stats.RejectedPops;
-      const Choice legal = this->Evaluate(v0, true, false, this->Main);
-      this->Best[v0] = legal.Target;
-      if (legal.Target < 0)
-      {
-        this->Heap.Remove(v0);
-      }
-      else
-      {
-        this->Heap.Set(v0, legal.Cost);
-      }
+      this->Requeue(v0, true); // over its legal collapses only
       continue;
     }
     this->Heap.Pop();

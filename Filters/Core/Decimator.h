@@ -270,6 +270,9 @@ private:
   static constexpr size_t MinimumThreadWork = 4096;
   /// Batched: how many collapses ahead each prefetch stage works.
   static constexpr size_t FarAhead = 16, MiddleAhead = 8, NearAhead = 4;
+  /// Greedy: cost the vertex at the top exactly (exact: over its legal collapses only) and
+  /// give it its new key, or take it out of the heap if it has no collapse left.
+  void Requeue(int32_t v0, bool exact);
   /// Step 5, Greedy: the heap of vertices, one collapse at a time.
   void CollapseGreedily(DecimatorStatistics& stats, bool prefetch,
                         const std::function<bool(double)>& progress);
