@@ -285,6 +285,7 @@ struct Settings
   double TargetReduction = 0.9;
   double NormalAngle = 90.0;
   double GeometryWeight = 1.0;
+  int Schedule = 0;
 };
 
 vtkSmartPointer<vtkPolyData> Build(ByteReader& in, Settings& settings)
@@ -294,6 +295,7 @@ vtkSmartPointer<vtkPolyData> Build(ByteReader& in, Settings& settings)
   settings.Metric = options & 3;
   settings.ColorSpace = (more & 8) ? vtkColorHalfEdgeDecimation::CIELab : 0;
   settings.OptimalPlacement = (more & 16) != 0;
+  settings.Schedule = (more & 128) ? vtkColorHalfEdgeDecimation::Batched : 0;
   static const double colorWeights[4] = { 1.0, 0.0, 1e-3, 1e3 };
   settings.ColorWeight = colorWeights[(more >> 5) & 3];
   settings.PreserveBoundary = (options & 4) != 0;
@@ -450,6 +452,7 @@ Result Decimate(vtkPolyData* mesh, const Settings& settings)
   filter->SetErrorMetric(settings.Metric);
   filter->SetColorSpace(settings.ColorSpace);
   filter->SetOptimalPlacement(settings.OptimalPlacement);
+  filter->SetCollapseSchedule(settings.Schedule);
   filter->SetColorWeight(settings.ColorWeight);
   filter->SetPreserveBoundary(settings.PreserveBoundary);
   filter->SetGenerateOriginalPointIds(settings.GenerateIds);

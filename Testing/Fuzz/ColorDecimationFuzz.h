@@ -14,7 +14,8 @@
  *     3 GenerateOriginalPointIds off, 4 double points, 5 colour selected by name,
  *     6 extra point and cell arrays, 7 an input array named vtkOriginalPointIds
  *  1  more options: bit 0 cell ghost array, 1 point ghost array, 2 colour array gets no name,
- *     3 ColorSpace CIELab, 4 OptimalPlacement, 5-6 ColorWeight (1, 0, 1e-3, 1e3)
+ *     3 ColorSpace CIELab, 4 OptimalPlacement, 5-6 ColorWeight (1, 0, 1e-3, 1e3),
+ *     7 CollapseSchedule Batched
  *  2  TargetReduction   (0..250 -> b/250; 251.. -> -1, 2, NaN, 1e-9, 1-1e-9)
  *  3  MaximumNormalAngle (0..250 -> 180 b/250; 251.. -> -10, 360, NaN, 1e-300, 180)
  *  4  GeometryWeight (table of 16 values incl. 0, tiny, huge, inf, NaN, negative)
