@@ -15,6 +15,7 @@ namespace
 {
 constexpr double Pi = 3.14159265358979323846;
 constexpr double MaximumDriftAngle = 75.0; ///< degrees
+constexpr double Infinity = std::numeric_limits<double>::infinity();
 
 CollapseRuleOptions MakeRuleOptions(const DecimatorOptions& options)
 {
@@ -623,7 +624,9 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
     {
       if (this->Best[v] >= 0)
       {
-        candidates.push_back({ keys[v], v });
+        // A NaN cost (0 x inf, from a GeometryWeight of 0 on extreme input) goes last, so
+        // that the sort sees a strict weak order.
+        candidates.push_back({ std::isnan(keys[v]) ? Infinity : keys[v], v });
       }
     }
     if (candidates.empty())
