@@ -1,7 +1,8 @@
 /**
  * @file Decimator.h
- * @brief The decimation loop: vertices in a min-heap keyed by their cheapest valid outgoing
- * half-edge collapse, collapsed one at a time until the triangle target is met.
+ * @brief The decimation loop: vertices keyed by their cheapest valid outgoing half-edge
+ * collapse, collapsed one at a time from a min-heap (Greedy) or in passes (Batched) until
+ * the triangle target is met.
  *
  * Pipeline (in the order Run performs it):
  * 0. meshes of LargeMeshVertices points or more are renumbered in a spatial order
@@ -21,14 +22,16 @@
  *    over its legal collapses); then re-cost every affected vertex at once, in memory order
  *    and on several threads. The affected vertices are those Greedy re-costs, so a batch of
  *    one is exactly Greedy (tested); larger batches trade the strict global order for
- *    locality and parallelism. The batch is known in advance, so its neighbourhoods are
- *    prefetched a few collapses ahead.
+ *    locality and parallelism. The collapses of a pass run by blocks of vertex ids on several
+ *    threads (see CollapseInBatches below). The batch is known in advance, so its
+ *    neighbourhoods are prefetched a few collapses ahead.
  *
- * The loop is bound by memory latency, not arithmetic: each collapse happens somewhere else
- * on the surface and re-costs the 2-ring around it, which is seldom in cache. Three things
- * keep that in check: the spatial order (a neighbourhood spans few cache lines), the walk of
- * PrefetchNeighborhood (the rings of all of v0's neighbours are fetched side by side, so
- * their misses overlap instead of queuing) and the heap's lazy increases (VertexHeap.h).
+ * The Greedy loop is bound by memory latency, not arithmetic: each collapse happens
+ * somewhere else on the surface and re-costs the 2-ring around it, which is seldom in cache.
+ * Three things keep that in check: the spatial order (a neighbourhood spans few cache
+ * lines), the walk of PrefetchNeighborhood (the rings of all of v0's neighbours are fetched
+ * side by side, so their misses overlap instead of queuing) and the heap's lazy increases
+ * (VertexHeap.h).
  *
  * Costing is lazy about legality: a vertex is keyed by its cheapest *admissible* target (the
  * boundary rule and locks only), which is a lower bound of its cheapest *valid* one. When a
