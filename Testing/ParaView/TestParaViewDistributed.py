@@ -48,6 +48,7 @@ parser.add_argument("--resolution", type=int, default=200)
 parser.add_argument("--reduction", type=float, default=0.9)
 parser.add_argument("--chain", choices=["ghosts", "no-ghosts", "redistribute",
                                         "redistribute-ghosts"], default="ghosts")
+parser.add_argument("--schedule", choices=["Greedy", "Batched"], default="Greedy")
 parser.add_argument("--compare-decimate", action="store_true")
 parser.add_argument("--time", action="store_true")
 parser.add_argument("--no-check", action="store_true")
@@ -139,6 +140,7 @@ upstream.UpdatePipeline()
 
 decimation = ColorHalfEdgeDecimation(Input=upstream)
 decimation.Colors = ["POINTS", "RGB"]
+decimation.CollapseSchedule = args.schedule
 if args.time:
     # The filter asks upstream for a ghost level: a first run brings the upstream up to date
     # with that request, so that the timed run below executes the decimation alone.
@@ -150,8 +152,9 @@ decimation.UpdatePipeline()
 elapsed = time.time() - start
 result = servermanager.Fetch(ProcessIdScalars(Input=decimation, CellScalars=1))
 n_out = result.GetNumberOfPolys()
-print("ranks %d, chain %s: %d triangles -> %d (target about %d), decimation %.3f s"
-      % (ranks, args.chain, n_in, n_out, round((1 - args.reduction) * n_in), elapsed))
+print("ranks %d, chain %s, %s schedule: %d triangles -> %d (target about %d), decimation %.3f s"
+      % (ranks, args.chain, args.schedule, n_in, n_out, round((1 - args.reduction) * n_in),
+         elapsed))
 if args.time:
     print("TIME ranks=%d triangles=%d seconds=%.3f" % (ranks, n_in, elapsed))
 
