@@ -233,31 +233,25 @@ void Decimator::RenumberInput(const DecimatorInput& original, SpatialOrder& orde
   const int32_t n = original.NumberOfPoints;
   const int32_t nt = original.NumberOfTriangles;
   ComputeSpatialOrder(n, original.Points, nt, original.Triangles, order);
-  points.resize(3 * size_t(n));
-  for (int32_t v = 0; v < n; ++v)
+  // Per-vertex arrays: new vertex v takes old vertex OldVertex[v]'s `width` values.
+  auto gather = [&order, n](const auto* source, size_t width, auto& values)
   {
-    std::copy_n(original.Points + 3 * size_t(order.OldVertex[v]), 3,
-                points.begin() + 3 * size_t(v));
-  }
-  renumbered.Points = points.data();
-  if (original.Colors)
-  {
-    colors.resize(3 * size_t(n));
+    values.resize(width * size_t(n));
     for (int32_t v = 0; v < n; ++v)
     {
-      std::copy_n(original.Colors + 3 * size_t(order.OldVertex[v]), 3,
-                  colors.begin() + 3 * size_t(v));
+      std::copy_n(source + width * size_t(order.OldVertex[v]), width,
+                  values.begin() + width * size_t(v));
     }
-    renumbered.Colors = colors.data();
+    return values.data();
+  };
+  renumbered.Points = gather(original.Points, 3, points);
+  if (original.Colors)
+  {
+    renumbered.Colors = gather(original.Colors, 3, colors);
   }
   if (original.Fixed)
   {
-    fixed.resize(n);
-    for (int32_t v = 0; v < n; ++v)
-    {
-      fixed[v] = original.Fixed[order.OldVertex[v]];
-    }
-    renumbered.Fixed = fixed.data();
+    renumbered.Fixed = gather(original.Fixed, 1, fixed);
   }
   triangles.resize(3 * size_t(nt));
   for (int32_t f = 0; f < nt; ++f)
