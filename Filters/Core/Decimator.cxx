@@ -422,6 +422,18 @@ void Decimator::EvaluateAll(const int32_t* vertices, size_t count, bool exact, b
   }
 }
 
+std::vector<double> Decimator::EvaluateEveryVertex(bool allowBound)
+{
+  const int32_t n = this->Mesh.GetNumberOfVertices();
+  this->Best.assign(n, -1);
+  this->Bounded.assign(n, 0);
+  std::vector<int32_t> all(n);
+  std::iota(all.begin(), all.end(), 0);
+  std::vector<double> keys(n);
+  this->EvaluateAll(all.data(), all.size(), false, allowBound, keys.data());
+  return keys;
+}
+
 bool Decimator::IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, double y[6],
                                 Workspace& ws) const
 {
@@ -521,13 +533,8 @@ void Decimator::CollapseGreedily(DecimatorStatistics& stats, bool prefetch,
 {
   const int32_t n = this->Mesh.GetNumberOfVertices();
   this->Heap.Reset(n);
-  this->Best.assign(n, -1);
-  this->Bounded.assign(n, 0);
   {
-    std::vector<int32_t> all(n);
-    std::iota(all.begin(), all.end(), 0);
-    std::vector<double> keys(n);
-    this->EvaluateAll(all.data(), all.size(), false, true, keys.data());
+    const std::vector<double> keys = this->EvaluateEveryVertex(true);
     for (int32_t v = 0; v < n; ++v)
     {
       if (this->Best[v] >= 0)
@@ -590,14 +597,7 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
                                   const std::function<bool(double)>& progress)
 {
   const int32_t n = this->Mesh.GetNumberOfVertices();
-  this->Best.assign(n, -1);
-  this->Bounded.assign(n, 0);
-  std::vector<double> keys(n);
-  {
-    std::vector<int32_t> all(n);
-    std::iota(all.begin(), all.end(), 0);
-    this->EvaluateAll(all.data(), all.size(), false, false, keys.data());
-  }
+  std::vector<double> keys = this->EvaluateEveryVertex(false);
   // Stamp[v] == pass: v was affected by a collapse of this pass (its key is stale) or its
   // chosen collapse was found illegal; either way it waits for the re-costing.
   this->Stamp.assign(n, 0);
@@ -695,12 +695,9 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
       {
         continue;
       }
-      const Outcome outcome = this->TryCollapse(v0, v1, pass, ws, true);
-      stats.Collapses += outcome == Outcome::Collapsed ? 1 : 0;
-      stats.RejectedPops += outcome == Outcome::Rejected ? 1 : 0;
+      this->TryCollapse(v0, v1, pass, ws, true);
     }
-    affected.insert(affected.end(), ws.Affected.begin(), ws.Affected.end());
-    rejected.insert(rejected.end(), ws.Rejected.begin(), ws.Rejected.end());
+    gather(ws); // the mesh counted these faces itself: ws.RemovedFaces is 0
     ++stats.Passes;
     // 3. Re-cost in vertex order (neighbours in memory are neighbours on the surface); the
     // rejected ones over their legal collapses only.
@@ -809,9 +806,7 @@ void Decimator::CollapseBlock(const Candidate* begin, const Candidate* end, int3
     {
       continue;
     }
-    const Outcome outcome = this->TryCollapse(v0, v1, pass, ws, false);
-    ws.Collapses += outcome == Outcome::Collapsed ? 1 : 0;
-    ws.Rejections += outcome == Outcome::Rejected ? 1 : 0;
+    this->TryCollapse(v0, v1, pass, ws, false);
   }
 }
 
@@ -848,8 +843,7 @@ bool Decimator::IsInsideBlock(int32_t v0, int32_t v1, int32_t block) const
   return inside;
 }
 
-Decimator::Outcome Decimator::TryCollapse(int32_t v0, int32_t v1, int32_t pass, Workspace& ws,
-                                          bool counted)
+void Decimator::TryCollapse(int32_t v0, int32_t v1, int32_t pass, Workspace& ws, bool counted)
 {
   int32_t* stamp = this->Stamp.data();
   double y[6];
@@ -858,9 +852,12 @@ Decimator::Outcome Decimator::TryCollapse(int32_t v0, int32_t v1, int32_t pass, 
   {
     stamp[v0] = pass;
     ws.Rejected.push_back(v0);
-    return Outcome::Rejected;
+    ++ws.Rejections;
+    return;
   }
-  ws.RemovedFaces += this->ApplyCollapse(v0, v1, moves, y, ws, counted);
+  const int removed = this->ApplyCollapse(v0, v1, moves, y, ws, counted);
+  ws.RemovedFaces += counted ? 0 : removed; // what the mesh has not counted itself
+  ++ws.Collapses;
   this->ForEachAffected(v1, ws.FormerNeighbors,
                         [pass, stamp, &ws](int32_t u)
                         {
@@ -870,7 +867,6 @@ Decimator::Outcome Decimator::TryCollapse(int32_t v0, int32_t v1, int32_t pass, 
                             ws.Affected.push_back(u);
                           }
                         });
-  return Outcome::Collapsed;
 }
 
 void Decimator::GatherRing(int32_t v0, Ring& ring) const

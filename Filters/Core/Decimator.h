@@ -268,6 +268,8 @@ private:
    */
   void EvaluateAll(const int32_t* vertices, size_t count, bool exact, bool allowBound,
                    double* keys);
+  /// Step 4: every vertex's choice into Best and Bounded; returns the keys (by vertex).
+  std::vector<double> EvaluateEveryVertex(bool allowBound);
   /// Threads worth starting for this many evaluations (NumberOfThreads at most).
   int ThreadCount(size_t evaluations) const;
   static constexpr size_t MinimumThreadWork = 4096;
@@ -295,14 +297,10 @@ private:
                      Workspace& ws);
   /// Whether every vertex of every face the collapse v0 -> v1 reads or writes is in `block`.
   bool IsInsideBlock(int32_t v0, int32_t v1, int32_t block) const;
-  enum class Outcome
-  {
-    Collapsed,
-    Rejected
-  };
   /// Batched: check v0 -> v1, then collapse it and stamp the affected vertices, or stamp v0
-  /// as rejected; `counted` whether the mesh counts the removed faces itself.
-  Outcome TryCollapse(int32_t v0, int32_t v1, int32_t pass, Workspace& ws, bool counted);
+  /// as rejected, counting either in ws; `counted`: the mesh counts the removed faces itself
+  /// (otherwise they are added to ws.RemovedFaces).
+  void TryCollapse(int32_t v0, int32_t v1, int32_t pass, Workspace& ws, bool counted);
   /// The rules' verdict on v0 -> v1; with OptimalPlacement, y is the placement and `moves`
   /// whether it differs from v1's point.
   bool IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, double y[6], Workspace& ws) const;
