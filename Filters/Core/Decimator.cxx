@@ -1,5 +1,6 @@
 #include "Decimator.h"
 
+#include "Parallel.h"
 #include "Prefetch.h"
 
 #include <algorithm>
@@ -7,7 +8,6 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <thread>
 
 namespace colordecimation
 {
@@ -71,7 +71,8 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   stats.TargetTriangles = std::max<int64_t>(targetTriangles, 0);
 
   // 1. Connectivity.
-  stats.Build = this->Mesh.Build(n, input.Triangles, input.NumberOfTriangles);
+  stats.Build = this->Mesh.Build(n, input.Triangles, input.NumberOfTriangles,
+                                 this->ThreadCount(3 * size_t(input.NumberOfTriangles)));
   if (input.Fixed)
   {
     for (int32_t v = 0; v < n; ++v)
@@ -209,10 +210,11 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   stats.OutputTriangles = this->Mesh.GetNumberOfLiveFaces();
   // Connectivity 24 B/triangle + 5 B/vertex; reference normals 12 B/triangle; metric 48;
   // hot record 32; Greedy: heap 16 per entry + 20 per vertex; Batched: key 8, stamp 4, the
-  // candidates 16 and the batch (at most a quarter of them) 4; choice 4 + 1.
+  // candidates 16, the batch (at most a quarter of them) 4 and the interior flag 1; choice
+  // 4 + 1.
   // ColorQuadric: 112 instead of 48 for the metric, and 1 more for the moved flags.
   stats.MetricBytesPerVertex = this->QuadricMetric ? sizeof(ColorQuadric) : sizeof(VertexMetric);
-  const size_t ordering = this->Options.Schedule == CollapseSchedule::Batched ? 32 : 36;
+  const size_t ordering = this->Options.Schedule == CollapseSchedule::Batched ? 33 : 36;
   stats.StateBytes = (24 + 12) * size_t(input.NumberOfTriangles) +
     size_t(n) *
       (5 + stats.MetricBytesPerVertex + sizeof(HotVertex) + ordering + 4 + 1 +
@@ -285,6 +287,36 @@ void Decimator::RestoreOrder(const SpatialOrder& order)
   restore(this->Metrics);
   restore(this->ColorQuadrics);
   restore(this->Moved);
+}
+
+void Decimator::PrefetchEvaluation(const int32_t* vertices, size_t i, size_t end) const
+{
+  // The vertex records a few evaluations ahead, then its first face, then the records of
+  // that face's other two corners (two of its neighbours); the rest of the fan is usually
+  // on the same lines.
+  if (i + FarAhead < end)
+  {
+    const int32_t v = vertices[i + FarAhead];
+    this->Mesh.PrefetchVertex(v);
+    COLORDECIMATION_PREFETCH(this->Hot.data() + v);
+    if (!this->Metrics.empty())
+    {
+      COLORDECIMATION_PREFETCH(this->Metrics.data() + v);
+    }
+  }
+  if (i + MiddleAhead < end)
+  {
+    this->Mesh.PrefetchFirstFace(vertices[i + MiddleAhead]);
+  }
+  if (i + NearAhead < end)
+  {
+    const int32_t h = this->Mesh.Outgoing(vertices[i + NearAhead]);
+    if (h >= 0)
+    {
+      COLORDECIMATION_PREFETCH(this->Hot.data() + this->Mesh.Target(h));
+      COLORDECIMATION_PREFETCH(this->Hot.data() + this->Mesh.Origin(HalfEdgeMesh::Prev(h)));
+    }
+  }
 }
 
 void Decimator::PrefetchNeighborhood(int32_t v0)
@@ -365,16 +397,9 @@ void Decimator::Update(int32_t v)
   this->Heap.Set(v, best.Cost);
 }
 
-int Decimator::ThreadCount(size_t evaluations) const
+int Decimator::ThreadCount(size_t items) const
 {
-  int threads = this->Options.NumberOfThreads;
-  if (threads <= 0)
-  {
-    threads = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
-  }
-  // A thread is worth starting for some thousands of evaluations only.
-  const size_t useful = std::max<size_t>(1, evaluations / MinimumThreadWork);
-  return static_cast<int>(std::min<size_t>(static_cast<size_t>(threads), useful));
+  return ThreadsFor(items, this->Options.NumberOfThreads, MinimumThreadWork);
 }
 
 void Decimator::EvaluateAll(const int32_t* vertices, size_t count, bool exact, bool allowBound,
@@ -386,6 +411,7 @@ void Decimator::EvaluateAll(const int32_t* vertices, size_t count, bool exact, b
   {
     for (size_t i = begin; i < end; ++i)
     {
+      this->PrefetchEvaluation(vertices, i, end);
       const int32_t v = vertices[i];
       Choice choice;
       if (!this->Mesh.IsLocked(v) && !this->Mesh.IsRemoved(v))
@@ -399,26 +425,17 @@ void Decimator::EvaluateAll(const int32_t* vertices, size_t count, bool exact, b
   };
   const int threads = this->ThreadCount(count);
   this->ThreadsUsed = std::max(this->ThreadsUsed, threads);
-  if (threads <= 1)
-  {
-    evaluate(this->Main, 0, count);
-    return;
-  }
+  this->AddWorkers(threads);
+  ParallelFor(count, threads,
+              [this, evaluate](size_t begin, size_t end, int t)
+              { evaluate(t == 0 ? this->Main : this->Workers[t - 1], begin, end); });
+}
+
+void Decimator::AddWorkers(int threads)
+{
   while (this->Workers.size() < static_cast<size_t>(threads - 1))
   {
     this->Workers.push_back(this->Main); // its own scratch; the same rules and normals
-  }
-  std::vector<std::thread> pool;
-  pool.reserve(threads - 1);
-  for (int t = 1; t < threads; ++t)
-  {
-    pool.emplace_back(evaluate, std::ref(this->Workers[t - 1]), count * t / threads,
-                      count * (t + 1) / threads);
-  }
-  evaluate(this->Main, 0, count / threads);
-  for (std::thread& thread : pool)
-  {
-    thread.join();
   }
 }
 
@@ -601,6 +618,7 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
   // Stamp[v] == pass: v was affected by a collapse of this pass (its key is stale) or its
   // chosen collapse was found illegal; either way it waits for the re-costing.
   this->Stamp.assign(n, 0);
+  this->FlagEveryInterior();
   // Blocks: ranges of 2^BlockShift ids (neighbours on the surface in the spatial order), a fixed
   // partition, so that the result does not depend on the number of threads.
   const int32_t blocks = (n >> BlockShift) + 1;
@@ -638,9 +656,8 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
                                                        static_cast<double>(candidates.size()))))));
     const auto end = candidates.begin() + std::min(size, candidates.size());
     std::nth_element(candidates.begin(), end - 1, candidates.end());
-    std::sort(candidates.begin(), end);
 
-    // Each block's candidates, still in cost order (a stable counting sort by block).
+    // Each block's candidates (a counting sort by block; each block sorts its own by cost).
     std::fill(blockStart.begin(), blockStart.end(), 0);
     for (auto c = candidates.begin(); c != end; ++c)
     {
@@ -683,19 +700,28 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
     std::sort(deferred.begin(), deferred.end());
     Workspace& ws = this->Main;
     ws.ClearPass();
-    for (const Candidate& c : deferred)
+    for (size_t i = 0; i < deferred.size(); ++i)
     {
       if (this->Mesh.GetNumberOfLiveFaces() <= stats.TargetTriangles)
       {
         break;
       }
-      const int32_t v0 = c.Vertex;
+      this->PrefetchCandidates(deferred.data(), i, deferred.size(), -1);
+      const int32_t v0 = deferred[i].Vertex;
       const int32_t v1 = this->Best[v0];
       if (this->Stamp[v0] == pass || v1 < 0 || this->Stamp[v1] == pass)
       {
         continue;
       }
+      const int64_t collapses = ws.Collapses;
       this->TryCollapse(v0, v1, pass, ws, true);
+      if (ws.Collapses != collapses)
+      {
+        // v0's former neighbours (v1 among them) may now have one in another block, or no
+        // longer have one (a collapse inside a block never changes a flag: all it touches is
+        // in the block).
+        this->FlagInterior(ws.FormerNeighbors.data(), ws.FormerNeighbors.size());
+      }
     }
     gather(ws); // the mesh counted these faces itself: ws.RemovedFaces is 0
     ++stats.Passes;
@@ -711,10 +737,11 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
     }
   }
   this->Stamp = std::vector<int32_t>();
+  this->Interior = std::vector<uint8_t>();
 }
 
-void Decimator::CollapseBlocks(const std::vector<Candidate>& batch,
-                               const std::vector<size_t>& blockStart, int32_t pass)
+void Decimator::CollapseBlocks(std::vector<Candidate>& batch, const std::vector<size_t>& blockStart,
+                               int32_t pass)
 {
   const int32_t blocks = static_cast<int32_t>(blockStart.size()) - 1;
   std::atomic<int32_t> nextBlock(0);
@@ -730,74 +757,34 @@ void Decimator::CollapseBlocks(const std::vector<Candidate>& batch,
   // the same, and so is the result.
   const int threads = this->ThreadCount(batch.size());
   this->CollapseThreadsUsed = std::max(this->CollapseThreadsUsed, threads);
-  while (this->Workers.size() < static_cast<size_t>(threads - 1))
-  {
-    this->Workers.push_back(this->Main);
-  }
+  this->AddWorkers(threads);
   // Every workspace starts the pass empty, those of idle threads too (they are gathered).
   this->Main.ClearPass();
   for (Workspace& ws : this->Workers)
   {
     ws.ClearPass();
   }
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t)
-  {
-    pool.emplace_back(work, std::ref(this->Workers[t - 1]));
-  }
-  work(this->Main);
-  for (std::thread& thread : pool)
-  {
-    thread.join();
-  }
+  ParallelFor(size_t(threads), threads,
+              [this, work](size_t, size_t, int t)
+              { work(t == 0 ? this->Main : this->Workers[t - 1]); });
 }
 
-void Decimator::CollapseBlock(const Candidate* begin, const Candidate* end, int32_t block,
-                              int32_t pass, Workspace& ws)
+void Decimator::CollapseBlock(Candidate* begin, Candidate* end, int32_t block, int32_t pass,
+                              Workspace& ws)
 {
-  const auto inBlock = [block](int32_t v) { return (v >> BlockShift) == block; };
+  std::sort(begin, end); // cost order
   int32_t* stamp = this->Stamp.data();
   const size_t count = static_cast<size_t>(end - begin);
   for (size_t i = 0; i < count; ++i)
   {
-    // The candidates are known in advance: their neighbourhoods are fetched a few collapses
-    // ahead, in three stages (the vertex, its first face and target, the target's first
-    // face), none of which waits. Only this block's records are read.
-    if (i + FarAhead < count)
-    {
-      const int32_t v = begin[i + FarAhead].Vertex;
-      this->Mesh.PrefetchVertex(v);
-      COLORDECIMATION_PREFETCH(stamp + v);
-      COLORDECIMATION_PREFETCH(this->Best.data() + v);
-    }
-    if (i + MiddleAhead < count)
-    {
-      const int32_t v = begin[i + MiddleAhead].Vertex;
-      this->Mesh.PrefetchFirstFace(v);
-      const int32_t target = this->Best[v];
-      if (target >= 0 && inBlock(target))
-      {
-        this->Mesh.PrefetchVertex(target);
-        COLORDECIMATION_PREFETCH(stamp + target);
-      }
-      COLORDECIMATION_PREFETCH(this->Hot.data() + v);
-    }
-    if (i + NearAhead < count)
-    {
-      const int32_t target = this->Best[begin[i + NearAhead].Vertex];
-      if (target >= 0 && inBlock(target))
-      {
-        this->Mesh.PrefetchFirstFace(target);
-        COLORDECIMATION_PREFETCH(this->Hot.data() + target);
-      }
-    }
+    this->PrefetchCandidates(begin, i, count, block);
     const int32_t v0 = begin[i].Vertex;
     const int32_t v1 = this->Best[v0];
     if (stamp[v0] == pass || v1 < 0)
     {
       continue; // its key is stale: a neighbour collapsed in this pass
     }
-    if (!inBlock(v1) || !this->IsInsideBlock(v0, v1, block))
+    if (!this->IsInsideBlock(v0, v1, block))
     {
       ws.Deferred.push_back(begin[i]);
       continue;
@@ -810,37 +797,104 @@ void Decimator::CollapseBlock(const Candidate* begin, const Candidate* end, int3
   }
 }
 
+void Decimator::FlagInterior(const int32_t* vertices, size_t count)
+{
+  for (size_t i = 0; i < count; ++i)
+  {
+    const int32_t v = vertices[i];
+    const int32_t block = v >> BlockShift;
+    bool inside = true;
+    this->Mesh.ForEachNeighbor(
+      v, [&inside, block](int32_t u) { inside = inside && (u >> BlockShift) == block; });
+    this->Interior[v] = inside ? 1 : 0;
+  }
+}
+
+void Decimator::FlagEveryInterior()
+{
+  // Each edge appears as at least one half-edge: both of its ends learn of a neighbour in
+  // another block. (For a locked vertex this may be stricter than its fan; its flag is
+  // never read.)
+  this->Interior.assign(this->Mesh.GetNumberOfVertices(), 1);
+  const int32_t numHalfEdges = 3 * this->Mesh.GetNumberOfFaceSlots();
+  for (int32_t h = 0; h < numHalfEdges; ++h)
+  {
+    const int32_t a = this->Mesh.Origin(h);
+    if (a < 0)
+    {
+      continue;
+    }
+    const int32_t b = this->Mesh.Target(h);
+    if ((a >> BlockShift) != (b >> BlockShift))
+    {
+      this->Interior[a] = this->Interior[b] = 0;
+    }
+  }
+}
+
+void Decimator::PrefetchCandidates(const Candidate* candidates, size_t i, size_t count,
+                                   int32_t block) const
+{
+  // The candidates are known in advance: their neighbourhoods are fetched a few collapses
+  // ahead, in three stages (the vertex, its first face and target, the target's first face),
+  // none of which waits. In a block (block >= 0) only the block's records are read.
+  const auto mayRead = [block](int32_t v) { return block < 0 || (v >> BlockShift) == block; };
+  if (i + FarAhead < count)
+  {
+    const int32_t v = candidates[i + FarAhead].Vertex;
+    this->Mesh.PrefetchVertex(v);
+    COLORDECIMATION_PREFETCH(this->Stamp.data() + v);
+    COLORDECIMATION_PREFETCH(this->Best.data() + v);
+  }
+  if (i + MiddleAhead < count)
+  {
+    const int32_t v = candidates[i + MiddleAhead].Vertex;
+    this->Mesh.PrefetchFirstFace(v);
+    const int32_t target = this->Best[v];
+    if (target >= 0 && mayRead(target))
+    {
+      this->Mesh.PrefetchVertex(target);
+      COLORDECIMATION_PREFETCH(this->Stamp.data() + target);
+    }
+    COLORDECIMATION_PREFETCH(this->Hot.data() + v);
+  }
+  if (i + NearAhead < count)
+  {
+    const int32_t target = this->Best[candidates[i + NearAhead].Vertex];
+    if (target >= 0 && mayRead(target))
+    {
+      this->Mesh.PrefetchFirstFace(target);
+      COLORDECIMATION_PREFETCH(this->Hot.data() + target);
+    }
+  }
+}
+
 bool Decimator::IsInsideBlock(int32_t v0, int32_t v1, int32_t block) const
 {
   // The collapse reads and writes the faces around v0, v1 and their common neighbours (vl
-  // and vr), and the records of their vertices: all of them must be in the block. Each fan
-  // is walked only once its centre is known to be in the block (no other thread writes the
-  // faces around a vertex of this block).
-  bool inside = true;
-  const auto check = [&inside, block](int32_t u) { inside = inside && (u >> BlockShift) == block; };
-  this->Mesh.ForEachNeighbor(v0, check);
-  if (!inside)
+  // and vr), and the records of their vertices: all of them must be in the block, i.e. these
+  // four vertices must be interior to it. A locked vl or vr fails the rules without its fan
+  // being read.
+  if (!this->Interior[v0] || (v1 >> BlockShift) != block || !this->Interior[v1])
   {
     return false;
   }
-  this->Mesh.ForEachNeighbor(v1, check);
-  if (!inside)
-  {
-    return false;
-  }
-  for (const int32_t h : { this->Mesh.FindHalfEdge(v0, v1), this->Mesh.FindHalfEdge(v1, v0) })
+  const int32_t h01 = this->Mesh.FindHalfEdge(v0, v1);
+  const int32_t twin = h01 >= 0 ? this->Mesh.Twin(h01) : -1;
+  const int32_t h10 = twin >= 0 ? twin : this->Mesh.FindHalfEdge(v1, v0);
+  for (const int32_t h : { h01, h10 })
   {
     if (h < 0)
     {
       continue;
     }
     const int32_t x = this->Mesh.Origin(HalfEdgeMesh::Prev(h)); // vl or vr
-    if (!this->Mesh.IsLocked(x)) // a locked one fails the rules without its fan being read
+    if (!this->Mesh.IsLocked(x) && !this->Interior[x])
     {
-      this->Mesh.ForEachNeighbor(x, check);
+      return false;
     }
   }
-  return inside;
+  return true;
 }
 
 void Decimator::TryCollapse(int32_t v0, int32_t v1, int32_t pass, Workspace& ws, bool counted)

@@ -271,7 +271,9 @@ private:
   /// Step 4: every vertex's choice into Best and Bounded; returns the keys (by vertex).
   std::vector<double> EvaluateEveryVertex(bool allowBound);
   /// Threads worth starting for this many evaluations (NumberOfThreads at most).
-  int ThreadCount(size_t evaluations) const;
+  int ThreadCount(size_t items) const;
+  /// Make sure there is a workspace for each of `threads` threads.
+  void AddWorkers(int threads);
   static constexpr size_t MinimumThreadWork = 4096;
   /// Batched: how many collapses ahead each prefetch stage works.
   static constexpr size_t FarAhead = 16, MiddleAhead = 8, NearAhead = 4;
@@ -291,12 +293,18 @@ private:
    */
   void CollapseInBatches(DecimatorStatistics& stats, const std::function<bool(double)>& progress);
   static constexpr int BlockShift = 14; ///< blocks of 16384 vertex ids
-  void CollapseBlocks(const std::vector<Candidate>& batch, const std::vector<size_t>& blockStart,
+  void CollapseBlocks(std::vector<Candidate>& batch, const std::vector<size_t>& blockStart,
                       int32_t pass);
-  void CollapseBlock(const Candidate* begin, const Candidate* end, int32_t block, int32_t pass,
-                     Workspace& ws);
+  void CollapseBlock(Candidate* begin, Candidate* end, int32_t block, int32_t pass, Workspace& ws);
+  /// Fetch the neighbourhoods of candidates[i + a few] into the cache (block >= 0: reading
+  /// that block's records only).
+  void PrefetchCandidates(const Candidate* candidates, size_t i, size_t count, int32_t block) const;
   /// Whether every vertex of every face the collapse v0 -> v1 reads or writes is in `block`.
   bool IsInsideBlock(int32_t v0, int32_t v1, int32_t block) const;
+  /// Interior[v] for every vertex: whether all of v's neighbours are in v's block.
+  void FlagEveryInterior();
+  /// Interior[v] anew for the listed vertices (after collapses that crossed blocks).
+  void FlagInterior(const int32_t* vertices, size_t count);
   /// Batched: check v0 -> v1, then collapse it and stamp the affected vertices, or stamp v0
   /// as rejected, counting either in ws; `counted`: the mesh counts the removed faces itself
   /// (otherwise they are added to ws.RemovedFaces).
@@ -334,6 +342,8 @@ private:
    * of v0's neighbours side by side so that their cache misses overlap instead of queuing.
    */
   void PrefetchNeighborhood(int32_t v0);
+  /// Fetch what evaluating vertices[i + a few] reads into the cache.
+  void PrefetchEvaluation(const int32_t* vertices, size_t i, size_t end) const;
   /// ColorQuadric: cost of every ring member (and, with OptimalPlacement, its placement).
   void CostRingColorQuadric(int32_t v0, Workspace& ws) const;
   /**
@@ -381,6 +391,9 @@ private:
   std::vector<int32_t> Best;    ///< vertex -> its chosen target, -1 if none
   std::vector<uint8_t> Bounded; ///< vertex -> its heap key is a lower bound, to be made exact
   std::vector<int32_t> Stamp;   ///< Batched: vertex -> the last pass that made its key stale
+  /// Batched: vertex -> all its neighbours are in its block (a collapse inside a block keeps
+  /// this true; one across blocks may make it false for the vertices it gives new neighbours)
+  std::vector<uint8_t> Interior;
 };
 
 } // namespace colordecimation

@@ -1,5 +1,6 @@
 #include "HalfEdgeMesh.h"
 
+#include "Parallel.h"
 #include "SpatialOrder.h"
 
 #include <algorithm>
@@ -8,7 +9,7 @@ namespace colordecimation
 {
 
 MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangles,
-                                    int32_t numTriangles)
+                                    int32_t numTriangles, int threads)
 {
   MeshBuildReport report;
   const int32_t numHalfEdges = 3 * numTriangles;
@@ -44,45 +45,72 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
     }
   }
 
-  // Pair twins. An edge is manifold when it has exactly one half-edge each way.
-  for (int32_t h = 0; h < numHalfEdges; ++h)
+  // Pair twins. An edge is manifold when it has exactly one half-edge each way. Each
+  // half-edge writes its own twin only: the half-edges are shared among threads, and what
+  // else they find (edges to count, vertices to lock) is gathered afterwards.
+  struct PairingResult
   {
-    const int32_t a = this->Corners[h].Vertex;
-    const int32_t b = this->Target(h);
-    int32_t forward = 0, backward = 0, twin = -1, smallest = h;
-    for (int32_t k = offsets[a]; k < offsets[a + 1]; ++k)
+    int64_t BoundaryEdges = 0, NonManifoldEdges = 0;
+    std::vector<int32_t> ToLock;
+  };
+  std::vector<PairingResult> found(static_cast<size_t>(std::max(threads, 1)));
+  const int32_t* rows = offsets.data();
+  const int32_t* rowHalfEdges = outgoing.data();
+  const int32_t* rowTargets = targets.data();
+  PairingResult* results = found.data();
+  ParallelFor(static_cast<size_t>(numHalfEdges), threads,
+              [this, rows, rowHalfEdges, rowTargets, results](size_t begin, size_t end, int t)
+              {
+                PairingResult result; // on this thread's stack, copied out at the end
+                for (int32_t h = static_cast<int32_t>(begin); h < static_cast<int32_t>(end); ++h)
+                {
+                  const int32_t a = this->Corners[h].Vertex;
+                  const int32_t b = this->Target(h);
+                  int32_t forward = 0, backward = 0, twin = -1, smallest = h;
+                  for (int32_t k = rows[a]; k < rows[a + 1]; ++k)
+                  {
+                    if (rowTargets[k] == b)
+                    {
+                      ++forward;
+                      smallest = std::min(smallest, rowHalfEdges[k]);
+                    }
+                  }
+                  for (int32_t k = rows[b]; k < rows[b + 1]; ++k)
+                  {
+                    if (rowTargets[k] == a)
+                    {
+                      ++backward;
+                      twin = rowHalfEdges[k];
+                      smallest = std::min(smallest, rowHalfEdges[k]);
+                    }
+                  }
+                  if (forward == 1 && backward == 1)
+                  {
+                    this->Corners[h].Twin = twin;
+                  }
+                  else if (forward == 1 && backward == 0)
+                  {
+                    ++result.BoundaryEdges;
+                  }
+                  else
+                  {
+                    result.ToLock.push_back(a);
+                    result.ToLock.push_back(b);
+                    if (smallest == h)
+                    {
+                      ++result.NonManifoldEdges;
+                    }
+                  }
+                }
+                results[t] = std::move(result);
+              });
+  for (const PairingResult& result : found)
+  {
+    report.BoundaryEdges += result.BoundaryEdges;
+    report.NonManifoldEdges += result.NonManifoldEdges;
+    for (const int32_t v : result.ToLock)
     {
-      if (targets[k] == b)
-      {
-        ++forward;
-        smallest = std::min(smallest, outgoing[k]);
-      }
-    }
-    for (int32_t k = offsets[b]; k < offsets[b + 1]; ++k)
-    {
-      if (targets[k] == a)
-      {
-        ++backward;
-        twin = outgoing[k];
-        smallest = std::min(smallest, outgoing[k]);
-      }
-    }
-    if (forward == 1 && backward == 1)
-    {
-      this->Corners[h].Twin = twin;
-    }
-    else if (forward == 1 && backward == 0)
-    {
-      ++report.BoundaryEdges;
-    }
-    else
-    {
-      this->Flags[a] |= Locked;
-      this->Flags[b] |= Locked;
-      if (smallest == h)
-      {
-        ++report.NonManifoldEdges;
-      }
+      this->Flags[v] |= Locked;
     }
   }
 

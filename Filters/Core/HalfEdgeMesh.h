@@ -61,8 +61,10 @@ public:
   };
 
   /// Build from `numTriangles` triangles given as 3 vertex ids each. Triangles must not
-  /// repeat a vertex (the caller drops those).
-  MeshBuildReport Build(int32_t numVertices, const int32_t* triangles, int32_t numTriangles);
+  /// repeat a vertex (the caller drops those). The twins are paired on `threads` threads
+  /// (the result is the same for any number).
+  MeshBuildReport Build(int32_t numVertices, const int32_t* triangles, int32_t numTriangles,
+                        int threads = 1);
 
   static int32_t Next(int32_t h) { return (h % 3 == 2) ? h - 2 : h + 1; }
   static int32_t Prev(int32_t h) { return (h % 3 == 0) ? h + 2 : h - 1; }

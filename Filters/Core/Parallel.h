@@ -1,0 +1,67 @@
+/**
+ * @file Parallel.h
+ * @brief A fork-join loop on std::thread: the few places where the decimation runs on several
+ * cores (setting up the connectivity, costing vertices, the Batched schedule's blocks).
+ *
+ * Every caller splits its work so that the result does not depend on the number of threads:
+ * each thread writes only what belongs to its own items, and anything gathered from the
+ * threads is combined in a fixed order.
+ */
+#ifndef colordecimation_Parallel_h
+#define colordecimation_Parallel_h
+
+#include <algorithm>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+namespace colordecimation
+{
+
+/**
+ * Threads worth starting for `count` items when a thread is worth it for `grain` items at
+ * least, and no more than `limit` (0 or less: one per hardware thread).
+ */
+inline int ThreadsFor(size_t count, int limit, size_t grain)
+{
+  const int available =
+    limit > 0 ? limit : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  const size_t useful = std::max<size_t>(1, count / std::max<size_t>(grain, 1));
+  return static_cast<int>(std::min<size_t>(static_cast<size_t>(available), useful));
+}
+
+/**
+ * Call body(begin, end, t) for t = 0 .. threads - 1 on `threads` threads (t = 0 on the calling
+ * one), [begin, end) being the t-th of `threads` contiguous ranges splitting [0, count).
+ * Returns when all have returned. The body is copied for each thread: let it capture by value
+ * what its loop reads (pointers rather than references to the caller's vectors).
+ */
+template <typename Body>
+void ParallelFor(size_t count, int threads, Body&& body)
+{
+  threads = std::max(threads, 1);
+  if (threads == 1)
+  {
+    body(size_t(0), count, 0);
+    return;
+  }
+  // Each thread calls its own copy of the body: what it captured is read from memory no other
+  // thread writes to (a shared copy on the caller's stack would share cache lines with the
+  // caller's own frames, and they would bounce between the cores).
+  std::vector<std::thread> pool;
+  pool.reserve(threads - 1);
+  for (int t = 1; t < threads; ++t)
+  {
+    pool.emplace_back([body, count, threads, t]() mutable
+                      { body(count * t / threads, count * (t + 1) / threads, t); });
+  }
+  body(size_t(0), count / threads, 0);
+  for (std::thread& thread : pool)
+  {
+    thread.join();
+  }
+}
+
+} // namespace colordecimation
+
+#endif
