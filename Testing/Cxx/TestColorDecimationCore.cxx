@@ -629,6 +629,28 @@ long long Euler(const HalfEdgeMesh& mesh)
   return AnalyseTopology(tris).Euler();
 }
 
+/// Build on one thread and on three: the same report, twins, outgoing half-edges and locks.
+void CheckBuildThreads(int32_t numVertices, const int32_t* triangles, int32_t numTriangles)
+{
+  HalfEdgeMesh one, three;
+  const MeshBuildReport a = one.Build(numVertices, triangles, numTriangles, 1);
+  const MeshBuildReport b = three.Build(numVertices, triangles, numTriangles, 3);
+  CD_CHECK(a.BoundaryEdges == b.BoundaryEdges && a.NonManifoldEdges == b.NonManifoldEdges &&
+           a.NonManifoldVertices == b.NonManifoldVertices &&
+           a.IsolatedVertices == b.IsolatedVertices && a.LockedVertices == b.LockedVertices);
+  int differences = 0;
+  for (int32_t h = 0; h < 3 * numTriangles; ++h)
+  {
+    differences += one.Twin(h) != three.Twin(h) ? 1 : 0;
+  }
+  for (int32_t v = 0; v < numVertices; ++v)
+  {
+    differences += one.Outgoing(v) != three.Outgoing(v) ? 1 : 0;
+    differences += one.IsLocked(v) != three.IsLocked(v) ? 1 : 0;
+  }
+  CD_CHECK(differences == 0);
+}
+
 void TestHalfEdgeBuildClosed()
 {
   for (auto poly : { meshes::Icosphere(3, meshes::Pattern::Constant),
@@ -660,6 +682,7 @@ void TestHalfEdgeBuildClosed()
                            });
     }
     CD_CHECK(valences == 3LL * m.NumberOfTriangles());
+    CheckBuildThreads(m.NumberOfPoints(), m.Triangles.data(), m.NumberOfTriangles());
   }
 }
 
@@ -714,6 +737,7 @@ void TestHalfEdgeNonManifold()
   const int32_t fin[12] = { 0, 1, 2, 1, 0, 3, 0, 1, 4, 5, 6, 7 };
   HalfEdgeMesh mesh;
   MeshBuildReport report = mesh.Build(8, fin, 4);
+  CheckBuildThreads(8, fin, 4);
   CD_CHECK(report.NonManifoldEdges == 1);
   CD_CHECK(mesh.IsLocked(0) && mesh.IsLocked(1));
   CD_CHECK(!mesh.IsLocked(2) && !mesh.IsLocked(3) && !mesh.IsLocked(4) && !mesh.IsLocked(5));
@@ -722,12 +746,14 @@ void TestHalfEdgeNonManifold()
   // Two triangles on an edge with the same orientation (inconsistent): locked.
   const int32_t twisted[6] = { 0, 1, 2, 0, 1, 3 };
   report = mesh.Build(4, twisted, 2);
+  CheckBuildThreads(4, twisted, 2);
   CD_CHECK(report.NonManifoldEdges == 1);
   CD_CHECK(mesh.IsLocked(0) && mesh.IsLocked(1) && !mesh.IsLocked(2));
 
   // A bow-tie: two fans (0,1,2),(0,2,3) and (0,4,5),(0,5,6) meet only at vertex 0.
   const int32_t bowtie[12] = { 0, 1, 2, 0, 2, 3, 0, 4, 5, 0, 5, 6 };
   report = mesh.Build(7, bowtie, 4);
+  CheckBuildThreads(7, bowtie, 4);
   CD_CHECK(report.NonManifoldEdges == 0);
   CD_CHECK(report.NonManifoldVertices == 1);
   CD_CHECK(report.LockedVertices == 1);
@@ -741,11 +767,13 @@ void TestHalfEdgeNonManifold()
   const int32_t tetras[24] = { 0, 2, 1, 0, 3, 2, 0, 1, 3, 1, 2, 3,
                                0, 5, 4, 0, 6, 5, 0, 4, 6, 4, 5, 6 };
   report = mesh.Build(7, tetras, 8);
+  CheckBuildThreads(7, tetras, 8);
   CD_CHECK(report.NonManifoldVertices == 1);
   CD_CHECK(mesh.IsLocked(0) && !mesh.IsLocked(1) && !mesh.IsLocked(4));
   // An isolated vertex is reported and not collapsible.
   const int32_t tri[3] = { 0, 1, 2 };
   report = mesh.Build(4, tri, 1);
+  CheckBuildThreads(4, tri, 1);
   CD_CHECK(report.IsolatedVertices == 1);
   CD_CHECK(!mesh.IsCollapsible(3));
 }
