@@ -1,6 +1,7 @@
 #include "CollapseRules.h"
 
 #include "HalfEdgeMesh.h"
+#include "Parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -204,30 +205,35 @@ CollapseVerdict CollapseRules::CheckFan(const HalfEdgeMesh& mesh, const float* p
 }
 
 void CollapseRules::ComputeReferenceNormals(const HalfEdgeMesh& mesh, const float* positions,
-                                            int stride, std::vector<float>& normals)
+                                            int stride, std::vector<float>& normals, int threads)
 {
   const int32_t numFaces = mesh.GetNumberOfFaceSlots();
   normals.assign(3 * static_cast<size_t>(numFaces), 0.0f);
-  for (int32_t f = 0; f < numFaces; ++f)
-  {
-    if (!mesh.IsFaceAlive(f))
-    {
-      continue;
-    }
-    int32_t ids[3];
-    mesh.GetFace(f, ids);
-    double n[3];
-    TriangleNormal(positions + stride * ids[0], positions + stride * ids[1],
-                   positions + stride * ids[2], n);
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (length > 0 && std::isfinite(length))
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        normals[3 * static_cast<size_t>(f) + k] = static_cast<float>(n[k] / length);
-      }
-    }
-  }
+  float* out = normals.data();
+  ParallelFor(static_cast<size_t>(numFaces), threads,
+              [&mesh, positions, stride, out](size_t begin, size_t end, int)
+              {
+                for (auto f = static_cast<int32_t>(begin); f < static_cast<int32_t>(end); ++f)
+                {
+                  if (!mesh.IsFaceAlive(f))
+                  {
+                    continue;
+                  }
+                  int32_t ids[3];
+                  mesh.GetFace(f, ids);
+                  double n[3];
+                  TriangleNormal(positions + stride * ids[0], positions + stride * ids[1],
+                                 positions + stride * ids[2], n);
+                  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+                  if (length > 0 && std::isfinite(length))
+                  {
+                    for (int k = 0; k < 3; ++k)
+                    {
+                      out[3 * static_cast<size_t>(f) + k] = static_cast<float>(n[k] / length);
+                    }
+                  }
+                }
+              });
 }
 
 } // namespace colordecimation

@@ -72,10 +72,11 @@ public:
    * The unit normal of every live face slot of `mesh` (zero where the triangle is
    * degenerate), for SetReferenceNormals. Kept per face slot rather than recomputed from the
    * input's corners, so that the check reads one record instead of three vertices that may
-   * long have been collapsed away, and stays right when collapses move vertices.
+   * long have been collapsed away, and stays right when collapses move vertices. On `threads`
+   * threads (each face is computed alone: the same result for any number).
    */
   static void ComputeReferenceNormals(const HalfEdgeMesh& mesh, const float* positions, int stride,
-                                      std::vector<float>& normals);
+                                      std::vector<float>& normals, int threads = 1);
 
   /**
    * Full check of v0 -> v1. The position of vertex v is positions[stride * v + 0..2] (so that

@@ -1,6 +1,7 @@
 #include "ColorMetric.h"
 
 #include "HalfEdgeMesh.h"
+#include "Parallel.h"
 
 #include <algorithm>
 
@@ -64,109 +65,153 @@ void CollapseColorErrors(const double p0[3], const double c0[3], Ring& ring, dou
   }
 }
 
-void InitializeVertexMetrics(const HalfEdgeMesh& mesh, const float* positions, const float* colors,
-                             std::vector<VertexMetric>& metrics, int positionStride,
-                             int colorStride, double boundaryWeight)
+namespace
 {
-  const int32_t numVertices = mesh.GetNumberOfVertices();
-  metrics.assign(numVertices, VertexMetric());
-
-  // eq. 8: each triangle's plane, weighted by its area, on each of its corners. The plane
-  // passes through the corner, where the quadric is centred, so only A is non-zero.
-  const int32_t numFaces = mesh.GetNumberOfFaceSlots();
-  for (int32_t f = 0; f < numFaces; ++f)
-  {
-    if (!mesh.IsFaceAlive(f))
-    {
-      continue;
-    }
-    int32_t tri[3];
-    mesh.GetFace(f, tri);
-    const float* a = positions + positionStride * tri[0];
-    const float* b = positions + positionStride * tri[1];
-    const float* c = positions + positionStride * tri[2];
-    const double e1[3] = { double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2] };
-    const double e2[3] = { double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2] };
-    double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                    e1[0] * e2[1] - e1[1] * e2[0] };
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (!(length > 0))
-    {
-      continue;
-    }
-    const double area = 0.5 * length;
-    for (double& x : n)
-    {
-      x /= length;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      metrics[tri[k]].Q.AddPlaneThroughCentre(n, area);
-    }
-    if (!(boundaryWeight > 0))
-    {
-      continue;
-    }
-    // Boundary edges: the plane through the edge, perpendicular to the triangle.
-    const float* corner[3] = { a, b, c };
-    for (int k = 0; k < 3; ++k)
-    {
-      if (mesh.Twin(3 * f + k) >= 0)
-      {
-        continue;
-      }
-      const float* p = corner[k];
-      const float* q = corner[(k + 1) % 3];
-      const double e[3] = { double(q[0]) - p[0], double(q[1]) - p[1], double(q[2]) - p[2] };
-      double m[3] = { e[1] * n[2] - e[2] * n[1], e[2] * n[0] - e[0] * n[2],
-                      e[0] * n[1] - e[1] * n[0] };
-      const double ml = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-      if (!(ml > 0))
-      {
-        continue;
-      }
-      for (double& x : m)
-      {
-        x /= ml;
-      }
-      const double w = boundaryWeight * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-      metrics[tri[k]].Q.AddPlaneThroughCentre(m, w);
-      metrics[tri[(k + 1) % 3]].Q.AddPlaneThroughCentre(m, w);
-    }
-  }
-
-  if (!colors)
+/// The plane terms of face f (eq. 8, and the boundary planes) added to those of its corners
+/// that lie in [first, last).
+void AddFacePlanes(const HalfEdgeMesh& mesh, const float* positions, int positionStride,
+                   double boundaryWeight, int32_t f, int32_t first, int32_t last,
+                   VertexMetric* metrics)
+{
+  int32_t tri[3];
+  mesh.GetFace(f, tri);
+  const auto owned = [first, last](int32_t v) { return v >= first && v < last; };
+  if (!owned(tri[0]) && !owned(tri[1]) && !owned(tri[2]))
   {
     return;
   }
-  // eq. 14: each edge once (a boundary edge has one half-edge, an interior edge two).
-  std::vector<double> sum(numVertices, 0.0);
-  std::vector<double> maximum(numVertices, 0.0);
-  const int32_t numHalfEdges = 3 * numFaces;
-  for (int32_t h = 0; h < numHalfEdges; ++h)
+  const float* a = positions + positionStride * tri[0];
+  const float* b = positions + positionStride * tri[1];
+  const float* c = positions + positionStride * tri[2];
+  const double e1[3] = { double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2] };
+  const double e2[3] = { double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2] };
+  double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                  e1[0] * e2[1] - e1[1] * e2[0] };
+  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (!(length > 0))
   {
-    const int32_t twin = mesh.Twin(h);
-    if (mesh.Origin(h) < 0 || (twin >= 0 && twin < h))
+    return;
+  }
+  const double area = 0.5 * length;
+  for (double& x : n)
+  {
+    x /= length;
+  }
+  // The plane passes through the corner, where the quadric is centred: only A is non-zero.
+  for (int k = 0; k < 3; ++k)
+  {
+    if (owned(tri[k]))
+    {
+      metrics[tri[k]].Q.AddPlaneThroughCentre(n, area);
+    }
+  }
+  if (!(boundaryWeight > 0))
+  {
+    return;
+  }
+  // Boundary edges: the plane through the edge, perpendicular to the triangle.
+  const float* corner[3] = { a, b, c };
+  for (int k = 0; k < 3; ++k)
+  {
+    if (mesh.Twin(3 * f + k) >= 0)
     {
       continue;
     }
-    const int32_t a = mesh.Origin(h);
-    const int32_t b = mesh.Target(h);
-    const float* fa = colors + colorStride * a;
-    const float* fb = colors + colorStride * b;
-    const double ca[3] = { fa[0], fa[1], fa[2] };
-    const double cb[3] = { fb[0], fb[1], fb[2] };
-    const double d = Distance3(ca, cb);
-    sum[a] += d;
-    sum[b] += d;
-    maximum[a] = std::max(maximum[a], d);
-    maximum[b] = std::max(maximum[b], d);
+    const float* p = corner[k];
+    const float* q = corner[(k + 1) % 3];
+    const double e[3] = { double(q[0]) - p[0], double(q[1]) - p[1], double(q[2]) - p[2] };
+    double m[3] = { e[1] * n[2] - e[2] * n[1], e[2] * n[0] - e[0] * n[2],
+                    e[0] * n[1] - e[1] * n[0] };
+    const double ml = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    if (!(ml > 0))
+    {
+      continue;
+    }
+    for (double& x : m)
+    {
+      x /= ml;
+    }
+    const double w = boundaryWeight * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    for (const int32_t v : { tri[k], tri[(k + 1) % 3] })
+    {
+      if (owned(v))
+      {
+        metrics[v].Q.AddPlaneThroughCentre(m, w);
+      }
+    }
   }
-  for (int32_t v = 0; v < numVertices; ++v)
-  {
-    metrics[v].Importance = static_cast<float>(VisualImportance(sum[v], maximum[v]));
-    metrics[v].MaxColorDistance = static_cast<float>(maximum[v]);
-  }
+}
+} // namespace
+
+void InitializeVertexMetrics(const HalfEdgeMesh& mesh, const float* positions, const float* colors,
+                             std::vector<VertexMetric>& metrics, int positionStride,
+                             int colorStride, double boundaryWeight, int threads)
+{
+  const int32_t numVertices = mesh.GetNumberOfVertices();
+  metrics.assign(numVertices, VertexMetric());
+  VertexMetric* state = metrics.data();
+  // Each thread owns a range of vertices and walks all faces and edges in their order, adding
+  // to its own vertices only: every vertex sees the same sums in the same order as with one
+  // thread. (In the spatial order most faces have all their corners in one range.)
+  const int32_t numFaces = mesh.GetNumberOfFaceSlots();
+  const int32_t numHalfEdges = 3 * numFaces;
+  ParallelFor(static_cast<size_t>(numVertices), threads,
+              [&mesh, positions, colors, state, positionStride, colorStride, boundaryWeight,
+               numFaces, numHalfEdges](size_t begin, size_t end, int)
+              {
+                const auto first = static_cast<int32_t>(begin);
+                const auto last = static_cast<int32_t>(end);
+                // eq. 8: each triangle's plane, weighted by its area, on each of its corners.
+                for (int32_t f = 0; f < numFaces; ++f)
+                {
+                  if (mesh.IsFaceAlive(f))
+                  {
+                    AddFacePlanes(mesh, positions, positionStride, boundaryWeight, f, first, last,
+                                  state);
+                  }
+                }
+                if (!colors)
+                {
+                  return;
+                }
+                // eq. 14: each edge once (a boundary edge has one half-edge, an interior edge
+                // two); the sum and the maximum kept in double until the end.
+                std::vector<double> sum(end - begin, 0.0), maximum(end - begin, 0.0);
+                for (int32_t h = 0; h < numHalfEdges; ++h)
+                {
+                  const int32_t twin = mesh.Twin(h);
+                  const int32_t a = mesh.Origin(h);
+                  if (a < 0 || (twin >= 0 && twin < h))
+                  {
+                    continue;
+                  }
+                  const int32_t b = mesh.Target(h);
+                  const bool ownsA = a >= first && a < last, ownsB = b >= first && b < last;
+                  if (!ownsA && !ownsB)
+                  {
+                    continue;
+                  }
+                  const float* fa = colors + colorStride * a;
+                  const float* fb = colors + colorStride * b;
+                  const double ca[3] = { fa[0], fa[1], fa[2] };
+                  const double cb[3] = { fb[0], fb[1], fb[2] };
+                  const double d = Distance3(ca, cb);
+                  for (const int32_t v : { a, b })
+                  {
+                    if (v >= first && v < last)
+                    {
+                      sum[v - first] += d;
+                      maximum[v - first] = std::max(maximum[v - first], d);
+                    }
+                  }
+                }
+                for (int32_t v = first; v < last; ++v)
+                {
+                  state[v].Importance =
+                    static_cast<float>(VisualImportance(sum[v - first], maximum[v - first]));
+                  state[v].MaxColorDistance = static_cast<float>(maximum[v - first]);
+                }
+              });
 }
 
 } // namespace colordecimation

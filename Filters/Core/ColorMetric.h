@@ -171,12 +171,16 @@ VTKCOLORDECIMATION_EXPORT void CollapseColorErrors(const double p0[3], const dou
  * to both its vertices, the plane through the edge perpendicular to its triangle, weighted
  * by boundaryWeight times the edge's squared length (Garland and Heckbert's boundary
  * constraint): collapses that pull a boundary inwards or cut its corners then cost more.
+ *
+ * On `threads` threads, each owning a range of vertices and adding to them the faces and
+ * edges in the same order as one thread would: the result is the same for any number.
  */
 VTKCOLORDECIMATION_EXPORT void InitializeVertexMetrics(const HalfEdgeMesh& mesh,
                                                        const float* positions, const float* colors,
                                                        std::vector<VertexMetric>& metrics,
                                                        int positionStride = 3, int colorStride = 3,
-                                                       double boundaryWeight = 0.0);
+                                                       double boundaryWeight = 0.0,
+                                                       int threads = 1);
 
 } // namespace colordecimation
 

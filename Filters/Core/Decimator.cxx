@@ -62,7 +62,8 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   const bool large = original.NumberOfPoints >= LargeMeshVertices;
   if (this->Options.Renumber && large)
   {
-    this->RenumberInput(original, order, points, colors, triangles, fixed, input);
+    this->RenumberInput(original, order, points, colors, triangles, fixed, input,
+                        this->ThreadCount(size_t(original.NumberOfPoints)));
   }
 
   DecimatorStatistics stats;
@@ -166,12 +167,14 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
     this->ColorQuadrics.clear();
     InitializeVertexMetrics(this->Mesh, this->Positions(),
                             this->UseColor ? this->Hot[0].C : nullptr, this->Metrics, HotStride,
-                            HotStride, std::max(this->Options.BoundaryWeight, 0.0));
+                            HotStride, std::max(this->Options.BoundaryWeight, 0.0),
+                            this->ThreadCount(3 * size_t(input.NumberOfTriangles)));
   }
 
   // Each face slot's input normal bounds how far collapses may turn it, in total.
   CollapseRules::ComputeReferenceNormals(this->Mesh, this->Positions(), HotStride,
-                                         this->ReferenceNormals);
+                                         this->ReferenceNormals,
+                                         this->ThreadCount(size_t(input.NumberOfTriangles)));
   this->Main.Rules.SetReferenceNormals(this->ReferenceNormals.data());
   // The renumbered copies of the input, if any, are no longer needed: everything below reads
   // the mesh, the hot records and the metric state.
@@ -230,20 +233,25 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
 void Decimator::RenumberInput(const DecimatorInput& original, SpatialOrder& order,
                               std::vector<double>& points, std::vector<float>& colors,
                               std::vector<int32_t>& triangles, std::vector<uint8_t>& fixed,
-                              DecimatorInput& renumbered)
+                              DecimatorInput& renumbered, int threads)
 {
   const int32_t n = original.NumberOfPoints;
   const int32_t nt = original.NumberOfTriangles;
   ComputeSpatialOrder(n, original.Points, nt, original.Triangles, order);
   // Per-vertex arrays: new vertex v takes old vertex OldVertex[v]'s `width` values.
-  auto gather = [&order, n](const auto* source, size_t width, auto& values)
+  const int32_t* oldVertex = order.OldVertex.data();
+  auto gather = [oldVertex, n, threads](const auto* source, size_t width, auto& values)
   {
     values.resize(width * size_t(n));
-    for (int32_t v = 0; v < n; ++v)
-    {
-      std::copy_n(source + width * size_t(order.OldVertex[v]), width,
-                  values.begin() + width * size_t(v));
-    }
+    auto* target = values.data();
+    ParallelFor(size_t(n), threads,
+                [oldVertex, source, width, target](size_t begin, size_t end, int)
+                {
+                  for (size_t v = begin; v < end; ++v)
+                  {
+                    std::copy_n(source + width * size_t(oldVertex[v]), width, target + width * v);
+                  }
+                });
     return values.data();
   };
   renumbered.Points = gather(original.Points, 3, points);
@@ -256,14 +264,22 @@ void Decimator::RenumberInput(const DecimatorInput& original, SpatialOrder& orde
     renumbered.Fixed = gather(original.Fixed, 1, fixed);
   }
   triangles.resize(3 * size_t(nt));
-  for (int32_t f = 0; f < nt; ++f)
-  {
-    const int32_t* t = original.Triangles + 3 * size_t(order.OldFace[f]);
-    for (int k = 0; k < 3; ++k)
-    {
-      triangles[3 * size_t(f) + k] = order.NewVertex[t[k]];
-    }
-  }
+  const int32_t* oldFace = order.OldFace.data();
+  const int32_t* newVertex = order.NewVertex.data();
+  const int32_t* source = original.Triangles;
+  int32_t* target = triangles.data();
+  ParallelFor(size_t(nt), threads,
+              [oldFace, newVertex, source, target](size_t begin, size_t end, int)
+              {
+                for (size_t f = begin; f < end; ++f)
+                {
+                  const int32_t* t = source + 3 * size_t(oldFace[f]);
+                  for (int k = 0; k < 3; ++k)
+                  {
+                    target[3 * f + k] = newVertex[t[k]];
+                  }
+                }
+              });
   renumbered.Triangles = triangles.data();
 }
 

@@ -327,11 +327,12 @@ private:
    * 41k-point mesh and saves 5 % on a 163k-point one, 15 % on a 655k-point one).
    */
   static constexpr int32_t LargeMeshVertices = 65536;
-  /// The input in spatial order: renumbered copies of its arrays, and `renumbered` on them.
+  /// The input in spatial order: renumbered copies of its arrays (made on `threads` threads),
+  /// and `renumbered` on them.
   static void RenumberInput(const DecimatorInput& original, SpatialOrder& order,
                             std::vector<double>& points, std::vector<float>& colors,
                             std::vector<int32_t>& triangles, std::vector<uint8_t>& fixed,
-                            DecimatorInput& renumbered);
+                            DecimatorInput& renumbered, int threads);
   /// Map the decimated mesh and the per-vertex state back to the input's ids.
   void RestoreOrder(const SpatialOrder& order);
   void GatherRing(int32_t v0, Ring& ring) const;

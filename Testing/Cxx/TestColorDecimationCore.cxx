@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <iostream>
 #include <map>
 #include <random>
@@ -215,6 +216,14 @@ void TestVisualImportance()
   // Ring vertex 1 has faces (0,1,2) and (0,4,1), normals (1,1,1)/sqrt3 and (1,-1,1)/sqrt3;
   // at d = (0,0,1) each gives sqrt(3)/2 * 1/3: total 1/sqrt(3).
   CD_CHECK_NEAR(metrics[1].Q.Evaluate(up), 1.0 / Sqrt3, 1e-6);
+
+  // On three threads (vertex ranges {0}, {1, 2}, {3, 4}: most faces span two of them), with
+  // boundary planes: the very same bits.
+  std::vector<VertexMetric> threaded;
+  InitializeVertexMetrics(mesh, positions.data(), PyramidColors, metrics, 3, 3, 2.0, 1);
+  InitializeVertexMetrics(mesh, positions.data(), PyramidColors, threaded, 3, 3, 2.0, 3);
+  CD_CHECK(threaded.size() == metrics.size() &&
+           std::memcmp(threaded.data(), metrics.data(), sizeof(VertexMetric) * 5) == 0);
 }
 
 //------------------------------------------------------------------------------
