@@ -780,6 +780,7 @@ void Decimator::CollapseBlocks(std::vector<Candidate>& batch, const std::vector<
   {
     ws.ClearPass();
   }
+  // One call per thread (the ranges are unused): the threads take the blocks in turn.
   ParallelFor(size_t(threads), threads,
               [this, work](size_t, size_t, int t)
               { work(t == 0 ? this->Main : this->Workers[t - 1]); });

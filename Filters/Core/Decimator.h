@@ -270,7 +270,8 @@ private:
                    double* keys);
   /// Step 4: every vertex's choice into Best and Bounded; returns the keys (by vertex).
   std::vector<double> EvaluateEveryVertex(bool allowBound);
-  /// Threads worth starting for this many evaluations (NumberOfThreads at most).
+  /// Threads worth starting for this many items of work (vertices to cost, half-edges to pair,
+  /// candidates to collapse...): NumberOfThreads at most, MinimumThreadWork items per thread.
   int ThreadCount(size_t items) const;
   /// Make sure there is a workspace for each of `threads` threads.
   void AddWorkers(int threads);
@@ -392,8 +393,8 @@ private:
   std::vector<int32_t> Best;    ///< vertex -> its chosen target, -1 if none
   std::vector<uint8_t> Bounded; ///< vertex -> its heap key is a lower bound, to be made exact
   std::vector<int32_t> Stamp;   ///< Batched: vertex -> the last pass that made its key stale
-  /// Batched: vertex -> all its neighbours are in its block (a collapse inside a block keeps
-  /// this true; one across blocks may make it false for the vertices it gives new neighbours)
+  /// Batched: vertex -> all its neighbours are in its block (a collapse inside a block never
+  /// changes it; one across blocks may, either way, for v0's former neighbours: FlagInterior)
   std::vector<uint8_t> Interior;
 };
 
