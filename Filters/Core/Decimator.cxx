@@ -638,7 +638,7 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
   // Blocks: ranges of 2^BlockShift ids (neighbours on the surface in the spatial order), a fixed
   // partition, so that the result does not depend on the number of threads.
   const int32_t blocks = (n >> BlockShift) + 1;
-  std::vector<Candidate> candidates, batch, deferred;
+  std::vector<Candidate> batch, deferred;
   std::vector<size_t> blockStart(blocks + 1);
   std::vector<int32_t> affected, rejected;
   const int64_t startFaces = this->Mesh.GetNumberOfLiveFaces();
@@ -647,47 +647,41 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
   while (this->Mesh.GetNumberOfLiveFaces() > stats.TargetTriangles && !stats.Aborted)
   {
     ++pass;
-    candidates.clear();
-    for (int32_t v = 0; v < n; ++v)
-    {
-      if (this->Best[v] >= 0)
+    // The batch: the cheapest fraction of the candidates (the vertices with a chosen collapse),
+    // no more than the collapses still needed (each removes two triangles, one on a
+    // boundary), so that the block phase, which does not stop half-way, ends at the target or
+    // one triangle below at the lowest. It comes in vertex order, hence grouped by block.
+    const int64_t needed = (this->Mesh.GetNumberOfLiveFaces() - stats.TargetTriangles + 1) / 2;
+    const double fraction = this->Options.BatchFraction;
+    const int32_t* best = this->Best.data();
+    const double* key = keys.data();
+    batch.clear();
+    const size_t candidates = SelectCheapest(
+      n,
+      [best, key](int32_t v, double& k)
       {
-        // A NaN cost (0 x inf, from a GeometryWeight of 0 on extreme input) goes last, so
-        // that the sort sees a strict weak order.
-        candidates.push_back({ std::isnan(keys[v]) ? Infinity : keys[v], v });
-      }
-    }
-    if (candidates.empty())
+        k = OrderableKey(key[v]);
+        return best[v] >= 0;
+      },
+      [needed, fraction](size_t count)
+      {
+        return static_cast<size_t>(std::max<int64_t>(
+          1,
+          std::min<int64_t>(
+            needed, static_cast<int64_t>(std::ceil(fraction * static_cast<double>(count))))));
+      },
+      this->ThreadCount(static_cast<size_t>(n)), batch);
+    if (candidates == 0)
     {
       break;
     }
-    // The batch: the cheapest fraction of the candidates, no more than the collapses still
-    // needed (each removes two triangles, one on a boundary), so that the block phase, which
-    // does not stop half-way, ends at the target or one triangle below at the lowest.
-    const int64_t needed = (this->Mesh.GetNumberOfLiveFaces() - stats.TargetTriangles + 1) / 2;
-    const size_t size = static_cast<size_t>(std::max<int64_t>(
-      1,
-      std::min<int64_t>(needed,
-                        static_cast<int64_t>(std::ceil(this->Options.BatchFraction *
-                                                       static_cast<double>(candidates.size()))))));
-    const auto end = candidates.begin() + std::min(size, candidates.size());
-    std::nth_element(candidates.begin(), end - 1, candidates.end());
-
-    // Each block's candidates (a counting sort by block; each block sorts its own by cost).
+    // Each block's candidates (each block sorts its own by cost).
     std::fill(blockStart.begin(), blockStart.end(), 0);
-    for (auto c = candidates.begin(); c != end; ++c)
+    for (const Candidate& c : batch)
     {
-      ++blockStart[(c->Vertex >> BlockShift) + 1];
+      ++blockStart[(c.Vertex >> BlockShift) + 1];
     }
     std::partial_sum(blockStart.begin(), blockStart.end(), blockStart.begin());
-    batch.resize(static_cast<size_t>(end - candidates.begin()));
-    {
-      std::vector<size_t> next(blockStart.begin(), blockStart.end() - 1);
-      for (auto c = candidates.begin(); c != end; ++c)
-      {
-        batch[next[c->Vertex >> BlockShift]++] = *c;
-      }
-    }
 
     // 1. The blocks, on several threads: the collapses whose whole neighbourhood lies in their
     // block; the others are deferred.
@@ -698,7 +692,6 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
     int64_t removed = 0;
     auto gather = [&](Workspace& ws)
     {
-      affected.insert(affected.end(), ws.Affected.begin(), ws.Affected.end());
       rejected.insert(rejected.end(), ws.Rejected.begin(), ws.Rejected.end());
       deferred.insert(deferred.end(), ws.Deferred.begin(), ws.Deferred.end());
       stats.Collapses += ws.Collapses;
@@ -742,8 +735,21 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
     gather(ws); // the mesh counted these faces itself: ws.RemovedFaces is 0
     ++stats.Passes;
     // 3. Re-cost in vertex order (neighbours in memory are neighbours on the surface); the
-    // rejected ones over their legal collapses only.
-    std::sort(affected.begin(), affected.end());
+    // rejected ones over their legal collapses only. The affected ones are those stamped with
+    // this pass, once the rejected ones are stamped apart (with -pass, which no pass matches).
+    for (int32_t v : rejected)
+    {
+      this->Stamp[v] = -pass;
+    }
+    const int32_t* stamp = this->Stamp.data();
+    CollectInOrder(
+      static_cast<size_t>(n), this->ThreadCount(static_cast<size_t>(n)),
+      [stamp, pass](size_t v, int32_t& u)
+      {
+        u = static_cast<int32_t>(v);
+        return stamp[v] == pass;
+      },
+      affected);
     this->EvaluateAll(affected.data(), affected.size(), false, false, keys.data());
     this->EvaluateAll(rejected.data(), rejected.size(), true, false, keys.data());
     if (progress)
@@ -929,15 +935,7 @@ void Decimator::TryCollapse(int32_t v0, int32_t v1, int32_t pass, Workspace& ws,
   const int removed = this->ApplyCollapse(v0, v1, moves, y, ws, counted);
   ws.RemovedFaces += counted ? 0 : removed; // what the mesh has not counted itself
   ++ws.Collapses;
-  this->ForEachAffected(v1, ws.FormerNeighbors,
-                        [pass, stamp, &ws](int32_t u)
-                        {
-                          if (stamp[u] != pass)
-                          {
-                            stamp[u] = pass;
-                            ws.Affected.push_back(u);
-                          }
-                        });
+  this->ForEachAffected(v1, ws.FormerNeighbors, [pass, stamp](int32_t u) { stamp[u] = pass; });
 }
 
 void Decimator::GatherRing(int32_t v0, Ring& ring) const

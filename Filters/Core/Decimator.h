@@ -71,6 +71,7 @@
 #include "ColorQuadric.h"
 #include "ColorSpace.h"
 #include "HalfEdgeMesh.h"
+#include "Selection.h"
 #include "SpatialOrder.h"
 #include "VertexHeap.h"
 #include "vtkColorDecimationModule.h" // for export macro
@@ -225,16 +226,6 @@ private:
    * allowBound, a vertex of more than LargeRing neighbours under the paper's metric gets the
    * lower bound (1 + Q)(1 + I) instead (C >= 0): O(k) instead of the O(k^2) colour error.
    */
-  /// Batched: a vertex and its key (cost order, ties by id).
-  struct Candidate
-  {
-    double Key;
-    int32_t Vertex;
-    bool operator<(const Candidate& other) const
-    {
-      return this->Key < other.Key || (this->Key == other.Key && this->Vertex < other.Vertex);
-    }
-  };
   /// What costing one vertex writes to: one per thread.
   struct Workspace
   {
@@ -249,13 +240,11 @@ private:
     CollapseRules Rules;                  ///< its own copy (the rules keep scratch)
     std::vector<int32_t> FormerNeighbors; ///< v0's neighbours before the last collapse
     // Batched: what this thread's collapses of a pass produced.
-    std::vector<int32_t> Affected;   ///< vertices to re-cost
     std::vector<int32_t> Rejected;   ///< vertices whose choice the rules forbade
     std::vector<Candidate> Deferred; ///< candidates reaching out of their block
     int64_t Collapses = 0, Rejections = 0, RemovedFaces = 0;
     void ClearPass()
     {
-      this->Affected.clear();
       this->Rejected.clear();
       this->Deferred.clear();
       this->Collapses = this->Rejections = this->RemovedFaces = 0;

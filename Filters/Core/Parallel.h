@@ -62,6 +62,36 @@ void ParallelFor(size_t count, int threads, Body&& body)
   }
 }
 
+/**
+ * Append to `out`, in index order, the item that make(i, item) fills in for each i < count for
+ * which it returns true, on `threads` threads: each collects its own range, and the ranges are
+ * appended in order, so `out` is the same whatever the number of threads.
+ */
+template <typename T, typename Make>
+void CollectInOrder(size_t count, int threads, const Make& make, std::vector<T>& out)
+{
+  threads = std::max(threads, 1);
+  std::vector<std::vector<T>> collected(threads);
+  std::vector<T>* lists = collected.data();
+  ParallelFor(count, threads,
+              [lists, make](size_t begin, size_t end, int t)
+              {
+                std::vector<T>& list = lists[t];
+                T item;
+                for (size_t i = begin; i < end; ++i)
+                {
+                  if (make(i, item))
+                  {
+                    list.push_back(item);
+                  }
+                }
+              });
+  for (const std::vector<T>& list : collected)
+  {
+    out.insert(out.end(), list.begin(), list.end());
+  }
+}
+
 } // namespace colordecimation
 
 #endif

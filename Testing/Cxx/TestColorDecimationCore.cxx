@@ -7,6 +7,7 @@
 #include "Decimator.h"
 #include "HalfEdgeMesh.h"
 #include "Quadric.h"
+#include "Selection.h"
 #include "SpatialOrder.h"
 #include "VertexHeap.h"
 
@@ -19,6 +20,7 @@
 #include <cstdint>
 #include <cstring>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <random>
 #include <set>
@@ -424,6 +426,98 @@ void TestHighValenceBound()
     faces.push_back(live);
   }
   CD_CHECK_MSG(faces[0] == faces[1], "the bounded and the exact keys give different meshes");
+}
+
+void TestBatchSelection()
+{
+  // SelectCheapest against a full sort: the same set (the smallest by key, ties by vertex) for
+  // any number of threads, in vertex order; with ties across the cut, NaN (last, as +inf), -0
+  // (as +0), negative keys, non-candidates, and keys that crowd one histogram bucket.
+  std::mt19937 rng(2026);
+  std::uniform_int_distribution<int> kind(0, 9);
+  std::uniform_real_distribution<double> wide(-3.0, 40.0);
+  std::uniform_int_distribution<int> coarse(0, 6);
+  for (const int32_t n : { 0, 1, 7, 1000, 20000 })
+  {
+    std::vector<double> keys(n);
+    std::vector<char> eligible(n);
+    for (int32_t v = 0; v < n; ++v)
+    {
+      const int k = kind(rng);
+      keys[v] = k == 0 ? std::nan("")
+        : k == 1       ? -0.0
+        : k < 4        ? 0.5 * coarse(rng)
+        : k < 6        ? 1.0 + 1e-9 * coarse(rng) // one bucket
+                       : std::exp(wide(rng)) * (k == 6 ? -1.0 : 1.0);
+      eligible[v] = kind(rng) != 0;
+    }
+    std::vector<Candidate> all;
+    for (int32_t v = 0; v < n; ++v)
+    {
+      if (eligible[v])
+      {
+        all.push_back({ OrderableKey(keys[v]), v });
+      }
+    }
+    std::sort(all.begin(), all.end());
+    for (const double share : { 0.0, 0.001, 0.25, 0.5, 1.0 })
+    {
+      const size_t wanted = static_cast<size_t>(share * static_cast<double>(all.size()));
+      std::vector<Candidate> expected(all.begin(), all.begin() + wanted);
+      std::sort(expected.begin(), expected.end(),
+                [](const Candidate& a, const Candidate& b) { return a.Vertex < b.Vertex; });
+      for (const int threads : { 1, 2, 3 })
+      {
+        std::vector<Candidate> out = { { -1.0, -1 } }; // appended to, not replaced
+        size_t seen = 0;
+        const size_t total = SelectCheapest(
+          n,
+          [&keys, &eligible](int32_t v, double& key)
+          {
+            key = OrderableKey(keys[v]);
+            return eligible[v] != 0;
+          },
+          [wanted, &seen](size_t count)
+          {
+            seen = count;
+            return wanted;
+          },
+          threads, out);
+        CD_CHECK(total == all.size() && seen == (n > 0 ? all.size() : seen));
+        CD_CHECK_MSG(out.size() == expected.size() + 1,
+                     "n " << n << " share " << share << " threads " << threads << ": "
+                          << out.size() - 1 << " selected, " << expected.size() << " expected");
+        bool same = out.size() == expected.size() + 1 && out[0].Vertex == -1;
+        for (size_t i = 0; same && i < expected.size(); ++i)
+        {
+          const Candidate& a = out[i + 1];
+          const Candidate& b = expected[i];
+          same = a.Vertex == b.Vertex && std::memcmp(&a.Key, &b.Key, sizeof(double)) == 0;
+        }
+        CD_CHECK_MSG(same, "n " << n << " share " << share << " threads " << threads);
+      }
+    }
+  }
+  // The keys' order and their bits' order agree.
+  const double ordered[] = { -std::numeric_limits<double>::infinity(),
+                             -1e300,
+                             -2.0,
+                             -1e-300,
+                             0.0,
+                             1e-310,
+                             1e-300,
+                             0.5,
+                             1.0,
+                             1.0 + 1e-15,
+                             3.0,
+                             1e300,
+                             std::numeric_limits<double>::infinity() };
+  for (size_t i = 0; i + 1 < sizeof(ordered) / sizeof(ordered[0]); ++i)
+  {
+    CD_CHECK(OrderedBits(ordered[i]) < OrderedBits(ordered[i + 1]));
+  }
+  CD_CHECK(OrderedBits(OrderableKey(-0.0)) == OrderedBits(0.0));
+  CD_CHECK(OrderableKey(std::nan("")) == std::numeric_limits<double>::infinity());
 }
 
 void TestVertexHeap()
@@ -1544,6 +1638,7 @@ int main(int argc, char* argv[])
                         { "CollapseCost", TestCollapseCost },
                         { "CollapseCostFrame", TestCollapseCostFrame },
                         { "VertexHeap", TestVertexHeap },
+                        { "BatchSelection", TestBatchSelection },
                         { "HighValenceBound", TestHighValenceBound },
                         { "HalfEdgeBuildClosed", TestHalfEdgeBuildClosed },
                         { "HalfEdgeBuildOpen", TestHalfEdgeBuildOpen },
