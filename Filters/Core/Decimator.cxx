@@ -635,11 +635,10 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
   // chosen collapse was found illegal; either way it waits for the re-costing.
   this->Stamp.assign(n, 0);
   this->FlagEveryInterior();
-  // Blocks: ranges of 2^BlockShift ids (neighbours on the surface in the spatial order), a fixed
-  // partition, so that the result does not depend on the number of threads.
-  const int32_t blocks = (n >> BlockShift) + 1;
+  // Blocks: ranges of 2^Shift ids (neighbours on the surface in the spatial order), fixed
+  // partitions, so that the result does not depend on the number of threads.
   std::vector<Candidate> batch, deferred;
-  std::vector<size_t> blockStart(blocks + 1);
+  std::vector<size_t> blockStart;
   std::vector<int32_t> affected, rejected;
   const int64_t startFaces = this->Mesh.GetNumberOfLiveFaces();
   const int64_t toRemove = std::max<int64_t>(startFaces - stats.TargetTriangles, 1);
@@ -675,35 +674,42 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
     {
       break;
     }
-    // Each block's candidates (each block sorts its own by cost).
-    std::fill(blockStart.begin(), blockStart.end(), 0);
-    for (const Candidate& c : batch)
-    {
-      ++blockStart[(c.Vertex >> BlockShift) + 1];
-    }
-    std::partial_sum(blockStart.begin(), blockStart.end(), blockStart.begin());
-
-    // 1. The blocks, on several threads: the collapses whose whole neighbourhood lies in their
-    // block; the others are deferred.
-    this->CollapseBlocks(batch, blockStart, pass);
     affected.clear();
     rejected.clear();
-    deferred.clear();
-    int64_t removed = 0;
     auto gather = [&](Workspace& ws)
     {
       rejected.insert(rejected.end(), ws.Rejected.begin(), ws.Rejected.end());
       deferred.insert(deferred.end(), ws.Deferred.begin(), ws.Deferred.end());
       stats.Collapses += ws.Collapses;
       stats.RejectedPops += ws.Rejections;
-      removed += ws.RemovedFaces;
+      this->Mesh.RemoveLiveFaces(ws.RemovedFaces);
     };
-    gather(this->Main);
-    for (Workspace& ws : this->Workers)
+    // 1. The blocks, on several threads: the collapses whose whole neighbourhood lies in their
+    // block, first in small blocks, then those deferred from them in wide ones; the others
+    // are deferred again. Each block sorts its own candidates by cost.
+    for (const BlockLevel& level : { SmallBlocks, WideBlocks })
     {
-      gather(ws);
+      if (level.FinerFlags != 0) // the batch comes in vertex order, those deferred do not
+      {
+        std::sort(batch.begin(), batch.end(),
+                  [](const Candidate& a, const Candidate& b) { return a.Vertex < b.Vertex; });
+      }
+      blockStart.assign((n >> level.Shift) + 2, 0);
+      for (const Candidate& c : batch)
+      {
+        ++blockStart[(c.Vertex >> level.Shift) + 1];
+      }
+      std::partial_sum(blockStart.begin(), blockStart.end(), blockStart.begin());
+      this->CollapseBlocks(batch, blockStart, level, pass);
+      deferred.clear();
+      gather(this->Main);
+      for (Workspace& ws : this->Workers)
+      {
+        gather(ws);
+      }
+      batch.swap(deferred);
     }
-    this->Mesh.RemoveLiveFaces(removed);
+    deferred.swap(batch);
 
     // 2. The deferred ones, in cost order, on this thread, up to the target.
     std::sort(deferred.begin(), deferred.end());
@@ -715,7 +721,7 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
       {
         break;
       }
-      this->PrefetchCandidates(deferred.data(), i, deferred.size(), -1);
+      this->PrefetchCandidates(deferred.data(), i, deferred.size(), -1, 0);
       const int32_t v0 = deferred[i].Vertex;
       const int32_t v1 = this->Best[v0];
       if (this->Stamp[v0] == pass || v1 < 0 || this->Stamp[v1] == pass)
@@ -727,9 +733,10 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
       if (ws.Collapses != collapses)
       {
         // v0's former neighbours (v1 among them) may now have one in another block, or no
-        // longer have one (a collapse inside a block never changes a flag: all it touches is
-        // in the block).
-        this->FlagInterior(ws.FormerNeighbors.data(), ws.FormerNeighbors.size());
+        // longer have one (a collapse inside a block never changes that block's flags: all it
+        // touches is in the block).
+        this->FlagInterior(ws.FormerNeighbors.data(), ws.FormerNeighbors.size(),
+                           SmallBlocks.Flag | WideBlocks.Flag);
       }
     }
     gather(ws); // the mesh counted these faces itself: ws.RemovedFaces is 0
@@ -763,16 +770,16 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
 }
 
 void Decimator::CollapseBlocks(std::vector<Candidate>& batch, const std::vector<size_t>& blockStart,
-                               int32_t pass)
+                               const BlockLevel& level, int32_t pass)
 {
   const int32_t blocks = static_cast<int32_t>(blockStart.size()) - 1;
   std::atomic<int32_t> nextBlock(0);
-  auto work = [this, &batch, &blockStart, &nextBlock, blocks, pass](Workspace& ws)
+  auto work = [this, &batch, &blockStart, &nextBlock, blocks, level, pass](Workspace& ws)
   {
     for (int32_t block = nextBlock++; block < blocks; block = nextBlock++)
     {
       this->CollapseBlock(batch.data() + blockStart[block], batch.data() + blockStart[block + 1],
-                          block, pass, ws);
+                          block, level, pass, ws);
     }
   };
   // A thread is worth it for some thousands of candidates only; either way the blocks are
@@ -792,22 +799,22 @@ void Decimator::CollapseBlocks(std::vector<Candidate>& batch, const std::vector<
               { work(t == 0 ? this->Main : this->Workers[t - 1]); });
 }
 
-void Decimator::CollapseBlock(Candidate* begin, Candidate* end, int32_t block, int32_t pass,
-                              Workspace& ws)
+void Decimator::CollapseBlock(Candidate* begin, Candidate* end, int32_t block,
+                              const BlockLevel& level, int32_t pass, Workspace& ws)
 {
   std::sort(begin, end); // cost order
   int32_t* stamp = this->Stamp.data();
   const size_t count = static_cast<size_t>(end - begin);
   for (size_t i = 0; i < count; ++i)
   {
-    this->PrefetchCandidates(begin, i, count, block);
+    this->PrefetchCandidates(begin, i, count, block, level.Shift);
     const int32_t v0 = begin[i].Vertex;
     const int32_t v1 = this->Best[v0];
     if (stamp[v0] == pass || v1 < 0)
     {
       continue; // its key is stale: a neighbour collapsed in this pass
     }
-    if (!this->IsInsideBlock(v0, v1, block))
+    if (!this->IsInsideBlock(v0, v1, block, level))
     {
       ws.Deferred.push_back(begin[i]);
       continue;
@@ -816,20 +823,26 @@ void Decimator::CollapseBlock(Candidate* begin, Candidate* end, int32_t block, i
     {
       continue;
     }
+    const int64_t collapses = ws.Collapses;
     this->TryCollapse(v0, v1, pass, ws, false);
+    if (level.FinerFlags != 0 && ws.Collapses != collapses)
+    {
+      // v0's former neighbours may now have a neighbour in another finer block (or no longer
+      // have one). All of them and their fans are in this block: no other thread reads or
+      // writes them.
+      this->FlagInterior(ws.FormerNeighbors.data(), ws.FormerNeighbors.size(), level.FinerFlags);
+    }
   }
 }
 
-void Decimator::FlagInterior(const int32_t* vertices, size_t count)
+void Decimator::FlagInterior(const int32_t* vertices, size_t count, uint8_t flags)
 {
   for (size_t i = 0; i < count; ++i)
   {
     const int32_t v = vertices[i];
-    const int32_t block = v >> BlockShift;
-    bool inside = true;
-    this->Mesh.ForEachNeighbor(
-      v, [&inside, block](int32_t u) { inside = inside && (u >> BlockShift) == block; });
-    this->Interior[v] = inside ? 1 : 0;
+    uint8_t outside = 0; // the flags of the levels where v has a neighbour in another block
+    this->Mesh.ForEachNeighbor(v, [&outside, v](int32_t u) { outside |= BlockCrossings(u, v); });
+    this->Interior[v] = static_cast<uint8_t>((this->Interior[v] & ~flags) | (flags & ~outside));
   }
 }
 
@@ -838,7 +851,7 @@ void Decimator::FlagEveryInterior()
   // Each edge appears as at least one half-edge: both of its ends learn of a neighbour in
   // another block. (For a locked vertex this may be stricter than its fan; its flag is
   // never read.)
-  this->Interior.assign(this->Mesh.GetNumberOfVertices(), 1);
+  this->Interior.assign(this->Mesh.GetNumberOfVertices(), SmallBlocks.Flag | WideBlocks.Flag);
   const int32_t numHalfEdges = 3 * this->Mesh.GetNumberOfFaceSlots();
   for (int32_t h = 0; h < numHalfEdges; ++h)
   {
@@ -848,20 +861,19 @@ void Decimator::FlagEveryInterior()
       continue;
     }
     const int32_t b = this->Mesh.Target(h);
-    if ((a >> BlockShift) != (b >> BlockShift))
-    {
-      this->Interior[a] = this->Interior[b] = 0;
-    }
+    const uint8_t crossings = BlockCrossings(a, b);
+    this->Interior[a] &= static_cast<uint8_t>(~crossings);
+    this->Interior[b] &= static_cast<uint8_t>(~crossings);
   }
 }
 
 void Decimator::PrefetchCandidates(const Candidate* candidates, size_t i, size_t count,
-                                   int32_t block) const
+                                   int32_t block, int shift) const
 {
   // The candidates are known in advance: their neighbourhoods are fetched a few collapses
   // ahead, in three stages (the vertex, its first face and target, the target's first face),
   // none of which waits. In a block (block >= 0) only the block's records are read.
-  const auto mayRead = [block](int32_t v) { return block < 0 || (v >> BlockShift) == block; };
+  const auto mayRead = [block, shift](int32_t v) { return block < 0 || (v >> shift) == block; };
   if (i + FarAhead < count)
   {
     const int32_t v = candidates[i + FarAhead].Vertex;
@@ -892,13 +904,14 @@ void Decimator::PrefetchCandidates(const Candidate* candidates, size_t i, size_t
   }
 }
 
-bool Decimator::IsInsideBlock(int32_t v0, int32_t v1, int32_t block) const
+bool Decimator::IsInsideBlock(int32_t v0, int32_t v1, int32_t block, const BlockLevel& level) const
 {
   // The collapse reads and writes the faces around v0, v1 and their common neighbours (vl
   // and vr), and the records of their vertices: all of them must be in the block, i.e. these
   // four vertices must be interior to it. A locked vl or vr fails the rules without its fan
   // being read.
-  if (!this->Interior[v0] || (v1 >> BlockShift) != block || !this->Interior[v1])
+  const uint8_t* interior = this->Interior.data();
+  if (!(interior[v0] & level.Flag) || (v1 >> level.Shift) != block || !(interior[v1] & level.Flag))
   {
     return false;
   }
@@ -912,7 +925,7 @@ bool Decimator::IsInsideBlock(int32_t v0, int32_t v1, int32_t block) const
       continue;
     }
     const int32_t x = this->Mesh.Origin(HalfEdgeMesh::Prev(h)); // vl or vr
-    if (!this->Mesh.IsLocked(x) && !this->Interior[x])
+    if (!this->Mesh.IsLocked(x) && !(interior[x] & level.Flag))
     {
       return false;
     }

@@ -274,27 +274,50 @@ private:
   void CollapseGreedily(DecimatorStatistics& stats, bool prefetch,
                         const std::function<bool(double)>& progress);
   /**
-   * Step 5, Batched (CollapseSchedule::Batched). Each pass sorts the batch by block (ranges
-   * of 2^BlockShift vertex ids, a fixed partition) and runs the blocks on several threads
-   * (CollapseBlocks): in each block, in cost order, the collapses whose whole neighbourhood
-   * lies inside it (IsInsideBlock); no two threads ever touch the same face or vertex. The
-   * others are deferred and made afterwards on this thread, in cost order. Then the affected
-   * vertices are re-costed. The outcome depends on the blocks, never on the threads.
+   * Step 5, Batched (CollapseSchedule::Batched). Each pass groups the batch by block (ranges
+   * of 2^SmallBlocks.Shift vertex ids, a fixed partition) and runs the blocks on several
+   * threads (CollapseBlocks): in each block, in cost order, the collapses whose whole
+   * neighbourhood lies inside it (IsInsideBlock); no two threads ever touch the same face or
+   * vertex. Those that reach out of their block are deferred to the wide blocks (2^3 small ones
+   * each), which run the same way; what reaches out of those is made afterwards on this
+   * thread, in cost order. Then the affected vertices are re-costed. The outcome depends on
+   * the blocks, never on the threads.
    */
   void CollapseInBatches(DecimatorStatistics& stats, const std::function<bool(double)>& progress);
-  static constexpr int BlockShift = 14; ///< blocks of 16384 vertex ids
+  /// A partition of the vertex ids into blocks of 2^Shift, and its bit in Interior.
+  struct BlockLevel
+  {
+    int Shift;
+    uint8_t Flag;
+    uint8_t FinerFlags; ///< the flags of the partitions that refine this one
+  };
+  static constexpr BlockLevel SmallBlocks = { 14, 1, 0 }; ///< blocks of 16384 vertex ids
+  static constexpr BlockLevel WideBlocks = { 17, 2, 1 };  ///< blocks of 131072 vertex ids
+  /// The flags of the partitions where u and v lie in different blocks.
+  static uint8_t BlockCrossings(int32_t u, int32_t v)
+  {
+    return static_cast<uint8_t>(
+      ((u >> SmallBlocks.Shift) != (v >> SmallBlocks.Shift) ? SmallBlocks.Flag : 0) |
+      ((u >> WideBlocks.Shift) != (v >> WideBlocks.Shift) ? WideBlocks.Flag : 0));
+  }
+  /// The blocks of `level` on several threads (blockStart: where each block's candidates start
+  /// in the batch); what reaches out of its block goes to the workspace's Deferred.
   void CollapseBlocks(std::vector<Candidate>& batch, const std::vector<size_t>& blockStart,
-                      int32_t pass);
-  void CollapseBlock(Candidate* begin, Candidate* end, int32_t block, int32_t pass, Workspace& ws);
+                      const BlockLevel& level, int32_t pass);
+  void CollapseBlock(Candidate* begin, Candidate* end, int32_t block, const BlockLevel& level,
+                     int32_t pass, Workspace& ws);
   /// Fetch the neighbourhoods of candidates[i + a few] into the cache (block >= 0: reading
-  /// that block's records only).
-  void PrefetchCandidates(const Candidate* candidates, size_t i, size_t count, int32_t block) const;
+  /// the records of that block of 2^shift ids only).
+  void PrefetchCandidates(const Candidate* candidates, size_t i, size_t count, int32_t block,
+                          int shift) const;
   /// Whether every vertex of every face the collapse v0 -> v1 reads or writes is in `block`.
-  bool IsInsideBlock(int32_t v0, int32_t v1, int32_t block) const;
-  /// Interior[v] for every vertex: whether all of v's neighbours are in v's block.
+  bool IsInsideBlock(int32_t v0, int32_t v1, int32_t block, const BlockLevel& level) const;
+  /// Interior[v] for every vertex: for each level, whether all of v's neighbours are in v's
+  /// block.
   void FlagEveryInterior();
-  /// Interior[v] anew for the listed vertices (after collapses that crossed blocks).
-  void FlagInterior(const int32_t* vertices, size_t count);
+  /// The given flags of Interior anew for the listed vertices (after collapses that crossed
+  /// blocks of those levels).
+  void FlagInterior(const int32_t* vertices, size_t count, uint8_t flags);
   /// Batched: check v0 -> v1, then collapse it and stamp the affected vertices, or stamp v0
   /// as rejected, counting either in ws; `counted`: the mesh counts the removed faces itself
   /// (otherwise they are added to ws.RemovedFaces).
@@ -382,8 +405,9 @@ private:
   std::vector<int32_t> Best;    ///< vertex -> its chosen target, -1 if none
   std::vector<uint8_t> Bounded; ///< vertex -> its heap key is a lower bound, to be made exact
   std::vector<int32_t> Stamp;   ///< Batched: vertex -> the last pass that made its key stale
-  /// Batched: vertex -> all its neighbours are in its block (a collapse inside a block never
-  /// changes it; one across blocks may, either way, for v0's former neighbours: FlagInterior)
+  /// Batched: vertex -> for each block level (its Flag), all its neighbours are in its block (a
+  /// collapse inside a block never changes that level's flag; one across blocks may, either
+  /// way, for v0's former neighbours: FlagInterior)
   std::vector<uint8_t> Interior;
 };
 
