@@ -190,6 +190,7 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
 
   this->ThreadsUsed = 1;
   this->CollapseThreadsUsed = 1;
+  this->WideCollapseThreadsUsed = 1;
   // 4-5. Cost every vertex, then collapse: one at a time in the heap's order (the paper's),
   // or in batches of independent collapses, each followed by a re-costing pass.
   if (this->Options.Schedule == CollapseSchedule::Batched)
@@ -202,6 +203,7 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   }
   stats.Threads = this->ThreadsUsed;
   stats.CollapseThreads = this->CollapseThreadsUsed;
+  stats.WideCollapseThreads = this->WideCollapseThreadsUsed;
   this->Workers.clear();
   this->AnyMoved = std::find(this->Moved.begin(), this->Moved.end(), 1) != this->Moved.end();
   this->Main.Rules.SetReferenceNormals(nullptr);
@@ -634,6 +636,9 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
   // Stamp[v] == pass: v was affected by a collapse of this pass (its key is stale) or its
   // chosen collapse was found illegal; either way it waits for the re-costing.
   this->Stamp.assign(n, 0);
+  const int shift = std::min(std::max(this->Options.BlockShift, 4), 24);
+  this->SmallBlocks = { shift, 1, 0 };
+  this->WideBlocks = { shift + 3, 2, 1 };
   this->FlagEveryInterior();
   // Blocks: ranges of 2^Shift ids (neighbours on the surface in the spatial order), fixed
   // partitions, so that the result does not depend on the number of threads.
@@ -687,7 +692,7 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
     // 1. The blocks, on several threads: the collapses whose whole neighbourhood lies in their
     // block, first in small blocks, then those deferred from them in wide ones; the others
     // are deferred again. Each block sorts its own candidates by cost.
-    for (const BlockLevel& level : { SmallBlocks, WideBlocks })
+    for (const BlockLevel& level : { this->SmallBlocks, this->WideBlocks })
     {
       if (level.FinerFlags != 0) // the batch comes in vertex order, those deferred do not
       {
@@ -736,11 +741,15 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
         // longer have one (a collapse inside a block never changes that block's flags: all it
         // touches is in the block).
         this->FlagInterior(ws.FormerNeighbors.data(), ws.FormerNeighbors.size(),
-                           SmallBlocks.Flag | WideBlocks.Flag);
+                           this->SmallBlocks.Flag | this->WideBlocks.Flag);
       }
     }
     gather(ws); // the mesh counted these faces itself: ws.RemovedFaces is 0
     ++stats.Passes;
+    if (this->Options.VerifyBlockFlags)
+    {
+      stats.StaleBlockFlags += this->CountStaleFlags();
+    }
     // 3. Re-cost in vertex order (neighbours in memory are neighbours on the surface); the
     // rejected ones over their legal collapses only. The affected ones are those stamped with
     // this pass, once the rejected ones are stamped apart (with -pass, which no pass matches).
@@ -785,7 +794,8 @@ void Decimator::CollapseBlocks(std::vector<Candidate>& batch, const std::vector<
   // A thread is worth it for some thousands of candidates only; either way the blocks are
   // the same, and so is the result.
   const int threads = this->ThreadCount(batch.size());
-  this->CollapseThreadsUsed = std::max(this->CollapseThreadsUsed, threads);
+  int& used = level.FinerFlags != 0 ? this->WideCollapseThreadsUsed : this->CollapseThreadsUsed;
+  used = std::max(used, threads);
   this->AddWorkers(threads);
   // Every workspace starts the pass empty, those of idle threads too (they are gathered).
   this->Main.ClearPass();
@@ -841,7 +851,8 @@ void Decimator::FlagInterior(const int32_t* vertices, size_t count, uint8_t flag
   {
     const int32_t v = vertices[i];
     uint8_t outside = 0; // the flags of the levels where v has a neighbour in another block
-    this->Mesh.ForEachNeighbor(v, [&outside, v](int32_t u) { outside |= BlockCrossings(u, v); });
+    this->Mesh.ForEachNeighbor(
+      v, [this, &outside, v](int32_t u) { outside |= this->BlockCrossings(u, v); });
     this->Interior[v] = static_cast<uint8_t>((this->Interior[v] & ~flags) | (flags & ~outside));
   }
 }
@@ -851,7 +862,8 @@ void Decimator::FlagEveryInterior()
   // Each edge appears as at least one half-edge: both of its ends learn of a neighbour in
   // another block. (For a locked vertex this may be stricter than its fan; its flag is
   // never read.)
-  this->Interior.assign(this->Mesh.GetNumberOfVertices(), SmallBlocks.Flag | WideBlocks.Flag);
+  this->Interior.assign(this->Mesh.GetNumberOfVertices(),
+                        this->SmallBlocks.Flag | this->WideBlocks.Flag);
   const int32_t numHalfEdges = 3 * this->Mesh.GetNumberOfFaceSlots();
   for (int32_t h = 0; h < numHalfEdges; ++h)
   {
@@ -865,6 +877,20 @@ void Decimator::FlagEveryInterior()
     this->Interior[a] &= static_cast<uint8_t>(~crossings);
     this->Interior[b] &= static_cast<uint8_t>(~crossings);
   }
+}
+
+int64_t Decimator::CountStaleFlags()
+{
+  std::vector<uint8_t> kept;
+  kept.swap(this->Interior);
+  this->FlagEveryInterior();
+  int64_t stale = 0;
+  for (int32_t v = 0; v < this->Mesh.GetNumberOfVertices(); ++v)
+  {
+    stale += this->Mesh.IsCollapsible(v) && kept[v] != this->Interior[v] ? 1 : 0;
+  }
+  this->Interior.swap(kept);
+  return stale;
 }
 
 void Decimator::PrefetchCandidates(const Candidate* candidates, size_t i, size_t count,

@@ -144,6 +144,13 @@ struct DecimatorOptions
   CollapseSchedule Schedule = CollapseSchedule::Greedy;
   /// Batched: the share of the candidate collapses that each pass considers, in (0, 1].
   double BatchFraction = 0.25;
+  /// Batched: blocks of 2^BlockShift vertex ids, wide blocks of 2^(BlockShift + 3), for the
+  /// collapses on several threads (clamped to [4, 24]). The result depends on it, never on the
+  /// number of threads; tests make it small so that small meshes have many blocks.
+  int BlockShift = 14;
+  /// Batched, for tests: after each pass, count the block flags that differ from flags
+  /// computed afresh (DecimatorStatistics::StaleBlockFlags).
+  bool VerifyBlockFlags = false;
   /// Threads that cost vertices (the initial costs; Batched: the re-costing passes); 0: one
   /// per hardware thread. The result is the same for any number.
   int NumberOfThreads = 0;
@@ -166,11 +173,13 @@ struct DecimatorStatistics
   int64_t TargetTriangles = 0;
   int64_t OutputTriangles = 0;
   int64_t Collapses = 0;
-  int64_t RejectedPops = 0;  ///< chosen collapses that failed the rules and were re-costed
-  int64_t Passes = 0;        ///< Batched: re-costing passes
-  int Threads = 1;           ///< the most threads that costed vertices at once
-  int CollapseThreads = 1;   ///< Batched: the most threads that collapsed blocks at once
-  double MeanEdgeLength = 0; ///< of the input, in its own units (the frame's unit)
+  int64_t RejectedPops = 0;    ///< chosen collapses that failed the rules and were re-costed
+  int64_t Passes = 0;          ///< Batched: re-costing passes
+  int Threads = 1;             ///< the most threads that costed vertices at once
+  int CollapseThreads = 1;     ///< Batched: the most threads that collapsed blocks at once
+  int WideCollapseThreads = 1; ///< Batched: the same for the wide blocks
+  int64_t StaleBlockFlags = 0; ///< Batched with VerifyBlockFlags: should be 0
+  double MeanEdgeLength = 0;   ///< of the input, in its own units (the frame's unit)
   bool Aborted = false;
   size_t StateBytes = 0; ///< bytes held by the decimator's arrays
   size_t MetricBytesPerVertex = sizeof(VertexMetric);
@@ -291,14 +300,16 @@ private:
     uint8_t Flag;
     uint8_t FinerFlags; ///< the flags of the partitions that refine this one
   };
-  static constexpr BlockLevel SmallBlocks = { 14, 1, 0 }; ///< blocks of 16384 vertex ids
-  static constexpr BlockLevel WideBlocks = { 17, 2, 1 };  ///< blocks of 131072 vertex ids
+  /// Blocks of 2^Options.BlockShift ids (16384 by default), and wide ones of eight of them.
+  BlockLevel SmallBlocks = { 14, 1, 0 };
+  BlockLevel WideBlocks = { 17, 2, 1 };
   /// The flags of the partitions where u and v lie in different blocks.
-  static uint8_t BlockCrossings(int32_t u, int32_t v)
+  uint8_t BlockCrossings(int32_t u, int32_t v) const
   {
     return static_cast<uint8_t>(
-      ((u >> SmallBlocks.Shift) != (v >> SmallBlocks.Shift) ? SmallBlocks.Flag : 0) |
-      ((u >> WideBlocks.Shift) != (v >> WideBlocks.Shift) ? WideBlocks.Flag : 0));
+      ((u >> this->SmallBlocks.Shift) != (v >> this->SmallBlocks.Shift) ? this->SmallBlocks.Flag
+                                                                        : 0) |
+      ((u >> this->WideBlocks.Shift) != (v >> this->WideBlocks.Shift) ? this->WideBlocks.Flag : 0));
   }
   /// The blocks of `level` on several threads (blockStart: where each block's candidates start
   /// in the batch); what reaches out of its block goes to the workspace's Deferred.
@@ -315,6 +326,9 @@ private:
   /// Interior[v] for every vertex: for each level, whether all of v's neighbours are in v's
   /// block.
   void FlagEveryInterior();
+  /// How many live, unlocked vertices' Interior flags differ from those FlagEveryInterior
+  /// would compute now.
+  int64_t CountStaleFlags();
   /// The given flags of Interior anew for the listed vertices (after collapses that crossed
   /// blocks of those levels).
   void FlagInterior(const int32_t* vertices, size_t count, uint8_t flags);
@@ -396,6 +410,7 @@ private:
   std::vector<Workspace> Workers;      ///< the other threads' (during Run only)
   int ThreadsUsed = 1;                 ///< the most threads EvaluateAll started in this Run
   int CollapseThreadsUsed = 1;         ///< the most threads CollapseBlocks started in this Run
+  int WideCollapseThreadsUsed = 1;     ///< the same, on wide blocks
   std::vector<float> ReferenceNormals; ///< the input normal of every face slot (CollapseRules)
   HalfEdgeMesh Mesh;
   std::vector<HotVertex> Hot;

@@ -1343,7 +1343,8 @@ void TestThreadsSameResult()
   std::vector<double> points;
   std::vector<float> colors;
   std::vector<int32_t> triangles;
-  // Large enough for the blocks of a pass to be collapsed on several threads.
+  // Large enough for the blocks of a pass to be collapsed on several threads; blocks of 256
+  // ids so that the wide blocks (2048) are many too.
   const DecimatorInput input = JitteredSphere(260, points, colors, triangles);
   const int64_t target = input.NumberOfTriangles / 10;
   for (CollapseSchedule schedule : { CollapseSchedule::Greedy, CollapseSchedule::Batched })
@@ -1351,6 +1352,8 @@ void TestThreadsSameResult()
     for (ErrorMetric metric : { ErrorMetric::HalfEdgeColor, ErrorMetric::ColorQuadric })
     {
       DecimatorOptions options;
+      options.BlockShift = 8;
+      options.VerifyBlockFlags = true;
       options.Metric = metric;
       options.OptimalPlacement = metric == ErrorMetric::ColorQuadric;
       options.Schedule = schedule;
@@ -1362,14 +1365,17 @@ void TestThreadsSameResult()
       const DecimatorStatistics b = three.Run(input, target);
       std::cout << "  schedule " << static_cast<int>(schedule) << ", metric "
                 << static_cast<int>(metric) << ": " << a.Collapses << " collapses, " << b.Passes
-                << " passes, " << b.Threads << " threads costing, " << b.CollapseThreads
-                << " collapsing" << std::endl;
+                << " passes, " << b.Threads << " threads costing, " << b.CollapseThreads << " ("
+                << b.WideCollapseThreads << " in wide blocks) collapsing" << std::endl;
       CD_CHECK(a.Threads == 1 && b.Threads == 3); // the threads did start
-      CD_CHECK(a.CollapseThreads == 1);
-      CD_CHECK(schedule == CollapseSchedule::Batched ? b.CollapseThreads >= 2
-                                                     : b.CollapseThreads == 1);
+      CD_CHECK(a.CollapseThreads == 1 && a.WideCollapseThreads == 1);
+      CD_CHECK(schedule == CollapseSchedule::Batched
+                 ? b.CollapseThreads >= 2 && b.WideCollapseThreads >= 2
+                 : b.CollapseThreads == 1 && b.WideCollapseThreads == 1);
       CD_CHECK(a.OutputTriangles <= target && a.Collapses > input.NumberOfPoints / 3);
       CD_CHECK(a.Collapses == b.Collapses && a.OutputTriangles == b.OutputTriangles);
+      CD_CHECK_MSG(a.StaleBlockFlags == 0 && b.StaleBlockFlags == 0,
+                   a.StaleBlockFlags << " and " << b.StaleBlockFlags << " stale block flags");
       CD_CHECK(a.RejectedPops == b.RejectedPops && a.Passes == b.Passes);
       const long long differences = CountDifferences(one, three, metric);
       CD_CHECK_MSG(differences == 0, differences << " differences between 1 and 3 threads");
