@@ -612,6 +612,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   options.Schedule = this->CollapseSchedule == Batched ? colordecimation::CollapseSchedule::Batched
                                                        : colordecimation::CollapseSchedule::Greedy;
   options.NumberOfThreads = this->NumberOfThreads;
+  options.KeepVertexState = false; // the output needs the mesh and the moved vertices only
   options.ColorWeight = this->ColorWeight;
   options.BoundaryWeight = this->BoundaryWeight;
   options.PreserveBoundary = this->PreserveBoundary != 0;

@@ -17,6 +17,88 @@ constexpr double Pi = 3.14159265358979323846;
 constexpr double MaximumDriftAngle = 75.0; ///< degrees
 constexpr double Infinity = std::numeric_limits<double>::infinity();
 
+/**
+ * The bounding box of the points (lo, hi) and the mean length of the mesh's edges, on
+ * `threads` threads: the edges are summed in fixed chunks, and the chunks in order, so the
+ * mean has the same bits for any number of threads.
+ */
+double MeasureInput(const HalfEdgeMesh& mesh, const double* points, int threads, double lo[3],
+                    double hi[3])
+{
+  const int32_t n = mesh.GetNumberOfVertices();
+  threads = std::max(threads, 1);
+  std::vector<double> boxes(6 * threads, 0.0); // lo and hi of each thread's range
+  double* box = boxes.data();
+  ParallelFor(size_t(n), threads,
+              [points, box](size_t begin, size_t end, int t)
+              {
+                double* b = box + 6 * t;
+                for (size_t v = begin; v < end; ++v)
+                {
+                  for (int k = 0; k < 3; ++k)
+                  {
+                    const double x = points[3 * v + k];
+                    b[k] = (v == begin || x < b[k]) ? x : b[k];
+                    b[3 + k] = (v == begin || x > b[3 + k]) ? x : b[3 + k];
+                  }
+                }
+              });
+  bool first = true;
+  for (int t = 0; t < threads; ++t)
+  {
+    const size_t begin = size_t(n) * t / threads, end = size_t(n) * (t + 1) / threads;
+    if (begin == end)
+    {
+      continue; // an empty range found nothing
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = (first || box[6 * t + k] < lo[k]) ? box[6 * t + k] : lo[k];
+      hi[k] = (first || box[6 * t + 3 + k] > hi[k]) ? box[6 * t + 3 + k] : hi[k];
+    }
+    first = false;
+  }
+
+  constexpr int32_t Chunk = 1 << 16; // half-edges
+  const int32_t numHalfEdges = 3 * mesh.GetNumberOfFaceSlots();
+  const int32_t chunks = (numHalfEdges + Chunk - 1) / Chunk;
+  std::vector<double> sums(chunks, 0.0);
+  std::vector<int64_t> counts(chunks, 0);
+  double* sum = sums.data();
+  int64_t* count = counts.data();
+  const HalfEdgeMesh* m = &mesh;
+  ParallelFor(size_t(chunks), threads,
+              [m, points, numHalfEdges, sum, count](size_t begin, size_t end, int)
+              {
+                for (size_t c = begin; c < end; ++c)
+                {
+                  const int32_t last = std::min<int32_t>(numHalfEdges, int32_t(c + 1) * Chunk);
+                  double chunkSum = 0;
+                  int64_t chunkCount = 0;
+                  for (int32_t h = int32_t(c) * Chunk; h < last; ++h)
+                  {
+                    const int32_t twin = m->Twin(h);
+                    if (twin >= 0 && twin < h)
+                    {
+                      continue; // each interior edge once
+                    }
+                    chunkSum += Distance3(points + 3 * m->Origin(h), points + 3 * m->Target(h));
+                    ++chunkCount;
+                  }
+                  sum[c] = chunkSum;
+                  count[c] = chunkCount;
+                }
+              });
+  double edgeSum = 0;
+  int64_t edgeCount = 0;
+  for (int32_t c = 0; c < chunks; ++c)
+  {
+    edgeSum += sum[c];
+    edgeCount += count[c];
+  }
+  return edgeCount ? edgeSum / double(edgeCount) : 0.0;
+}
+
 CollapseRuleOptions MakeRuleOptions(const DecimatorOptions& options)
 {
   CollapseRuleOptions rules;
@@ -87,30 +169,8 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
 
   // 2. The normalised frame: bounding-box centre, mean edge length 1.
   double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
-  for (int32_t v = 0; v < n; ++v)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const double x = input.Points[3 * v + k];
-      lo[k] = (v == 0 || x < lo[k]) ? x : lo[k];
-      hi[k] = (v == 0 || x > hi[k]) ? x : hi[k];
-    }
-  }
-  double edgeSum = 0;
-  int64_t edgeCount = 0;
-  for (int32_t h = 0; h < 3 * input.NumberOfTriangles; ++h)
-  {
-    const int32_t twin = this->Mesh.Twin(h);
-    if (twin >= 0 && twin < h)
-    {
-      continue; // each interior edge once
-    }
-    const double* a = input.Points + 3 * this->Mesh.Origin(h);
-    const double* b = input.Points + 3 * this->Mesh.Target(h);
-    edgeSum += Distance3(a, b);
-    ++edgeCount;
-  }
-  stats.MeanEdgeLength = edgeCount ? edgeSum / edgeCount : 0.0;
+  stats.MeanEdgeLength =
+    MeasureInput(this->Mesh, input.Points, this->ThreadCount(size_t(n)), lo, hi);
   const double scale = (stats.MeanEdgeLength > 0 && std::isfinite(stats.MeanEdgeLength))
     ? 1.0 / stats.MeanEdgeLength
     : 1.0;
@@ -119,30 +179,41 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   this->UseColor = this->Options.Metric != ErrorMetric::Geometry && input.Colors;
   const bool lab = this->UseColor && this->Options.Space == ColorSpace::CIELab;
   this->FrameScale = scale;
-  this->Hot.resize(n);
-  for (int32_t v = 0; v < n; ++v)
+  for (int k = 0; k < 3; ++k)
   {
-    HotVertex& hot = this->Hot[v];
-    for (int k = 0; k < 3; ++k)
-    {
-      const double centre = 0.5 * (lo[k] + hi[k]);
-      this->FrameCentre[k] = centre;
-      hot.P[k] = static_cast<float>((input.Points[3 * v + k] - centre) * scale);
-      hot.C[k] = this->UseColor ? input.Colors[3 * v + k] : 0.0f;
-    }
-    if (lab)
-    {
-      const double rgb[3] = { hot.C[0], hot.C[1], hot.C[2] };
-      double c[3];
-      RGBToMetricColor(ColorSpace::CIELab, rgb, c);
-      for (int k = 0; k < 3; ++k)
-      {
-        hot.C[k] = static_cast<float>(c[k]);
-      }
-    }
-    hot.QC = 0;
-    hot.Spare = 0;
+    this->FrameCentre[k] = 0.5 * (lo[k] + hi[k]);
   }
+  this->Hot.resize(n);
+  HotVertex* hotRecords = this->Hot.data();
+  const double centre[3] = { this->FrameCentre[0], this->FrameCentre[1], this->FrameCentre[2] };
+  const double* inputPoints = input.Points;
+  const float* inputColors = this->UseColor ? input.Colors : nullptr;
+  ParallelFor(
+    size_t(n), this->ThreadCount(size_t(n)),
+    [hotRecords, centre, scale, inputPoints, inputColors, lab](size_t begin, size_t end, int)
+    {
+      for (size_t v = begin; v < end; ++v)
+      {
+        HotVertex& hot = hotRecords[v];
+        for (int k = 0; k < 3; ++k)
+        {
+          hot.P[k] = static_cast<float>((inputPoints[3 * v + k] - centre[k]) * scale);
+          hot.C[k] = inputColors ? inputColors[3 * v + k] : 0.0f;
+        }
+        if (lab)
+        {
+          const double rgb[3] = { hot.C[0], hot.C[1], hot.C[2] };
+          double c[3];
+          RGBToMetricColor(ColorSpace::CIELab, rgb, c);
+          for (int k = 0; k < 3; ++k)
+          {
+            hot.C[k] = static_cast<float>(c[k]);
+          }
+        }
+        hot.QC = 0;
+        hot.Spare = 0;
+      }
+    });
 
   // 3. Per-vertex metric state.
   this->AnyMoved = false;
@@ -292,15 +363,26 @@ void Decimator::RestoreOrder(const SpatialOrder& order)
   this->Heap.Release();
   this->Best = std::vector<int32_t>();
   this->Bounded = std::vector<uint8_t>();
-  this->Mesh.Renumber(order.OldVertex.data(), order.OldFace.data());
   const auto n = static_cast<int64_t>(order.OldVertex.size());
-  auto restore = [&order, n](auto& values)
+  const int threads = this->ThreadCount(order.OldFace.size());
+  this->Mesh.Renumber(order.OldVertex.data(), order.OldFace.data(), threads);
+  auto restore = [&order, n, threads](auto& values)
   {
     if (static_cast<int64_t>(values.size()) == n)
     {
-      Permute(values, n, order.OldVertex.data());
+      Permute(values, n, order.OldVertex.data(), 1, threads);
     }
   };
+  if (!this->Options.KeepVertexState)
+  {
+    // What the output needs: the moved vertices' points and colours (hot records).
+    this->Metrics = std::vector<VertexMetric>();
+    this->ColorQuadrics = std::vector<ColorQuadric>();
+    if (!this->AnyMoved)
+    {
+      this->Hot = std::vector<HotVertex>();
+    }
+  }
   restore(this->Hot);
   restore(this->Metrics);
   restore(this->ColorQuadrics);

@@ -141,6 +141,13 @@ struct DecimatorOptions
    * collapses up to the order of equal costs; off only to test that claim.
    */
   bool Renumber = true;
+  /**
+   * Whether Run leaves the per-vertex state (GetMetrics, GetColorQuadrics,
+   * GetNormalizedPosition) for every vertex, by input id. Without it, only what the output
+   * needs is kept (the mesh, and the moved vertices' records): a renumbered mesh saves mapping
+   * the rest back. The filter does without.
+   */
+  bool KeepVertexState = true;
   CollapseSchedule Schedule = CollapseSchedule::Greedy;
   /// Batched: the share of the candidate collapses that each pass considers, in (0, 1].
   double BatchFraction = 0.25;
@@ -199,7 +206,8 @@ public:
                           const std::function<bool(double)>& progress = nullptr);
 
   const HalfEdgeMesh& GetMesh() const { return this->Mesh; }
-  /// The per-vertex state of HalfEdgeColor and Geometry (empty with ColorQuadric).
+  /// The per-vertex state of HalfEdgeColor and Geometry (empty with ColorQuadric, or without
+  /// KeepVertexState).
   const std::vector<VertexMetric>& GetMetrics() const { return this->Metrics; }
   /// The per-vertex state of ColorQuadric (each centred at its vertex's point of R^6).
   const std::vector<ColorQuadric>& GetColorQuadrics() const { return this->ColorQuadrics; }

@@ -314,21 +314,33 @@ int HalfEdgeMesh::CollapseUncounted(int32_t v0, int32_t v1)
   return removed;
 }
 
-void HalfEdgeMesh::Renumber(const int32_t* vertexTo, const int32_t* faceTo)
+void HalfEdgeMesh::Renumber(const int32_t* vertexTo, const int32_t* faceTo, int threads)
 {
   // New names first, then every face and vertex record moved to its new slot.
-  for (Corner& corner : this->Corners)
-  {
-    corner.Vertex = corner.Vertex < 0 ? -1 : vertexTo[corner.Vertex];
-    corner.Twin = corner.Twin < 0 ? -1 : 3 * faceTo[corner.Twin / 3] + corner.Twin % 3;
-  }
-  for (int32_t& out : this->Out)
-  {
-    out = out < 0 ? -1 : 3 * faceTo[out / 3] + out % 3;
-  }
-  Permute(this->Corners, this->GetNumberOfFaceSlots(), faceTo, 3);
-  Permute(this->Out, this->GetNumberOfVertices(), vertexTo);
-  Permute(this->Flags, this->GetNumberOfVertices(), vertexTo);
+  Corner* corners = this->Corners.data();
+  ParallelFor(this->Corners.size(), threads,
+              [corners, vertexTo, faceTo](size_t begin, size_t end, int)
+              {
+                for (size_t h = begin; h < end; ++h)
+                {
+                  Corner& corner = corners[h];
+                  corner.Vertex = corner.Vertex < 0 ? -1 : vertexTo[corner.Vertex];
+                  corner.Twin =
+                    corner.Twin < 0 ? -1 : 3 * faceTo[corner.Twin / 3] + corner.Twin % 3;
+                }
+              });
+  int32_t* out = this->Out.data();
+  ParallelFor(this->Out.size(), threads,
+              [out, faceTo](size_t begin, size_t end, int)
+              {
+                for (size_t v = begin; v < end; ++v)
+                {
+                  out[v] = out[v] < 0 ? -1 : 3 * faceTo[out[v] / 3] + out[v] % 3;
+                }
+              });
+  Permute(this->Corners, this->GetNumberOfFaceSlots(), faceTo, 3, threads);
+  Permute(this->Out, this->GetNumberOfVertices(), vertexTo, 1, threads);
+  Permute(this->Flags, this->GetNumberOfVertices(), vertexTo, 1, threads);
 }
 
 } // namespace colordecimation

@@ -189,7 +189,7 @@ public:
    * permutations), with every half-edge, twin and outgoing half-edge following. Used to map a
    * mesh decimated in a spatial order (SpatialOrder.h) back to its input's ids.
    */
-  void Renumber(const int32_t* vertexTo, const int32_t* faceTo);
+  void Renumber(const int32_t* vertexTo, const int32_t* faceTo, int threads = 1);
 
 private:
   void RemoveFace(int32_t h);

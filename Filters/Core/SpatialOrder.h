@@ -17,6 +17,7 @@
 #ifndef colordecimation_SpatialOrder_h
 #define colordecimation_SpatialOrder_h
 
+#include "Parallel.h"
 #include "vtkColorDecimationModule.h" // for export macro
 
 #include <algorithm>
@@ -54,16 +55,24 @@ VTKCOLORDECIMATION_EXPORT void ComputeSpatialOrder(int32_t numVertices, const do
  * Move block i of `block` consecutive values to block to[i], for i in [0, count) (`to` is a
  * permutation of [0, count)), through a second array: independent moves, so the cache misses
  * of the scattered writes overlap (following the permutation's cycles in place is several
- * times slower). The caller frees what it can before, so that the copy fits in what it freed.
+ * times slower), shared among `threads` threads. The caller frees what it can before, so
+ * that the copy fits in what it freed.
  */
 template <typename T>
-void Permute(std::vector<T>& values, int64_t count, const int32_t* to, int block = 1)
+void Permute(std::vector<T>& values, int64_t count, const int32_t* to, int block = 1,
+             int threads = 1)
 {
   std::vector<T> moved(values.size());
-  for (int64_t i = 0; i < count; ++i)
-  {
-    std::copy_n(values.begin() + block * i, block, moved.begin() + block * int64_t(to[i]));
-  }
+  const T* from = values.data();
+  T* into = moved.data();
+  ParallelFor(static_cast<size_t>(std::max<int64_t>(count, 0)), threads,
+              [from, into, to, block](size_t begin, size_t end, int)
+              {
+                for (size_t i = begin; i < end; ++i)
+                {
+                  std::copy_n(from + block * i, block, into + block * size_t(to[i]));
+                }
+              });
   values.swap(moved);
 }
 
