@@ -14,11 +14,15 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
   MeshBuildReport report;
   const int32_t numHalfEdges = 3 * numTriangles;
   this->Corners.resize(numHalfEdges);
-  for (int32_t h = 0; h < numHalfEdges; ++h)
-  {
-    this->Corners[h].Vertex = triangles[h];
-    this->Corners[h].Twin = -1;
-  }
+  Corner* corners = this->Corners.data();
+  ParallelFor(static_cast<size_t>(numHalfEdges), threads,
+              [corners, triangles](size_t begin, size_t end, int)
+              {
+                for (size_t h = begin; h < end; ++h)
+                {
+                  corners[h] = { triangles[h], -1 };
+                }
+              });
   this->Out.assign(numVertices, -1);
   this->Flags.assign(numVertices, 0);
   this->LiveFaces = numTriangles;
@@ -114,48 +118,61 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
     }
   }
 
-  // One outgoing half-edge per vertex; detect bow-ties by circulating.
-  for (int32_t v = 0; v < numVertices; ++v)
+  // One outgoing half-edge per vertex; detect bow-ties by circulating. Each vertex writes its
+  // own records only; the counts are summed afterwards.
+  std::vector<MeshBuildReport> counted(static_cast<size_t>(std::max(threads, 1)));
+  MeshBuildReport* counts = counted.data();
+  int32_t* out = this->Out.data();
+  uint8_t* flags = this->Flags.data();
+  ParallelFor(static_cast<size_t>(numVertices), threads,
+              [corners, rows, rowHalfEdges, out, flags, counts](size_t begin, size_t end, int t)
+              {
+                MeshBuildReport found;
+                for (auto v = static_cast<int32_t>(begin); v < static_cast<int32_t>(end); ++v)
+                {
+                  const int32_t count = rows[v + 1] - rows[v];
+                  if (count == 0)
+                  {
+                    ++found.IsolatedVertices;
+                    continue;
+                  }
+                  int32_t boundaryOut = -1, boundaryCount = 0;
+                  for (int32_t k = rows[v]; k < rows[v + 1]; ++k)
+                  {
+                    if (corners[rowHalfEdges[k]].Twin < 0)
+                    {
+                      boundaryOut = rowHalfEdges[k];
+                      ++boundaryCount;
+                    }
+                  }
+                  out[v] = boundaryCount == 1 ? boundaryOut : rowHalfEdges[rows[v]];
+                  if ((flags[v] & Locked) == 0)
+                  {
+                    int32_t visited = 0;
+                    if (boundaryCount <= 1)
+                    {
+                      int32_t h = out[v];
+                      do
+                      {
+                        ++visited;
+                        h = corners[Prev(h)].Twin;
+                      } while (h >= 0 && h != out[v] && visited <= count);
+                    }
+                    if (visited != count)
+                    {
+                      flags[v] |= Locked;
+                      ++found.NonManifoldVertices;
+                    }
+                  }
+                  found.LockedVertices += (flags[v] & Locked) ? 1 : 0;
+                }
+                counts[t] = found;
+              });
+  for (const MeshBuildReport& found : counted)
   {
-    const int32_t count = offsets[v + 1] - offsets[v];
-    if (count == 0)
-    {
-      ++report.IsolatedVertices;
-      continue;
-    }
-    int32_t boundaryOut = -1, boundaryCount = 0;
-    for (int32_t k = offsets[v]; k < offsets[v + 1]; ++k)
-    {
-      if (this->Corners[outgoing[k]].Twin < 0)
-      {
-        boundaryOut = outgoing[k];
-        ++boundaryCount;
-      }
-    }
-    this->Out[v] = boundaryCount == 1 ? boundaryOut : outgoing[offsets[v]];
-    if (this->Flags[v] & Locked)
-    {
-      continue;
-    }
-    int32_t visited = 0;
-    if (boundaryCount <= 1)
-    {
-      int32_t h = this->Out[v];
-      do
-      {
-        ++visited;
-        h = this->Corners[Prev(h)].Twin;
-      } while (h >= 0 && h != this->Out[v] && visited <= count);
-    }
-    if (visited != count)
-    {
-      this->Flags[v] |= Locked;
-      ++report.NonManifoldVertices;
-    }
-  }
-  for (int32_t v = 0; v < numVertices; ++v)
-  {
-    report.LockedVertices += (this->Flags[v] & Locked) ? 1 : 0;
+    report.IsolatedVertices += found.IsolatedVertices;
+    report.NonManifoldVertices += found.NonManifoldVertices;
+    report.LockedVertices += found.LockedVertices;
   }
   return report;
 }
@@ -234,7 +251,7 @@ void HalfEdgeMesh::RemoveFace(int32_t h)
   }
 }
 
-void HalfEdgeMesh::RepairOutgoing(int32_t v, int32_t candidate)
+void HalfEdgeMesh::RepairOutgoing(int32_t v, int32_t candidate, bool closed)
 {
   if (this->Flags[v] & Locked)
   {
@@ -244,6 +261,11 @@ void HalfEdgeMesh::RepairOutgoing(int32_t v, int32_t candidate)
     {
       this->Out[v] = candidate;
     }
+    return;
+  }
+  if (closed)
+  {
+    this->Out[v] = candidate;
     return;
   }
   // Turn backwards until the boundary (or all the way round).
@@ -269,7 +291,17 @@ int HalfEdgeMesh::Collapse(int32_t v0, int32_t v1)
 int HalfEdgeMesh::CollapseUncounted(int32_t v0, int32_t v1)
 {
   const int32_t h01 = this->FindHalfEdge(v0, v1);
-  const int32_t h10 = this->FindHalfEdge(v1, v0);
+  // An unlocked v1 has one half-edge to v0 at most: h01's twin, if h01 has one.
+  const int32_t twin01 = h01 >= 0 ? this->Corners[h01].Twin : -1;
+  const int32_t h10 = twin01 >= 0 ? twin01 : this->FindHalfEdge(v1, v0);
+  // When the four outer edges of the two faces that go all have twins, stitching them creates
+  // no boundary: a vertex whose fan was closed keeps it closed, and needs no circulating to
+  // find its new outgoing half-edge.
+  bool stitched = true;
+  const auto closedBefore = [this](int32_t v) { return v >= 0 && this->HasClosedFan(v); };
+  const bool closed1 = closedBefore(v1);
+  const bool closedL = h01 >= 0 && closedBefore(this->Corners[Prev(h01)].Vertex);
+  const bool closedR = h10 >= 0 && closedBefore(this->Corners[Prev(h10)].Vertex);
 
   // v0's corners become v1's first (the fan is walked before anything else changes; the
   // corners of the two faces that go are cleared below anyway).
@@ -283,6 +315,7 @@ int HalfEdgeMesh::CollapseUncounted(int32_t v0, int32_t v1)
     const int32_t ta = this->Corners[Next(h01)].Twin;
     const int32_t tb = this->Corners[Prev(h01)].Twin;
     vl = this->Corners[Prev(h01)].Vertex;
+    stitched = stitched && ta >= 0 && tb >= 0;
     leftCandidate = ta >= 0 ? ta : Next(tb);
     keepCandidate = tb >= 0 ? tb : Next(ta);
     this->RemoveFace(h01);
@@ -294,6 +327,7 @@ int HalfEdgeMesh::CollapseUncounted(int32_t v0, int32_t v1)
     const int32_t ta = this->Corners[Next(h10)].Twin;
     const int32_t tb = this->Corners[Prev(h10)].Twin;
     vr = this->Corners[Prev(h10)].Vertex;
+    stitched = stitched && ta >= 0 && tb >= 0;
     rightCandidate = ta >= 0 ? ta : Next(tb);
     keepCandidate = tb >= 0 ? tb : Next(ta);
     this->RemoveFace(h10);
@@ -302,14 +336,14 @@ int HalfEdgeMesh::CollapseUncounted(int32_t v0, int32_t v1)
   this->Out[v0] = -1;
   this->Flags[v0] |= Removed;
 
-  this->RepairOutgoing(v1, keepCandidate);
+  this->RepairOutgoing(v1, keepCandidate, stitched && closed1);
   if (vl >= 0)
   {
-    this->RepairOutgoing(vl, leftCandidate);
+    this->RepairOutgoing(vl, leftCandidate, stitched && closedL);
   }
   if (vr >= 0)
   {
-    this->RepairOutgoing(vr, rightCandidate);
+    this->RepairOutgoing(vr, rightCandidate, stitched && closedR);
   }
   return removed;
 }

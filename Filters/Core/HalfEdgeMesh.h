@@ -193,7 +193,14 @@ public:
 
 private:
   void RemoveFace(int32_t h);
-  void RepairOutgoing(int32_t v, int32_t candidate);
+  /// Out[v] anew from a live outgoing half-edge; `closed`: v's fan is known to have no
+  /// boundary (then any outgoing half-edge will do, without circulating).
+  void RepairOutgoing(int32_t v, int32_t candidate, bool closed);
+  /// Whether v's fan has no boundary (Out points to the boundary half-edge if there is one).
+  bool HasClosedFan(int32_t v) const
+  {
+    return this->Out[v] >= 0 && this->Corners[this->Out[v]].Twin >= 0;
+  }
 
   /// A corner of a face, which is also the half-edge leaving it. Vertex and twin sit side by
   /// side so that circulating a vertex touches one cache line per face.
