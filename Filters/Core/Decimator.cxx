@@ -310,7 +310,7 @@ void Decimator::RenumberInput(const DecimatorInput& original, SpatialOrder& orde
 {
   const int32_t n = original.NumberOfPoints;
   const int32_t nt = original.NumberOfTriangles;
-  ComputeSpatialOrder(n, original.Points, nt, original.Triangles, order);
+  ComputeSpatialOrder(n, original.Points, nt, original.Triangles, order, threads);
   // Per-vertex arrays: new vertex v takes old vertex OldVertex[v]'s `width` values.
   const int32_t* oldVertex = order.OldVertex.data();
   auto gather = [oldVertex, n, threads](const auto* source, size_t width, auto& values)

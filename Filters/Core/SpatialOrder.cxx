@@ -1,5 +1,7 @@
 #include "SpatialOrder.h"
 
+#include "Parallel.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -34,7 +36,7 @@ uint32_t MortonCode(const double p[3], const double lo[3], double extent)
 }
 
 void ComputeSpatialOrder(int32_t numVertices, const double* points, int32_t numTriangles,
-                         const int32_t* triangles, SpatialOrder& order)
+                         const int32_t* triangles, SpatialOrder& order, int threads)
 {
   const auto n = static_cast<size_t>(std::max(numVertices, 0));
   const auto nt = static_cast<size_t>(std::max(numTriangles, 0));
@@ -58,23 +60,25 @@ void ComputeSpatialOrder(int32_t numVertices, const double* points, int32_t numT
   }
   const double extent = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
 
-  // Vertices: LSD radix sort of the codes, 10 bits per pass.
-  std::vector<uint32_t> codes(n);
-  for (size_t v = 0; v < n; ++v)
-  {
-    codes[v] = MortonCode(points + 3 * v, lo, extent);
-  }
-  std::vector<int32_t> current(n), next(n);
-  for (size_t v = 0; v < n; ++v)
-  {
-    current[v] = static_cast<int32_t>(v);
-  }
-  for (int shift = 0; shift < 30; shift += 10)
+  // Vertices: LSD radix sort of (code, vertex) pairs, 10 bits of the code per pass (stable:
+  // equal codes keep the vertices' order).
+  std::vector<uint64_t> current(n), next(n);
+  uint64_t* pairs = current.data();
+  const double box[3] = { lo[0], lo[1], lo[2] };
+  ParallelFor(n, threads,
+              [pairs, points, box, extent](size_t begin, size_t end, int)
+              {
+                for (size_t v = begin; v < end; ++v)
+                {
+                  pairs[v] = (uint64_t(MortonCode(points + 3 * v, box, extent)) << 32) | v;
+                }
+              });
+  for (int shift = 32; shift < 62; shift += 10)
   {
     size_t count[1025] = {};
     for (size_t i = 0; i < n; ++i)
     {
-      ++count[((codes[current[i]] >> shift) & 0x3ff) + 1];
+      ++count[((current[i] >> shift) & 0x3ff) + 1];
     }
     for (int b = 0; b < 1024; ++b)
     {
@@ -82,24 +86,40 @@ void ComputeSpatialOrder(int32_t numVertices, const double* points, int32_t numT
     }
     for (size_t i = 0; i < n; ++i)
     {
-      next[count[(codes[current[i]] >> shift) & 0x3ff]++] = current[i];
+      next[count[(current[i] >> shift) & 0x3ff]++] = current[i];
     }
     current.swap(next);
   }
-  order.OldVertex.swap(current);
-  order.NewVertex.assign(n, -1);
-  for (size_t i = 0; i < n; ++i)
-  {
-    order.NewVertex[order.OldVertex[i]] = static_cast<int32_t>(i);
-  }
+  order.OldVertex.resize(n);
+  order.NewVertex.resize(n);
+  int32_t* oldVertex = order.OldVertex.data();
+  int32_t* newVertex = order.NewVertex.data();
+  const uint64_t* sorted = current.data();
+  ParallelFor(n, threads,
+              [oldVertex, newVertex, sorted](size_t begin, size_t end, int)
+              {
+                for (size_t i = begin; i < end; ++i)
+                {
+                  oldVertex[i] = static_cast<int32_t>(sorted[i] & 0xffffffffu);
+                  newVertex[oldVertex[i]] = static_cast<int32_t>(i);
+                }
+              });
 
   // Triangles: counting sort on their smallest renumbered vertex.
   std::vector<int32_t> key(nt);
+  int32_t* keys = key.data();
+  ParallelFor(nt, threads,
+              [keys, triangles, newVertex](size_t begin, size_t end, int)
+              {
+                for (size_t f = begin; f < end; ++f)
+                {
+                  const int32_t* t = triangles + 3 * f;
+                  keys[f] = std::min({ newVertex[t[0]], newVertex[t[1]], newVertex[t[2]] });
+                }
+              });
   std::vector<size_t> start(n + 1, 0);
   for (size_t f = 0; f < nt; ++f)
   {
-    const int32_t* t = triangles + 3 * f;
-    key[f] = std::min({ order.NewVertex[t[0]], order.NewVertex[t[1]], order.NewVertex[t[2]] });
     ++start[key[f] + 1];
   }
   for (size_t v = 0; v < n; ++v)

@@ -45,11 +45,12 @@ VTKCOLORDECIMATION_EXPORT uint32_t MortonCode(const double p[3], const double lo
 
 /**
  * The renumbering of `numVertices` points (3 doubles each) and `numTriangles` triangles (3
- * vertex ids each, in [0, numVertices)).
+ * vertex ids each, in [0, numVertices)), partly on `threads` threads (the same for any
+ * number).
  */
 VTKCOLORDECIMATION_EXPORT void ComputeSpatialOrder(int32_t numVertices, const double* points,
                                                    int32_t numTriangles, const int32_t* triangles,
-                                                   SpatialOrder& order);
+                                                   SpatialOrder& order, int threads = 1);
 
 /**
  * Move block i of `block` consecutive values to block to[i], for i in [0, count) (`to` is a
