@@ -286,11 +286,11 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   stats.OutputTriangles = this->Mesh.GetNumberOfLiveFaces();
   // Connectivity 24 B/triangle + 5 B/vertex; reference normals 12 B/triangle; metric 48;
   // hot record 32; Greedy: heap 16 per entry + 20 per vertex; Batched: key 8, stamp 4, the
-  // candidates 16, the batch (at most a quarter of them) 4 and the interior flag 1; choice
-  // 4 + 1.
+  // batch (at most a quarter of the vertices, 16 B each, collected by the threads and then
+  // copied) 8, the list of affected vertices 4 and the block flags 1; choice 4 + 1.
   // ColorQuadric: 112 instead of 48 for the metric, and 1 more for the moved flags.
   stats.MetricBytesPerVertex = this->QuadricMetric ? sizeof(ColorQuadric) : sizeof(VertexMetric);
-  const size_t ordering = this->Options.Schedule == CollapseSchedule::Batched ? 33 : 36;
+  const size_t ordering = this->Options.Schedule == CollapseSchedule::Batched ? 25 : 36;
   stats.StateBytes = (24 + 12) * size_t(input.NumberOfTriangles) +
     size_t(n) *
       (5 + stats.MetricBytesPerVertex + sizeof(HotVertex) + ordering + 4 + 1 +
