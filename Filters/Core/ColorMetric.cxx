@@ -45,23 +45,31 @@ void CollapseColorErrors(const double p0[3], const double c0[3], Ring& ring, dou
     product[i] = std::sqrt((dr * dr + dg * dg + db * db) * (dx * dx + dy * dy + dz * dz));
     errors[i] = 0.0;
   }
-  // All pairs, branch-free, over whole blocks of 4 (the padding lanes are computed and
-  // ignored): the inner loop vectorises without a scalar tail.
+  // errors[j] = sum over i of |product[i] - after(i, j)|, after(i, j) being the colour-length
+  // product of i and j (0 for i = j). It is symmetric, so each pair is computed once, in row
+  // min(i, j): row i adds its term to errors[k] for every k > i (a vectorised loop) and keeps
+  // the terms of errors[i] to add them in the order of k. Every errors[j] thus sums its terms
+  // in the order of i, as the plain double loop would: the same bits with half the roots.
+  double* terms = ring.Terms.data();
   for (int i = 0; i < n; ++i)
   {
     const double xi = x[i], yi = y[i], zi = z[i], ri = r[i], gi = g[i], bi = b[i];
     const double before = product[i];
-    for (int j0 = 0; j0 < padded; j0 += 4)
+    errors[i] += before; // the pair (i, i): after is 0
+    for (int k = i + 1; k < n; ++k)
     {
-      for (int j = j0; j < j0 + 4; ++j)
-      {
-        const double dx = x[j] - xi, dy = y[j] - yi, dz = z[j] - zi;
-        const double dr = r[j] - ri, dg = g[j] - gi, db = b[j] - bi;
-        const double after =
-          std::sqrt((dr * dr + dg * dg + db * db) * (dx * dx + dy * dy + dz * dz));
-        errors[j] += std::abs(before - after);
-      }
+      const double dx = x[k] - xi, dy = y[k] - yi, dz = z[k] - zi;
+      const double dr = r[k] - ri, dg = g[k] - gi, db = b[k] - bi;
+      const double after = std::sqrt((dr * dr + dg * dg + db * db) * (dx * dx + dy * dy + dz * dz));
+      errors[k] += std::abs(before - after);
+      terms[k] = std::abs(product[k] - after);
     }
+    double sum = errors[i];
+    for (int k = i + 1; k < n; ++k)
+    {
+      sum += terms[k];
+    }
+    errors[i] = sum;
   }
 }
 
