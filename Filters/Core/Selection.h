@@ -4,9 +4,10 @@
  * listed in vertex order, without sorting them.
  *
  * A pass takes the k cheapest of up to a million keyed vertices. Instead of copying them all
- * and partitioning the copy (nth_element), SelectCheapest counts the keys by their top bits
- * (a histogram, on several threads), which tells the bucket holding the k-th key; the vertices
- * of the lower buckets are taken outright, and only the few of that bucket are partitioned.
+ * and partitioning the copy (nth_element), SelectCheapest estimates the k-th key from a
+ * sample of one vertex in 16, takes the vertices up to a little above it in one scan (on
+ * several threads), and partitions only those; should the sample mislead (too few taken), it
+ * takes them all.
  * The chosen set is exactly the k smallest by (key, vertex), as a full partition would choose,
  * and it comes out in vertex order, so it is already grouped by block.
  */
@@ -64,86 +65,102 @@ template <typename KeyOf, typename HowMany>
 size_t SelectCheapest(int32_t n, const KeyOf& keyOf, const HowMany& howMany, int threads,
                       std::vector<Candidate>& out)
 {
-  constexpr int BucketBits = 16;
-  constexpr int Shift = 64 - BucketBits;
-  constexpr size_t Buckets = size_t(1) << BucketBits;
   threads = std::max(threads, 1);
   const size_t count = static_cast<size_t>(std::max(n, 0));
+  constexpr double Infinity = std::numeric_limits<double>::infinity();
 
-  // 1. How many keys fall in each bucket (each thread counts its range of vertices).
-  std::vector<uint32_t> histograms(Buckets * threads, 0);
-  uint32_t* counts = histograms.data();
-  ParallelFor(count, threads,
-              [counts, keyOf](size_t begin, size_t end, int t)
-              {
-                uint32_t* histogram = counts + Buckets * t;
-                for (size_t v = begin; v < end; ++v)
-                {
-                  double key;
-                  if (keyOf(static_cast<int32_t>(v), key))
-                  {
-                    ++histogram[OrderedBits(key) >> Shift];
-                  }
-                }
-              });
-  for (int t = 1; t < threads; ++t)
+  // 1. A threshold from a sample (the keys of every SampleStride-th vertex): a little above
+  // the sample's share of wanted keys, so that the keys up to it nearly always include the
+  // wanted ones.
+  constexpr size_t SampleStride = 16;
+  std::vector<double> sample;
+  sample.reserve(count / SampleStride + 1);
+  for (size_t v = 0; v < count; v += SampleStride)
   {
-    for (size_t b = 0; b < Buckets; ++b)
+    double key;
+    if (keyOf(static_cast<int32_t>(v), key))
     {
-      counts[b] += counts[Buckets * t + b];
+      sample.push_back(key);
     }
   }
-  size_t total = 0;
-  for (size_t b = 0; b < Buckets; ++b)
+  double threshold = Infinity;
+  if (!sample.empty())
   {
-    total += counts[b];
+    const double estimate = static_cast<double>(sample.size() * SampleStride);
+    const double share =
+      std::min(1.0, static_cast<double>(howMany(static_cast<size_t>(estimate))) / estimate);
+    const double size = static_cast<double>(sample.size());
+    const double margin = 0.02 * size + 4.0 * std::sqrt(share * size) + 2.0;
+    const auto index = static_cast<size_t>(std::ceil(share * size + margin));
+    if (index < sample.size())
+    {
+      std::nth_element(sample.begin(), sample.begin() + index, sample.end());
+      threshold = sample[index];
+    }
   }
+
+  // 2. The candidates up to the threshold, in vertex order (each thread its range, appended in
+  // range order), and how many candidates there are in all.
+  std::vector<std::vector<Candidate>> taken(threads);
+  std::vector<size_t> counted(threads, 0);
+  const size_t first = out.size();
+  size_t total = 0;
+  const auto collect = [&](double upTo)
+  {
+    std::vector<Candidate>* lists = taken.data();
+    size_t* counts = counted.data();
+    ParallelFor(count, threads,
+                [lists, counts, keyOf, upTo](size_t begin, size_t end, int t)
+                {
+                  std::vector<Candidate>& list = lists[t];
+                  list.clear();
+                  size_t candidates = 0;
+                  for (size_t v = begin; v < end; ++v)
+                  {
+                    Candidate c;
+                    c.Vertex = static_cast<int32_t>(v);
+                    if (keyOf(c.Vertex, c.Key))
+                    {
+                      ++candidates;
+                      if (c.Key <= upTo)
+                      {
+                        list.push_back(c);
+                      }
+                    }
+                  }
+                  counts[t] = candidates;
+                });
+    out.resize(first);
+    total = 0;
+    for (int t = 0; t < threads; ++t)
+    {
+      out.insert(out.end(), taken[t].begin(), taken[t].end());
+      total += counted[t];
+    }
+  };
+  collect(threshold);
   const size_t wanted = std::min(total, static_cast<size_t>(howMany(total)));
+  if (out.size() - first < wanted)
+  {
+    collect(Infinity); // the sample misled: all of them
+  }
+  if (out.size() - first == wanted)
+  {
+    return total;
+  }
+
+  // 3. Of those, only the wanted smallest stay (in vertex order).
+  std::vector<Candidate> ranked(out.begin() + first, out.end());
   if (wanted == 0)
   {
+    out.resize(first);
     return total;
   }
-
-  // 2. The bucket of the wanted-th key: everything below it is taken, and `fromLast` of it.
-  size_t last = 0, below = 0;
-  while (below + counts[last] < wanted)
-  {
-    below += counts[last++];
-  }
-  const size_t fromLast = wanted - below;
-  const bool partial = fromLast < counts[last];
-
-  // 3. The candidates of the buckets up to the last one, in vertex order (each thread its
-  // range, appended in range order).
-  const size_t first = out.size();
-  CollectInOrder(
-    count, threads,
-    [keyOf, last](size_t v, Candidate& c)
-    {
-      c.Vertex = static_cast<int32_t>(v);
-      return keyOf(c.Vertex, c.Key) && (OrderedBits(c.Key) >> Shift) <= last;
-    },
-    out);
-  if (!partial)
-  {
-    return total;
-  }
-
-  // 4. Of the last bucket, only the fromLast smallest stay.
-  std::vector<Candidate> tied;
-  tied.reserve(counts[last]);
-  for (size_t i = first; i < out.size(); ++i)
-  {
-    if ((OrderedBits(out[i].Key) >> Shift) == last)
-    {
-      tied.push_back(out[i]);
-    }
-  }
-  std::nth_element(tied.begin(), tied.begin() + (fromLast - 1), tied.end());
-  const Candidate threshold = tied[fromLast - 1];
-  out.erase(std::remove_if(out.begin() + first, out.end(),
-                           [threshold](const Candidate& c) { return threshold < c; }),
-            out.end());
+  std::nth_element(ranked.begin(), ranked.begin() + (wanted - 1), ranked.end());
+  const Candidate last = ranked[wanted - 1];
+  out.erase(
+    std::remove_if(out.begin() + first, out.end(), [last](const Candidate& c) { return last < c; }),
+    out.end());
   return total;
 }
 

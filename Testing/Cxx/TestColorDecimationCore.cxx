@@ -437,64 +437,82 @@ void TestBatchSelection()
   std::uniform_int_distribution<int> kind(0, 9);
   std::uniform_real_distribution<double> wide(-3.0, 40.0);
   std::uniform_int_distribution<int> coarse(0, 6);
-  for (const int32_t n : { 0, 1, 7, 1000, 20000 })
+  // Pattern 0: random keys (many ties, near ties 1e-9 and 1e-5 apart around 1). Pattern 1: the
+  // vertices a sample of every 16th would see are the cheapest (the estimate misleads). Pattern
+  // 2: those vertices are no candidates (an empty sample).
+  for (const int pattern : { 0, 1, 2 })
   {
-    std::vector<double> keys(n);
-    std::vector<char> eligible(n);
-    for (int32_t v = 0; v < n; ++v)
+    for (const int32_t n : { 0, 1, 7, 1000, 20000, 100000 })
     {
-      const int k = kind(rng);
-      keys[v] = k == 0 ? std::nan("")
-        : k == 1       ? -0.0
-        : k < 4        ? 0.5 * coarse(rng)
-        : k < 6        ? 1.0 + 1e-9 * coarse(rng) // one bucket
-                       : std::exp(wide(rng)) * (k == 6 ? -1.0 : 1.0);
-      eligible[v] = kind(rng) != 0;
-    }
-    std::vector<Candidate> all;
-    for (int32_t v = 0; v < n; ++v)
-    {
-      if (eligible[v])
+      std::vector<double> keys(n);
+      std::vector<char> eligible(n);
+      for (int32_t v = 0; v < n; ++v)
       {
-        all.push_back({ OrderableKey(keys[v]), v });
-      }
-    }
-    std::sort(all.begin(), all.end());
-    for (const double share : { 0.0, 0.001, 0.25, 0.5, 1.0 })
-    {
-      const size_t wanted = static_cast<size_t>(share * static_cast<double>(all.size()));
-      std::vector<Candidate> expected(all.begin(), all.begin() + wanted);
-      std::sort(expected.begin(), expected.end(),
-                [](const Candidate& a, const Candidate& b) { return a.Vertex < b.Vertex; });
-      for (const int threads : { 1, 2, 3 })
-      {
-        std::vector<Candidate> out = { { -1.0, -1 } }; // appended to, not replaced
-        size_t seen = 0;
-        const size_t total = SelectCheapest(
-          n,
-          [&keys, &eligible](int32_t v, double& key)
-          {
-            key = OrderableKey(keys[v]);
-            return eligible[v] != 0;
-          },
-          [wanted, &seen](size_t count)
-          {
-            seen = count;
-            return wanted;
-          },
-          threads, out);
-        CD_CHECK(total == all.size() && seen == (n > 0 ? all.size() : seen));
-        CD_CHECK_MSG(out.size() == expected.size() + 1,
-                     "n " << n << " share " << share << " threads " << threads << ": "
-                          << out.size() - 1 << " selected, " << expected.size() << " expected");
-        bool same = out.size() == expected.size() + 1 && out[0].Vertex == -1;
-        for (size_t i = 0; same && i < expected.size(); ++i)
+        const int k = kind(rng);
+        keys[v] = k == 0 ? std::nan("")
+          : k == 1       ? -0.0
+          : k == 2       ? 0.5 * coarse(rng)
+          : k == 3       ? 1.0 + 1e-9 * coarse(rng)
+          : k < 6        ? 1.0 + 1e-5 * coarse(rng)
+                         : std::exp(wide(rng)) * (k == 6 ? -1.0 : 1.0);
+        eligible[v] = kind(rng) != 0;
+        if (pattern == 1)
         {
-          const Candidate& a = out[i + 1];
-          const Candidate& b = expected[i];
-          same = a.Vertex == b.Vertex && std::memcmp(&a.Key, &b.Key, sizeof(double)) == 0;
+          keys[v] = v % 16 == 0 ? -1.0 - v : 1.0 + v % 7;
         }
-        CD_CHECK_MSG(same, "n " << n << " share " << share << " threads " << threads);
+        else if (pattern == 2)
+        {
+          eligible[v] = eligible[v] && v % 16 != 0;
+        }
+      }
+      std::vector<Candidate> all;
+      for (int32_t v = 0; v < n; ++v)
+      {
+        if (eligible[v])
+        {
+          all.push_back({ OrderableKey(keys[v]), v });
+        }
+      }
+      std::sort(all.begin(), all.end());
+      for (const double share : { 0.0, 0.001, 0.25, 0.5, 1.0 })
+      {
+        const size_t wanted = static_cast<size_t>(share * static_cast<double>(all.size()));
+        std::vector<Candidate> expected(all.begin(), all.begin() + wanted);
+        std::sort(expected.begin(), expected.end(),
+                  [](const Candidate& a, const Candidate& b) { return a.Vertex < b.Vertex; });
+        for (const int threads : { 1, 2, 3 })
+        {
+          std::vector<Candidate> out = { { -1.0, -1 } }; // appended to, not replaced
+          size_t seen = 0;
+          const size_t total = SelectCheapest(
+            n,
+            [&keys, &eligible](int32_t v, double& key)
+            {
+              key = OrderableKey(keys[v]);
+              return eligible[v] != 0;
+            },
+            [wanted, &seen](size_t count)
+            {
+              seen = count;
+              return wanted;
+            },
+            threads, out);
+          CD_CHECK(total == all.size() && seen == (n > 0 ? all.size() : seen));
+          CD_CHECK_MSG(out.size() == expected.size() + 1,
+                       "pattern " << pattern << " n " << n << " share " << share << " threads "
+                                  << threads << ": " << out.size() - 1 << " selected, "
+                                  << expected.size() << " expected");
+          bool same = out.size() == expected.size() + 1 && out[0].Vertex == -1;
+          for (size_t i = 0; same && i < expected.size(); ++i)
+          {
+            const Candidate& a = out[i + 1];
+            const Candidate& b = expected[i];
+            same = a.Vertex == b.Vertex && std::memcmp(&a.Key, &b.Key, sizeof(double)) == 0;
+          }
+          CD_CHECK_MSG(same,
+                       "pattern " << pattern << " n " << n << " share " << share << " threads "
+                                  << threads);
+        }
       }
     }
   }
