@@ -19,7 +19,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -39,19 +38,11 @@ struct Candidate
 
 /**
  * A key fit for ordering: a NaN (0 x inf, from a GeometryWeight of 0 on extreme input) goes
- * last, as +inf, and -0 becomes +0, so that the keys' order and their OrderedBits' agree.
+ * last, as +inf, so that the keys have a strict weak order.
  */
 inline double OrderableKey(double key)
 {
-  return std::isnan(key) ? std::numeric_limits<double>::infinity() : (key == 0.0 ? 0.0 : key);
-}
-
-/// An unsigned integer in the same order as `key` (an OrderableKey).
-inline uint64_t OrderedBits(double key)
-{
-  uint64_t bits;
-  std::memcpy(&bits, &key, sizeof bits);
-  return (bits >> 63) ? ~bits : (bits | (uint64_t(1) << 63));
+  return std::isnan(key) ? std::numeric_limits<double>::infinity() : key;
 }
 
 /**
