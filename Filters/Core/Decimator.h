@@ -17,14 +17,15 @@
  *    (Q and I accumulate into v1), re-cost v1, v0's former neighbours (their 1-ring changed)
  *    and those neighbours of v1 whose chosen target was v1 (its quadric grew).
  *    Batched (CollapseInBatches): take the cheapest BatchFraction of the vertices' chosen
- *    collapses (SelectCheapest, Selection.h), in cost order; make each in turn unless a collapse before it in this pass affected
- *    its vertex or its target (its key is stale) or the rules forbid it (it is re-costed
- *    over its legal collapses); then re-cost every affected vertex at once, in memory order
- *    and on several threads. The affected vertices are those Greedy re-costs, so a batch of
- *    one is exactly Greedy (tested); larger batches trade the strict global order for
- *    locality and parallelism. The collapses of a pass run by blocks of vertex ids on several
- *    threads, then by wide blocks, then the rest on one (see CollapseInBatches below). The
- *    batch is known in advance, so its neighbourhoods are prefetched a few collapses ahead.
+ *    collapses (SelectCheapest, Selection.h), in cost order; make each in turn unless a
+ *    collapse before it in this pass affected its vertex or its target (its key is stale) or
+ *    the rules forbid it (it is re-costed over its legal collapses); then re-cost every
+ *    affected vertex at once, in memory order and on several threads. The affected vertices
+ *    are those Greedy re-costs, so a batch of one is exactly Greedy (tested); larger batches
+ *    trade the strict global order for locality and parallelism. The collapses of a pass run
+ *    by blocks of vertex ids on several threads, then by wide blocks, then the rest on one
+ *    (see CollapseInBatches below). The batch is known in advance, so its neighbourhoods are
+ *    prefetched a few collapses ahead.
  *
  * The Greedy loop is bound by memory latency, not arithmetic: each collapse happens
  * somewhere else on the surface and re-costs the 2-ring around it, which is seldom in cache.

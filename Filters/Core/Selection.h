@@ -141,12 +141,12 @@ size_t SelectCheapest(int32_t n, const KeyOf& keyOf, const HowMany& howMany, int
   }
 
   // 3. Of those, only the wanted smallest stay (in vertex order).
-  std::vector<Candidate> ranked(out.begin() + first, out.end());
   if (wanted == 0)
   {
     out.resize(first);
     return total;
   }
+  std::vector<Candidate> ranked(out.begin() + first, out.end());
   std::nth_element(ranked.begin(), ranked.begin() + (wanted - 1), ranked.end());
   const Candidate last = ranked[wanted - 1];
   out.erase(
