@@ -64,9 +64,7 @@ CollapseVerdict CollapseRules::CheckTopology(const HalfEdgeMesh& mesh, int32_t v
     return CollapseVerdict::NotCollapsible;
   }
   const int32_t h01 = mesh.FindHalfEdge(v0, v1);
-  // An unlocked v1 has one half-edge to v0 at most: h01's twin, if h01 has one.
-  const int32_t twin01 = h01 >= 0 ? mesh.Twin(h01) : -1;
-  const int32_t h10 = twin01 >= 0 ? twin01 : mesh.FindHalfEdge(v1, v0);
+  const int32_t h10 = mesh.FindReverseHalfEdge(v0, v1, h01);
   if (h01 < 0 && h10 < 0)
   {
     return CollapseVerdict::NotCollapsible;

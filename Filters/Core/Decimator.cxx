@@ -1024,8 +1024,7 @@ bool Decimator::IsInsideBlock(int32_t v0, int32_t v1, int32_t block, const Block
     return false;
   }
   const int32_t h01 = this->Mesh.FindHalfEdge(v0, v1);
-  const int32_t twin = h01 >= 0 ? this->Mesh.Twin(h01) : -1;
-  const int32_t h10 = twin >= 0 ? twin : this->Mesh.FindHalfEdge(v1, v0);
+  const int32_t h10 = this->Mesh.FindReverseHalfEdge(v0, v1, h01);
   for (const int32_t h : { h01, h10 })
   {
     if (h < 0)

@@ -291,9 +291,7 @@ int HalfEdgeMesh::Collapse(int32_t v0, int32_t v1)
 int HalfEdgeMesh::CollapseUncounted(int32_t v0, int32_t v1)
 {
   const int32_t h01 = this->FindHalfEdge(v0, v1);
-  // An unlocked v1 has one half-edge to v0 at most: h01's twin, if h01 has one.
-  const int32_t twin01 = h01 >= 0 ? this->Corners[h01].Twin : -1;
-  const int32_t h10 = twin01 >= 0 ? twin01 : this->FindHalfEdge(v1, v0);
+  const int32_t h10 = this->FindReverseHalfEdge(v0, v1, h01);
   // When the four outer edges of the two faces that go all have twins, stitching them creates
   // no boundary: a vertex whose fan was closed keeps it closed, and needs no circulating to
   // find its new outgoing half-edge.

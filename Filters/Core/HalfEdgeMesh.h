@@ -167,6 +167,15 @@ public:
 
   /// The half-edge a -> b of an unlocked vertex a, or -1.
   int32_t FindHalfEdge(int32_t a, int32_t b) const;
+  /**
+   * The half-edge b -> a of an unlocked vertex b, given hab = FindHalfEdge(a, b): hab's twin
+   * when it has one (b has one half-edge to a at most), otherwise searched.
+   */
+  int32_t FindReverseHalfEdge(int32_t a, int32_t b, int32_t hab) const
+  {
+    const int32_t twin = hab >= 0 ? this->Corners[hab].Twin : -1;
+    return twin >= 0 ? twin : this->FindHalfEdge(b, a);
+  }
 
   /**
    * Collapse v0 into v1 (both unlocked, adjacent; legality is the caller's business, see
