@@ -287,10 +287,11 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   // Connectivity 24 B/triangle + 5 B/vertex; reference normals 12 B/triangle; metric 48;
   // hot record 32; Greedy: heap 16 per entry + 20 per vertex; Batched: key 8, stamp 4, the
   // batch (at most a quarter of the vertices, 16 B each, collected by the threads and then
-  // copied) 8, the list of affected vertices 4 and the block flags 1; choice 4 + 1.
+  // copied) 8, the list of affected vertices 4, the list of live vertices and its shrunk
+  // copy 8, and the block flags 1; choice 4 + 1.
   // ColorQuadric: 112 instead of 48 for the metric, and 1 more for the moved flags.
   stats.MetricBytesPerVertex = this->QuadricMetric ? sizeof(ColorQuadric) : sizeof(VertexMetric);
-  const size_t ordering = this->Options.Schedule == CollapseSchedule::Batched ? 25 : 36;
+  const size_t ordering = this->Options.Schedule == CollapseSchedule::Batched ? 33 : 36;
   stats.StateBytes = (24 + 12) * size_t(input.NumberOfTriangles) +
     size_t(n) *
       (5 + stats.MetricBytesPerVertex + sizeof(HotVertex) + ordering + 4 + 1 +
@@ -523,7 +524,8 @@ void Decimator::EvaluateAll(const int32_t* vertices, size_t count, bool exact, b
       keys[v] = choice.Cost;
     }
   };
-  const int threads = this->ThreadCount(count);
+  // An exact evaluation runs the rules on its choices until one is legal: some times the work.
+  const int threads = this->ThreadCount(exact ? ExactEvaluationWork * count : count);
   this->ThreadsUsed = std::max(this->ThreadsUsed, threads);
   this->AddWorkers(threads);
   ParallelFor(count, threads,
@@ -727,6 +729,17 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
   std::vector<Candidate> batch, deferred;
   std::vector<size_t> blockStart;
   std::vector<int32_t> affected, rejected;
+  // The vertices that may have a collapse, in vertex order: the collapsible ones, less those
+  // collapsed away after each pass, so that the scans of a pass shrink with the mesh.
+  std::vector<int32_t> live, kept;
+  CollectInOrder(
+    static_cast<size_t>(n), this->ThreadCount(static_cast<size_t>(n)),
+    [this](size_t v, int32_t& u)
+    {
+      u = static_cast<int32_t>(v);
+      return this->Mesh.IsCollapsible(u);
+    },
+    live);
   const int64_t startFaces = this->Mesh.GetNumberOfLiveFaces();
   const int64_t toRemove = std::max<int64_t>(startFaces - stats.TargetTriangles, 1);
   int32_t pass = 0;
@@ -743,7 +756,7 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
     const double* key = keys.data();
     batch.clear();
     const size_t candidates = SelectCheapest(
-      n,
+      live.size(), live.data(),
       [best, key](int32_t v, double& k)
       {
         k = OrderableKey(key[v]);
@@ -756,7 +769,7 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
           std::min<int64_t>(
             needed, static_cast<int64_t>(std::ceil(fraction * static_cast<double>(count))))));
       },
-      this->ThreadCount(static_cast<size_t>(n)), batch);
+      this->ThreadCount(live.size()), batch);
     if (candidates == 0)
     {
       break;
@@ -839,13 +852,25 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
     {
       this->Stamp[v] = -pass;
     }
-    const int32_t* stamp = this->Stamp.data();
+    kept.clear();
+    const int32_t* before = live.data();
     CollectInOrder(
-      static_cast<size_t>(n), this->ThreadCount(static_cast<size_t>(n)),
-      [stamp, pass](size_t v, int32_t& u)
+      live.size(), this->ThreadCount(live.size()),
+      [this, before](size_t i, int32_t& u)
       {
-        u = static_cast<int32_t>(v);
-        return stamp[v] == pass;
+        u = before[i];
+        return !this->Mesh.IsRemoved(u);
+      },
+      kept);
+    live.swap(kept);
+    const int32_t* stamp = this->Stamp.data();
+    const int32_t* listed = live.data();
+    CollectInOrder(
+      live.size(), this->ThreadCount(live.size()),
+      [stamp, listed, pass](size_t i, int32_t& u)
+      {
+        u = listed[i];
+        return stamp[u] == pass;
       },
       affected);
     this->EvaluateAll(affected.data(), affected.size(), false, false, keys.data());

@@ -20,7 +20,8 @@
  *    collapses (SelectCheapest, Selection.h), in cost order; make each in turn unless a
  *    collapse before it in this pass affected its vertex or its target (its key is stale) or
  *    the rules forbid it (it is re-costed over its legal collapses); then re-cost every
- *    affected vertex at once, in memory order and on several threads. The affected vertices
+ *    affected vertex at once, in memory order and on several threads (the scans of a pass
+ *    read the list of live vertices, which shrinks with the mesh). The affected vertices
  *    are those Greedy re-costs, so a batch of one is exactly Greedy (tested); larger batches
  *    trade the strict global order for locality and parallelism. The collapses of a pass run
  *    by blocks of vertex ids on several threads, then by wide blocks, then the rest on one
@@ -283,6 +284,8 @@ private:
   /// Make sure there is a workspace for each of `threads` threads.
   void AddWorkers(int threads);
   static constexpr size_t MinimumThreadWork = 4096;
+  /// An exact evaluation costs about this many plain ones (measured on the kitchen scan).
+  static constexpr size_t ExactEvaluationWork = 6;
   /// Batched: how many collapses ahead each prefetch stage works.
   static constexpr size_t FarAhead = 16, MiddleAhead = 8, NearAhead = 4;
   /// Greedy: cost the vertex at the top exactly (exact: over its legal collapses only) and

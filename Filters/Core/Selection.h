@@ -47,29 +47,30 @@ inline double OrderableKey(double key)
 
 /**
  * Append to `out`, in vertex order, the `howMany(m)` smallest candidates by (key, vertex), m
- * being the number of candidates among the vertices 0 .. n - 1: those for which
- * keyOf(v, key) returns true, with their key (an OrderableKey). Returns m. keyOf is called
- * twice per vertex, from `threads` threads at once (each calling its own copy: let it capture
- * pointers by value).
+ * being the number of candidates among the vertices vertices[0 .. count - 1] (in increasing
+ * order; 0 .. count - 1 when `vertices` is null): those for which keyOf(v, key) returns true,
+ * with their key (an OrderableKey). Returns m. keyOf is called twice per vertex, from
+ * `threads` threads at once (each calling its own copy: let it capture pointers by value).
  */
 template <typename KeyOf, typename HowMany>
-size_t SelectCheapest(int32_t n, const KeyOf& keyOf, const HowMany& howMany, int threads,
-                      std::vector<Candidate>& out)
+size_t SelectCheapest(size_t count, const int32_t* vertices, const KeyOf& keyOf,
+                      const HowMany& howMany, int threads, std::vector<Candidate>& out)
 {
   threads = std::max(threads, 1);
-  const size_t count = static_cast<size_t>(std::max(n, 0));
   constexpr double Infinity = std::numeric_limits<double>::infinity();
+  const auto vertexAt = [vertices](size_t i)
+  { return vertices ? vertices[i] : static_cast<int32_t>(i); };
 
-  // 1. A threshold from a sample (the keys of every SampleStride-th vertex): a little above
+  // 1. A threshold from a sample (the keys of every SampleStride-th listed vertex): a little above
   // the sample's share of wanted keys, so that the keys up to it nearly always include the
   // wanted ones.
   constexpr size_t SampleStride = 16;
   std::vector<double> sample;
   sample.reserve(count / SampleStride + 1);
-  for (size_t v = 0; v < count; v += SampleStride)
+  for (size_t i = 0; i < count; i += SampleStride)
   {
     double key;
-    if (keyOf(static_cast<int32_t>(v), key))
+    if (keyOf(vertexAt(i), key))
     {
       sample.push_back(key);
     }
@@ -101,15 +102,15 @@ size_t SelectCheapest(int32_t n, const KeyOf& keyOf, const HowMany& howMany, int
     std::vector<Candidate>* lists = taken.data();
     size_t* counts = counted.data();
     ParallelFor(count, threads,
-                [lists, counts, keyOf, upTo](size_t begin, size_t end, int t)
+                [lists, counts, keyOf, vertexAt, upTo](size_t begin, size_t end, int t)
                 {
                   std::vector<Candidate>& list = lists[t];
                   list.clear();
                   size_t candidates = 0;
-                  for (size_t v = begin; v < end; ++v)
+                  for (size_t i = begin; i < end; ++i)
                   {
                     Candidate c;
-                    c.Vertex = static_cast<int32_t>(v);
+                    c.Vertex = vertexAt(i);
                     if (keyOf(c.Vertex, c.Key))
                     {
                       ++candidates;

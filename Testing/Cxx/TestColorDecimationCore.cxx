@@ -485,7 +485,7 @@ void TestBatchSelection()
           std::vector<Candidate> out = { { -1.0, -1 } }; // appended to, not replaced
           size_t seen = 0;
           const size_t total = SelectCheapest(
-            n,
+            static_cast<size_t>(n), nullptr,
             [&keys, &eligible](int32_t v, double& key)
             {
               key = OrderableKey(keys[v]);
@@ -517,6 +517,58 @@ void TestBatchSelection()
     }
   }
   CD_CHECK(OrderableKey(std::nan("")) == std::numeric_limits<double>::infinity());
+
+  // A list of vertices (as the Batched schedule passes its live ones): only the listed ones
+  // count, and the result is the same as over an identity list of those.
+  const int32_t n = 50000;
+  std::vector<double> keys(n);
+  std::vector<int32_t> listed;
+  for (int32_t v = 0; v < n; ++v)
+  {
+    keys[v] = 0.25 * coarse(rng) + (v % 3 == 0 ? -10.0 : 0.0); // the unlisted are the cheapest
+    if (v % 3 != 0 && kind(rng) != 0)
+    {
+      listed.push_back(v);
+    }
+  }
+  std::vector<Candidate> expected;
+  for (const int32_t v : listed)
+  {
+    if (v % 7 != 0)
+    {
+      expected.push_back({ keys[v], v });
+    }
+  }
+  std::sort(expected.begin(), expected.end());
+  const size_t wanted = expected.size() / 4;
+  expected.resize(wanted);
+  std::sort(expected.begin(), expected.end(),
+            [](const Candidate& a, const Candidate& b) { return a.Vertex < b.Vertex; });
+  for (const int threads : { 1, 2, 3 })
+  {
+    std::vector<Candidate> out;
+    size_t seen = 0;
+    const size_t total = SelectCheapest(
+      listed.size(), listed.data(),
+      [&keys](int32_t v, double& key)
+      {
+        key = keys[v];
+        return v % 7 != 0;
+      },
+      [&seen](size_t count)
+      {
+        seen = count;
+        return count / 4;
+      },
+      threads, out);
+    CD_CHECK(total == seen && total == 4 * wanted + total % 4);
+    bool same = out.size() == expected.size();
+    for (size_t i = 0; same && i < expected.size(); ++i)
+    {
+      same = out[i].Vertex == expected[i].Vertex && out[i].Key == expected[i].Key;
+    }
+    CD_CHECK_MSG(same, "a list of vertices, threads " << threads);
+  }
 }
 
 void TestVertexHeap()
