@@ -847,7 +847,8 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
     }
     // 3. Re-cost in vertex order (neighbours in memory are neighbours on the surface); the
     // rejected ones over their legal collapses only. The affected ones are those stamped with
-    // this pass, once the rejected ones are stamped apart (with -pass, which no pass matches).
+    // this pass, once the rejected ones are stamped apart (with -pass, which no pass matches);
+    // locked ones, which never have a collapse, are not listed.
     for (int32_t v : rejected)
     {
       this->Stamp[v] = -pass;

@@ -61,9 +61,9 @@ size_t SelectCheapest(size_t count, const int32_t* vertices, const KeyOf& keyOf,
   const auto vertexAt = [vertices](size_t i)
   { return vertices ? vertices[i] : static_cast<int32_t>(i); };
 
-  // 1. A threshold from a sample (the keys of every SampleStride-th listed vertex): a little above
-  // the sample's share of wanted keys, so that the keys up to it nearly always include the
-  // wanted ones.
+  // 1. A threshold from a sample (the keys of every SampleStride-th listed vertex): a little
+  // above the sample's share of wanted keys, so that the keys up to it nearly always include
+  // the wanted ones.
   constexpr size_t SampleStride = 16;
   std::vector<double> sample;
   sample.reserve(count / SampleStride + 1);
