@@ -9,6 +9,7 @@
 #include "vtkColorHalfEdgeDecimation.h"
 
 #include "Core/Decimator.h"
+#include "Core/Parallel.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -30,6 +31,8 @@
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTriangleStrip.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkTypeInt64Array.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -47,8 +50,8 @@ namespace
 /// Triangles of the input with, for each, the id of the input cell it came from.
 struct TriangleSoup
 {
-  std::vector<int32_t> Triangles;
-  std::vector<vtkIdType> SourceCell;
+  colordecimation::Buffer<int32_t> Triangles;
+  colordecimation::Buffer<vtkIdType> SourceCell;
   vtkIdType Polygons = 0;    ///< cells with more than 3 points that were triangulated
   vtkIdType Strips = 0;      ///< strips decomposed
   vtkIdType Degenerate = 0;  ///< triangles with a repeated point, dropped
@@ -109,7 +112,57 @@ bool SkipGhostCell(vtkUnsignedCharArray* ghosts, vtkIdType cell, vtkIdType npts,
   return true;
 }
 
-void ExtractTriangles(vtkPolyData* input, TriangleSoup& soup)
+/**
+ * The common case in bulk: polygons that are all triangles, with ids in range and none
+ * repeating a point, no strips and no ghost cells. Copies them on `threads` threads and returns
+ * true; false (nothing added) for any other input, which takes the cell-by-cell way.
+ */
+template <typename Id>
+bool CopyPlainTriangles(const Id* connectivity, vtkIdType numTriangles, vtkIdType numPoints,
+                        vtkIdType firstCell, int threads, TriangleSoup& soup)
+{
+  const size_t nt = static_cast<size_t>(numTriangles);
+  threads = colordecimation::ThreadsFor(nt, threads, 65536);
+  std::vector<uint8_t> plain(static_cast<size_t>(threads), 1);
+  uint8_t* flags = plain.data();
+  colordecimation::ParallelFor(nt, threads,
+                               [connectivity, numPoints, flags](size_t begin, size_t end, int t)
+                               {
+                                 bool ok = true;
+                                 for (size_t f = begin; f < end; ++f)
+                                 {
+                                   const Id a = connectivity[3 * f], b = connectivity[3 * f + 1],
+                                            c = connectivity[3 * f + 2];
+                                   ok &= a >= 0 && a < numPoints && b >= 0 && b < numPoints &&
+                                     c >= 0 && c < numPoints && a != b && b != c && a != c;
+                                 }
+                                 flags[t] = ok ? 1 : 0;
+                               });
+  if (std::find(plain.begin(), plain.end(), 0) != plain.end())
+  {
+    return false;
+  }
+  soup.Triangles.resize(3 * nt);
+  soup.SourceCell.resize(nt);
+  int32_t* triangles = soup.Triangles.data();
+  vtkIdType* sources = soup.SourceCell.data();
+  colordecimation::ParallelFor(
+    nt, threads,
+    [connectivity, triangles, sources, firstCell](size_t begin, size_t end, int)
+    {
+      for (size_t i = 3 * begin; i < 3 * end; ++i)
+      {
+        triangles[i] = static_cast<int32_t>(connectivity[i]);
+      }
+      for (size_t f = begin; f < end; ++f)
+      {
+        sources[f] = firstCell + static_cast<vtkIdType>(f);
+      }
+    });
+  return true;
+}
+
+void ExtractTriangles(vtkPolyData* input, TriangleSoup& soup, int threads)
 {
   const vtkIdType numPoints = input->GetNumberOfPoints();
   soup.Fixed.assign(numPoints, 0);
@@ -127,6 +180,20 @@ void ExtractTriangles(vtkPolyData* input, TriangleSoup& soup)
     }
   }
   const vtkIdType polyOffset = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  vtkCellArray* polyCells = input->GetPolys();
+  if (!cellGhosts && input->GetNumberOfStrips() == 0 && polyCells->GetNumberOfCells() > 0 &&
+      polyCells->IsHomogeneous() == 3)
+  {
+    const vtkIdType nt = polyCells->GetNumberOfCells();
+    if (polyCells->IsStorage64Bit()
+          ? CopyPlainTriangles(polyCells->GetConnectivityArray64()->GetPointer(0), nt, numPoints,
+                               polyOffset, threads, soup)
+          : CopyPlainTriangles(polyCells->GetConnectivityArray32()->GetPointer(0), nt, numPoints,
+                               polyOffset, threads, soup))
+    {
+      return;
+    }
+  }
   soup.Triangles.reserve(3 * static_cast<size_t>(input->GetNumberOfPolys()));
   soup.SourceCell.reserve(static_cast<size_t>(input->GetNumberOfPolys()));
 
@@ -257,30 +324,52 @@ vtkIdType FixOpenBoundary(TriangleSoup& soup)
   return fixed;
 }
 
-/// Points as doubles; false if a coordinate is NaN or infinite.
-bool GatherPoints(vtkPoints* points, std::vector<double>& xyz)
+/// Points as doubles (copied on `threads` threads); false if a coordinate is NaN or infinite.
+bool GatherPoints(vtkPoints* points, colordecimation::Buffer<double>& xyz, int threads)
 {
   const vtkIdType n = points->GetNumberOfPoints();
-  xyz.resize(3 * static_cast<size_t>(n));
+  const size_t values = 3 * static_cast<size_t>(n);
+  xyz.resize(values);
+  double* out = xyz.data();
   vtkDataArray* data = points->GetData();
+  const void* source = nullptr;
+  bool isFloat = false;
   if (auto* f = vtkFloatArray::FastDownCast(data))
   {
-    const float* src = f->GetPointer(0);
-    std::copy(src, src + 3 * n, xyz.begin());
+    source = f->GetPointer(0);
+    isFloat = true;
   }
   else if (auto* d = vtkDoubleArray::FastDownCast(data))
   {
-    const double* src = d->GetPointer(0);
-    std::copy(src, src + 3 * n, xyz.begin());
+    source = d->GetPointer(0);
   }
   else
   {
     for (vtkIdType i = 0; i < n; ++i)
     {
-      points->GetPoint(i, &xyz[3 * i]);
+      points->GetPoint(i, out + 3 * i);
     }
   }
-  return std::all_of(xyz.begin(), xyz.end(), [](double x) { return std::isfinite(x); });
+  threads = colordecimation::ThreadsFor(values, threads, 1 << 18);
+  std::vector<uint8_t> finite(static_cast<size_t>(threads), 1);
+  uint8_t* flags = finite.data();
+  colordecimation::ParallelFor(values, threads,
+                               [source, isFloat, out, flags](size_t begin, size_t end, int t)
+                               {
+                                 if (source && isFloat)
+                                 {
+                                   std::copy(static_cast<const float*>(source) + begin,
+                                             static_cast<const float*>(source) + end, out + begin);
+                                 }
+                                 else if (source)
+                                 {
+                                   std::copy(static_cast<const double*>(source) + begin,
+                                             static_cast<const double*>(source) + end, out + begin);
+                                 }
+                                 flags[t] = std::all_of(out + begin, out + end,
+                                                        [](double x) { return std::isfinite(x); });
+                               });
+  return std::find(finite.begin(), finite.end(), 0) == finite.end();
 }
 
 /**
@@ -519,15 +608,15 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
     return 1;
   }
 
-  std::vector<double> xyz;
-  if (!GatherPoints(input->GetPoints(), xyz))
+  colordecimation::Buffer<double> xyz;
+  if (!GatherPoints(input->GetPoints(), xyz, this->NumberOfThreads))
   {
     vtkErrorMacro(<< "The input has NaN or infinite point coordinates; output is empty.");
     return 1;
   }
 
   TriangleSoup soup;
-  ExtractTriangles(input, soup);
+  ExtractTriangles(input, soup, this->NumberOfThreads);
   if (soup.IdsOutOfRange)
   {
     vtkErrorMacro(<< "The input has cells with point ids outside [0, " << numPoints

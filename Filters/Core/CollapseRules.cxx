@@ -205,16 +205,17 @@ CollapseVerdict CollapseRules::CheckFan(const HalfEdgeMesh& mesh, const float* p
 }
 
 void CollapseRules::ComputeReferenceNormals(const HalfEdgeMesh& mesh, const float* positions,
-                                            int stride, std::vector<float>& normals, int threads)
+                                            int stride, Buffer<float>& normals, int threads)
 {
   const int32_t numFaces = mesh.GetNumberOfFaceSlots();
-  normals.assign(3 * static_cast<size_t>(numFaces), 0.0f);
+  normals.resize(3 * static_cast<size_t>(numFaces)); // every slot written below
   float* out = normals.data();
   ParallelFor(static_cast<size_t>(numFaces), threads,
               [&mesh, positions, stride, out](size_t begin, size_t end, int)
               {
                 for (auto f = static_cast<int32_t>(begin); f < static_cast<int32_t>(end); ++f)
                 {
+                  std::fill_n(out + 3 * static_cast<size_t>(f), 3, 0.0f);
                   if (!mesh.IsFaceAlive(f))
                   {
                     continue;

@@ -20,6 +20,7 @@
 #ifndef colordecimation_CollapseRules_h
 #define colordecimation_CollapseRules_h
 
+#include "Buffer.h"
 #include "vtkColorDecimationModule.h" // for export macro
 
 #include <cstdint>
@@ -76,7 +77,7 @@ public:
    * threads (each face is computed alone: the same result for any number).
    */
   static void ComputeReferenceNormals(const HalfEdgeMesh& mesh, const float* positions, int stride,
-                                      std::vector<float>& normals, int threads = 1);
+                                      Buffer<float>& normals, int threads = 1);
 
   /**
    * Full check of v0 -> v1. The position of vertex v is positions[stride * v + 0..2] (so that

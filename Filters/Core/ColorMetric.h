@@ -182,6 +182,13 @@ VTKCOLORDECIMATION_EXPORT void InitializeVertexMetrics(const HalfEdgeMesh& mesh,
                                                        int positionStride = 3, int colorStride = 3,
                                                        double boundaryWeight = 0.0,
                                                        int threads = 1);
+/// The same into metrics[0, mesh.GetNumberOfVertices()), every record written (the threads
+/// clear their own first, so that a fresh array is first touched by all of them).
+VTKCOLORDECIMATION_EXPORT void InitializeVertexMetrics(const HalfEdgeMesh& mesh,
+                                                       const float* positions, const float* colors,
+                                                       VertexMetric* metrics, int positionStride,
+                                                       int colorStride, double boundaryWeight,
+                                                       int threads);
 
 } // namespace colordecimation
 

@@ -137,10 +137,10 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   // copies of its arrays, and mapped back to its own ids at the end.
   DecimatorInput input = original;
   SpatialOrder order;
-  std::vector<double> points;
-  std::vector<float> colors;
-  std::vector<int32_t> triangles;
-  std::vector<uint8_t> fixed;
+  Buffer<double> points;
+  Buffer<float> colors;
+  Buffer<int32_t> triangles;
+  Buffer<uint8_t> fixed;
   const bool large = original.NumberOfPoints >= LargeMeshVertices;
   if (this->Options.Renumber && large)
   {
@@ -236,9 +236,10 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   else
   {
     this->ColorQuadrics.clear();
+    this->Metrics.resize(size_t(n)); // written by the threads
     InitializeVertexMetrics(this->Mesh, this->Positions(),
-                            this->UseColor ? this->Hot[0].C : nullptr, this->Metrics, HotStride,
-                            HotStride, std::max(this->Options.BoundaryWeight, 0.0),
+                            this->UseColor ? this->Hot[0].C : nullptr, this->Metrics.data(),
+                            HotStride, HotStride, std::max(this->Options.BoundaryWeight, 0.0),
                             this->ThreadCount(3 * size_t(input.NumberOfTriangles)));
   }
 
@@ -249,10 +250,10 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   this->Main.Rules.SetReferenceNormals(this->ReferenceNormals.data());
   // The renumbered copies of the input, if any, are no longer needed: everything below reads
   // the mesh, the hot records and the metric state.
-  points = std::vector<double>();
-  colors = std::vector<float>();
-  triangles = std::vector<int32_t>();
-  fixed = std::vector<uint8_t>();
+  points = Buffer<double>();
+  colors = Buffer<float>();
+  triangles = Buffer<int32_t>();
+  fixed = Buffer<uint8_t>();
   order.NewVertex = std::vector<int32_t>();
   input.Points = nullptr;
   input.Colors = nullptr;
@@ -278,7 +279,7 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   this->Workers.clear();
   this->AnyMoved = std::find(this->Moved.begin(), this->Moved.end(), 1) != this->Moved.end();
   this->Main.Rules.SetReferenceNormals(nullptr);
-  this->ReferenceNormals = std::vector<float>();
+  this->ReferenceNormals = Buffer<float>();
   if (!order.Empty())
   {
     this->RestoreOrder(order);
@@ -305,8 +306,8 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
 }
 
 void Decimator::RenumberInput(const DecimatorInput& original, SpatialOrder& order,
-                              std::vector<double>& points, std::vector<float>& colors,
-                              std::vector<int32_t>& triangles, std::vector<uint8_t>& fixed,
+                              Buffer<double>& points, Buffer<float>& colors,
+                              Buffer<int32_t>& triangles, Buffer<uint8_t>& fixed,
                               DecimatorInput& renumbered, int threads)
 {
   const int32_t n = original.NumberOfPoints;
@@ -377,11 +378,11 @@ void Decimator::RestoreOrder(const SpatialOrder& order)
   if (!this->Options.KeepVertexState)
   {
     // What the output needs: the moved vertices' points and colours (hot records).
-    this->Metrics = std::vector<VertexMetric>();
+    this->Metrics = Buffer<VertexMetric>();
     this->ColorQuadrics = std::vector<ColorQuadric>();
     if (!this->AnyMoved)
     {
-      this->Hot = std::vector<HotVertex>();
+      this->Hot = Buffer<HotVertex>();
     }
   }
   restore(this->Hot);

@@ -210,7 +210,7 @@ public:
   const HalfEdgeMesh& GetMesh() const { return this->Mesh; }
   /// The per-vertex state of HalfEdgeColor and Geometry (empty with ColorQuadric, or without
   /// KeepVertexState).
-  const std::vector<VertexMetric>& GetMetrics() const { return this->Metrics; }
+  const Buffer<VertexMetric>& GetMetrics() const { return this->Metrics; }
   /// The per-vertex state of ColorQuadric (each centred at its vertex's point of R^6).
   const std::vector<ColorQuadric>& GetColorQuadrics() const { return this->ColorQuadrics; }
 
@@ -369,8 +369,8 @@ private:
   /// The input in spatial order: renumbered copies of its arrays (made on `threads` threads),
   /// and `renumbered` on them.
   static void RenumberInput(const DecimatorInput& original, SpatialOrder& order,
-                            std::vector<double>& points, std::vector<float>& colors,
-                            std::vector<int32_t>& triangles, std::vector<uint8_t>& fixed,
+                            Buffer<double>& points, Buffer<float>& colors,
+                            Buffer<int32_t>& triangles, Buffer<uint8_t>& fixed,
                             DecimatorInput& renumbered, int threads);
   /// Map the decimated mesh and the per-vertex state back to the input's ids.
   void RestoreOrder(const SpatialOrder& order);
@@ -418,16 +418,16 @@ private:
   std::vector<ColorQuadric> ColorQuadrics;
   std::vector<uint8_t> Moved;
   bool AnyMoved = false;
-  Workspace Main;                      ///< the calling thread's
-  std::vector<Workspace> Workers;      ///< the other threads' (during Run only)
-  int ThreadsUsed = 1;                 ///< the most threads EvaluateAll started in this Run
-  int CollapseThreadsUsed = 1;         ///< the most threads CollapseBlocks started in this Run
-  int WideCollapseThreadsUsed = 1;     ///< the same, on wide blocks
-  std::vector<float> ReferenceNormals; ///< the input normal of every face slot (CollapseRules)
+  Workspace Main;                  ///< the calling thread's
+  std::vector<Workspace> Workers;  ///< the other threads' (during Run only)
+  int ThreadsUsed = 1;             ///< the most threads EvaluateAll started in this Run
+  int CollapseThreadsUsed = 1;     ///< the most threads CollapseBlocks started in this Run
+  int WideCollapseThreadsUsed = 1; ///< the same, on wide blocks
+  Buffer<float> ReferenceNormals;  ///< the input normal of every face slot (CollapseRules)
   HalfEdgeMesh Mesh;
-  std::vector<HotVertex> Hot;
+  Buffer<HotVertex> Hot;
   bool UseColor = false;
-  std::vector<VertexMetric> Metrics;
+  Buffer<VertexMetric> Metrics;
   VertexHeap Heap;
   std::vector<int32_t> Best;    ///< vertex -> its chosen target, -1 if none
   std::vector<uint8_t> Bounded; ///< vertex -> its heap key is a lower bound, to be made exact

@@ -27,27 +27,21 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
   this->Flags.assign(numVertices, 0);
   this->LiveFaces = numTriangles;
 
-  // Outgoing half-edges of each vertex, in compressed rows (counting sort on the origin).
-  std::vector<int32_t> offsets(static_cast<size_t>(numVertices) + 1, 0);
-  for (int32_t h = 0; h < numHalfEdges; ++h)
-  {
-    ++offsets[this->Corners[h].Vertex + 1];
-  }
-  for (int32_t v = 0; v < numVertices; ++v)
-  {
-    offsets[v + 1] += offsets[v];
-  }
-  // Their targets alongside, so that pairing scans two short contiguous rows.
-  std::vector<int32_t> outgoing(numHalfEdges), targets(numHalfEdges);
-  {
-    std::vector<int32_t> fill(offsets.begin(), offsets.end() - 1);
-    for (int32_t h = 0; h < numHalfEdges; ++h)
+  // Outgoing half-edges of each vertex, in compressed rows (counting sort on the origin), with
+  // their targets alongside, so that pairing scans two short contiguous rows.
+  std::vector<int32_t> offsets;
+  Buffer<int32_t> outgoing(numHalfEdges), targets(numHalfEdges); // each slot filled once
+  int32_t* rowOutgoing = outgoing.data();
+  int32_t* rowTarget = targets.data();
+  CountingSort(
+    static_cast<size_t>(numHalfEdges), static_cast<size_t>(numVertices), threads,
+    [corners](size_t h) { return corners[h].Vertex; },
+    [this, rowOutgoing, rowTarget](size_t h, int32_t k)
     {
-      const int32_t k = fill[this->Corners[h].Vertex]++;
-      outgoing[k] = h;
-      targets[k] = this->Target(h);
-    }
-  }
+      rowOutgoing[k] = static_cast<int32_t>(h);
+      rowTarget[k] = this->Target(static_cast<int32_t>(h));
+    },
+    offsets);
 
   // Pair twins. An edge is manifold when it has exactly one half-edge each way. Each
   // half-edge writes its own twin only: the half-edges are shared among threads, and what

@@ -32,6 +32,7 @@
 #ifndef colordecimation_HalfEdgeMesh_h
 #define colordecimation_HalfEdgeMesh_h
 
+#include "Buffer.h"
 #include "Prefetch.h"
 #include "vtkColorDecimationModule.h" // for export macro
 
@@ -218,7 +219,7 @@ private:
     int32_t Vertex; ///< -1 for deleted faces
     int32_t Twin;   ///< twin half-edge, -1 on boundaries
   };
-  std::vector<Corner> Corners;
+  Buffer<Corner> Corners;
   std::vector<int32_t> Out;   ///< vertex -> one outgoing half-edge, -1 if it has none
   std::vector<uint8_t> Flags; ///< VertexFlag bits
   int64_t LiveFaces = 0;

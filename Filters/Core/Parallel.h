@@ -92,6 +92,55 @@ void CollectInOrder(size_t count, int threads, const Make& make, std::vector<T>&
   }
 }
 
+/**
+ * Stable counting sort of the items [0, count) by key(i) in [0, buckets), on `threads` threads:
+ * place(i, slot) is called once for each item with its slot in the sorted order, and
+ * `offsets` receives where each bucket starts (buckets + 1 values). Each thread counts, then
+ * places, its own contiguous range of items; the slots are the same whatever the number of
+ * threads (within a bucket, the items keep their order).
+ */
+template <typename Index, typename Key, typename Place>
+void CountingSort(size_t count, size_t buckets, int threads, const Key& key, const Place& place,
+                  std::vector<Index>& offsets)
+{
+  threads = std::max(threads, 1);
+  std::vector<Index> counters(static_cast<size_t>(threads) * buckets, 0);
+  Index* counts = counters.data();
+  ParallelFor(count, threads,
+              [counts, buckets, key](size_t begin, size_t end, int t)
+              {
+                Index* mine = counts + static_cast<size_t>(t) * buckets;
+                for (size_t i = begin; i < end; ++i)
+                {
+                  ++mine[key(i)];
+                }
+              });
+  // Each thread's counters become where its next item of each bucket goes.
+  offsets.assign(buckets + 1, 0);
+  Index running = 0;
+  for (size_t b = 0; b < buckets; ++b)
+  {
+    offsets[b] = running;
+    for (int t = 0; t < threads; ++t)
+    {
+      Index& c = counts[static_cast<size_t>(t) * buckets + b];
+      const Index n = c;
+      c = running;
+      running += n;
+    }
+  }
+  offsets[buckets] = running;
+  ParallelFor(count, threads,
+              [counts, buckets, key, place](size_t begin, size_t end, int t)
+              {
+                Index* next = counts + static_cast<size_t>(t) * buckets;
+                for (size_t i = begin; i < end; ++i)
+                {
+                  place(i, next[key(i)]++);
+                }
+              });
+}
+
 } // namespace colordecimation
 
 #endif

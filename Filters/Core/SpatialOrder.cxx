@@ -1,5 +1,6 @@
 #include "SpatialOrder.h"
 
+#include "Buffer.h"
 #include "Parallel.h"
 
 #include <algorithm>
@@ -62,7 +63,7 @@ void ComputeSpatialOrder(int32_t numVertices, const double* points, int32_t numT
 
   // Vertices: LSD radix sort of (code, vertex) pairs, 10 bits of the code per pass (stable:
   // equal codes keep the vertices' order).
-  std::vector<uint64_t> current(n), next(n);
+  Buffer<uint64_t> current(n), next(n); // every slot written by each pass
   uint64_t* pairs = current.data();
   const double box[3] = { lo[0], lo[1], lo[2] };
   ParallelFor(n, threads,
@@ -73,21 +74,14 @@ void ComputeSpatialOrder(int32_t numVertices, const double* points, int32_t numT
                   pairs[v] = (uint64_t(MortonCode(points + 3 * v, box, extent)) << 32) | v;
                 }
               });
+  std::vector<size_t> digitStart;
   for (int shift = 32; shift < 62; shift += 10)
   {
-    size_t count[1025] = {};
-    for (size_t i = 0; i < n; ++i)
-    {
-      ++count[((current[i] >> shift) & 0x3ff) + 1];
-    }
-    for (int b = 0; b < 1024; ++b)
-    {
-      count[b + 1] += count[b];
-    }
-    for (size_t i = 0; i < n; ++i)
-    {
-      next[count[(current[i] >> shift) & 0x3ff]++] = current[i];
-    }
+    const uint64_t* from = current.data();
+    uint64_t* into = next.data();
+    CountingSort(
+      n, 1024, threads, [from, shift](size_t i) { return (from[i] >> shift) & 0x3ff; },
+      [from, into](size_t i, size_t slot) { into[slot] = from[i]; }, digitStart);
     current.swap(next);
   }
   order.OldVertex.resize(n);
@@ -106,7 +100,7 @@ void ComputeSpatialOrder(int32_t numVertices, const double* points, int32_t numT
               });
 
   // Triangles: counting sort on their smallest renumbered vertex.
-  std::vector<int32_t> key(nt);
+  Buffer<int32_t> key(nt); // every slot written below
   int32_t* keys = key.data();
   ParallelFor(nt, threads,
               [keys, triangles, newVertex](size_t begin, size_t end, int)
@@ -117,20 +111,12 @@ void ComputeSpatialOrder(int32_t numVertices, const double* points, int32_t numT
                   keys[f] = std::min({ newVertex[t[0]], newVertex[t[1]], newVertex[t[2]] });
                 }
               });
-  std::vector<size_t> start(n + 1, 0);
-  for (size_t f = 0; f < nt; ++f)
-  {
-    ++start[key[f] + 1];
-  }
-  for (size_t v = 0; v < n; ++v)
-  {
-    start[v + 1] += start[v];
-  }
-  order.OldFace.assign(nt, -1);
-  for (size_t f = 0; f < nt; ++f)
-  {
-    order.OldFace[start[key[f]]++] = static_cast<int32_t>(f);
-  }
+  order.OldFace.resize(nt);
+  int32_t* oldFace = order.OldFace.data();
+  std::vector<int32_t> faceStart;
+  CountingSort(
+    nt, n, threads, [keys](size_t f) { return keys[f]; },
+    [oldFace](size_t f, int32_t slot) { oldFace[slot] = static_cast<int32_t>(f); }, faceStart);
 }
 
 } // namespace colordecimation

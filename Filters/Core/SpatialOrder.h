@@ -59,11 +59,11 @@ VTKCOLORDECIMATION_EXPORT void ComputeSpatialOrder(int32_t numVertices, const do
  * times slower), shared among `threads` threads. The caller frees what it can before, so
  * that the copy fits in what it freed.
  */
-template <typename T>
-void Permute(std::vector<T>& values, int64_t count, const int32_t* to, int block = 1,
-             int threads = 1)
+template <typename Vector>
+void Permute(Vector& values, int64_t count, const int32_t* to, int block = 1, int threads = 1)
 {
-  std::vector<T> moved(values.size());
+  using T = typename Vector::value_type;
+  Vector moved(values.size()); // a Buffer's is left unwritten: every slot is filled below
   const T* from = values.data();
   T* into = moved.data();
   ParallelFor(static_cast<size_t>(std::max<int64_t>(count, 0)), threads,
