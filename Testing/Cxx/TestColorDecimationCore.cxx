@@ -6,6 +6,7 @@
 #include "ColorMetric.h"
 #include "Decimator.h"
 #include "HalfEdgeMesh.h"
+#include "Parallel.h"
 #include "Quadric.h"
 #include "Selection.h"
 #include "SpatialOrder.h"
@@ -22,6 +23,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <random>
 #include <set>
 
@@ -569,6 +571,53 @@ void TestBatchSelection()
       same = out[i].Vertex == expected[i].Vertex && out[i].Key == expected[i].Key;
     }
     CD_CHECK_MSG(same, "a list of vertices, threads " << threads);
+  }
+}
+
+void TestCountingSort()
+{
+  // CountingSort against std::stable_sort, on 1 to 3 threads: every item placed once, in key
+  // order, equal keys in item order, and the buckets' offsets. Keys with empty buckets and
+  // with many repeats; counts smaller than the number of threads.
+  std::mt19937 rng(2024);
+  for (const size_t count : { size_t(0), size_t(2), size_t(1000), size_t(50000) })
+  {
+    for (const size_t buckets : { size_t(1), size_t(7), size_t(5000) })
+    {
+      std::uniform_int_distribution<int32_t> pick(0, static_cast<int32_t>(buckets) - 1);
+      std::vector<int32_t> keys(count);
+      for (int32_t& k : keys)
+      {
+        k = pick(rng) / 2; // the upper half of the buckets stays empty
+      }
+      std::vector<int32_t> expected(count);
+      std::iota(expected.begin(), expected.end(), 0);
+      std::stable_sort(expected.begin(), expected.end(),
+                       [&keys](int32_t a, int32_t b) { return keys[a] < keys[b]; });
+      for (int threads = 1; threads <= 3; ++threads)
+      {
+        std::vector<int32_t> sorted(count, -1);
+        std::vector<int32_t> offsets;
+        int32_t* into = sorted.data();
+        const int32_t* key = keys.data();
+        CountingSort(
+          count, buckets, threads, [key](size_t i) { return key[i]; },
+          [into](size_t i, int32_t slot) { into[slot] = static_cast<int32_t>(i); }, offsets);
+        CD_CHECK_MSG(sorted == expected,
+                     "order, count " << count << " buckets " << buckets << " threads " << threads);
+        bool rows = offsets.size() == buckets + 1 && offsets.front() == 0 &&
+          offsets.back() == static_cast<int32_t>(count);
+        for (size_t b = 0; rows && b < buckets; ++b)
+        {
+          const auto first =
+            std::lower_bound(expected.begin(), expected.end(), int32_t(b),
+                             [&keys](int32_t i, int32_t k) { return keys[i] < k; });
+          rows = offsets[b] == static_cast<int32_t>(first - expected.begin());
+        }
+        CD_CHECK_MSG(
+          rows, "offsets, count " << count << " buckets " << buckets << " threads " << threads);
+      }
+    }
   }
 }
 
@@ -1697,6 +1746,7 @@ int main(int argc, char* argv[])
                         { "CollapseCostFrame", TestCollapseCostFrame },
                         { "VertexHeap", TestVertexHeap },
                         { "BatchSelection", TestBatchSelection },
+                        { "CountingSort", TestCountingSort },
                         { "HighValenceBound", TestHighValenceBound },
                         { "HalfEdgeBuildClosed", TestHalfEdgeBuildClosed },
                         { "HalfEdgeBuildOpen", TestHalfEdgeBuildOpen },
