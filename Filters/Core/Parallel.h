@@ -93,8 +93,8 @@ void CollectInOrder(size_t count, int threads, const Make& make, std::vector<T>&
 }
 
 /**
- * Stable counting sort of the items [0, count) by key(i) in [0, buckets), on `threads` threads:
- * place(i, slot) is called once for each item with its slot in the sorted order, and
+ * Stable counting sort of the items [0, count) by key(i) in [0, buckets), on up to `threads`
+ * threads: place(i, slot) is called once for each item with its slot in the sorted order, and
  * `offsets` receives where each bucket starts (buckets + 1 values). Each thread counts, then
  * places, its own contiguous range of items; the slots are the same whatever the number of
  * threads (within a bucket, the items keep their order).
@@ -103,7 +103,10 @@ template <typename Index, typename Key, typename Place>
 void CountingSort(size_t count, size_t buckets, int threads, const Key& key, const Place& place,
                   std::vector<Index>& offsets)
 {
-  threads = std::max(threads, 1);
+  // Each thread counts into its own row of `buckets` counters: no more threads than keep those
+  // rows within four counters per item.
+  const size_t rows = std::max<size_t>(1, 4 * count / std::max<size_t>(buckets, 1));
+  threads = static_cast<int>(std::min<size_t>(static_cast<size_t>(std::max(threads, 1)), rows));
   std::vector<Index> counters(static_cast<size_t>(threads) * buckets, 0);
   Index* counts = counters.data();
   ParallelFor(count, threads,
