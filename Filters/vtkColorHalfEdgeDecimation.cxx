@@ -123,22 +123,21 @@ bool CopyPlainTriangles(const Id* connectivity, vtkIdType numTriangles, vtkIdTyp
 {
   const size_t nt = static_cast<size_t>(numTriangles);
   threads = colordecimation::ThreadsFor(nt, threads, 65536);
-  std::vector<uint8_t> plain(static_cast<size_t>(threads), 1);
-  uint8_t* flags = plain.data();
-  colordecimation::ParallelFor(nt, threads,
-                               [connectivity, numPoints, flags](size_t begin, size_t end, int t)
-                               {
-                                 bool ok = true;
-                                 for (size_t f = begin; f < end; ++f)
+  const bool plain =
+    colordecimation::ParallelAll(nt, threads,
+                                 [connectivity, numPoints](size_t begin, size_t end)
                                  {
-                                   const Id a = connectivity[3 * f], b = connectivity[3 * f + 1],
-                                            c = connectivity[3 * f + 2];
-                                   ok &= a >= 0 && a < numPoints && b >= 0 && b < numPoints &&
-                                     c >= 0 && c < numPoints && a != b && b != c && a != c;
-                                 }
-                                 flags[t] = ok ? 1 : 0;
-                               });
-  if (std::find(plain.begin(), plain.end(), 0) != plain.end())
+                                   bool ok = true;
+                                   for (size_t f = begin; f < end; ++f)
+                                   {
+                                     const Id a = connectivity[3 * f], b = connectivity[3 * f + 1],
+                                              c = connectivity[3 * f + 2];
+                                     ok &= a >= 0 && a < numPoints && b >= 0 && b < numPoints &&
+                                       c >= 0 && c < numPoints && a != b && b != c && a != c;
+                                   }
+                                   return ok;
+                                 });
+  if (!plain)
   {
     return false;
   }
@@ -350,26 +349,22 @@ bool GatherPoints(vtkPoints* points, colordecimation::Buffer<double>& xyz, int t
       points->GetPoint(i, out + 3 * i);
     }
   }
-  threads = colordecimation::ThreadsFor(values, threads, 1 << 18);
-  std::vector<uint8_t> finite(static_cast<size_t>(threads), 1);
-  uint8_t* flags = finite.data();
-  colordecimation::ParallelFor(values, threads,
-                               [source, isFloat, out, flags](size_t begin, size_t end, int t)
-                               {
-                                 if (source && isFloat)
-                                 {
-                                   std::copy(static_cast<const float*>(source) + begin,
-                                             static_cast<const float*>(source) + end, out + begin);
-                                 }
-                                 else if (source)
-                                 {
-                                   std::copy(static_cast<const double*>(source) + begin,
-                                             static_cast<const double*>(source) + end, out + begin);
-                                 }
-                                 flags[t] = std::all_of(out + begin, out + end,
-                                                        [](double x) { return std::isfinite(x); });
-                               });
-  return std::find(finite.begin(), finite.end(), 0) == finite.end();
+  return colordecimation::ParallelAll(
+    values, colordecimation::ThreadsFor(values, threads, 1 << 18),
+    [source, isFloat, out](size_t begin, size_t end)
+    {
+      if (source && isFloat)
+      {
+        std::copy(static_cast<const float*>(source) + begin,
+                  static_cast<const float*>(source) + end, out + begin);
+      }
+      else if (source)
+      {
+        std::copy(static_cast<const double*>(source) + begin,
+                  static_cast<const double*>(source) + end, out + begin);
+      }
+      return std::all_of(out + begin, out + end, [](double x) { return std::isfinite(x); });
+    });
 }
 
 /**

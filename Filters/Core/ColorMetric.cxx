@@ -166,9 +166,10 @@ void InitializeVertexMetrics(const HalfEdgeMesh& mesh, const float* positions, c
                              double boundaryWeight, int threads)
 {
   const int32_t numVertices = mesh.GetNumberOfVertices();
-  // Each thread owns a range of vertices and walks all faces and edges in their order, adding
-  // to its own vertices only: every vertex sees the same sums in the same order as with one
-  // thread. (In the spatial order most faces have all their corners in one range.)
+  // Each thread owns a range of vertices and walks the faces and edges in their order (those
+  // that may touch its vertices), adding to its own vertices only: every vertex sees the same
+  // sums in the same order as with one thread. (In the spatial order most faces have all their
+  // corners in one range.)
   const int32_t numFaces = mesh.GetNumberOfFaceSlots();
   const int32_t numHalfEdges = 3 * numFaces;
   // With several threads, the faces in chunks with the range of vertex ids each chunk uses:

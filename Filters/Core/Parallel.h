@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <thread>
 #include <vector>
 
@@ -60,6 +61,22 @@ void ParallelFor(size_t count, int threads, Body&& body)
   {
     thread.join();
   }
+}
+
+/**
+ * Whether body(begin, end) returns true for every one of the `threads` ranges splitting
+ * [0, count), run as ParallelFor runs them (every range is run, whatever the others return).
+ */
+template <typename Body>
+bool ParallelAll(size_t count, int threads, const Body& body)
+{
+  threads = std::max(threads, 1);
+  std::vector<uint8_t> results(static_cast<size_t>(threads), 1);
+  uint8_t* result = results.data();
+  ParallelFor(count, threads,
+              [result, body](size_t begin, size_t end, int t)
+              { result[t] = body(begin, end) ? 1 : 0; });
+  return std::find(results.begin(), results.end(), 0) == results.end();
 }
 
 /**
