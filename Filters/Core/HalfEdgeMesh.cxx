@@ -43,9 +43,13 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
     },
     offsets);
 
-  // Pair twins. An edge is manifold when it has exactly one half-edge each way. Each
-  // half-edge writes its own twin only: the half-edges are shared among threads, and what
-  // else they find (edges to count, vertices to lock) is gathered afterwards.
+  // Pair twins. An edge is manifold when it has exactly one half-edge each way. Each thread
+  // takes a range of vertices a and, for their half-edges a -> b with a < b, counts those of
+  // the edge each way; when there is one each way it pairs them (writing both twins: no other
+  // half-edge pairs these). Then each takes a range of half-edges and, for those a -> b with
+  // a > b left unpaired, counts them too (a boundary or non-manifold edge). A non-manifold edge
+  // is counted by its smallest half-edge. What the threads find (edges to count, vertices to
+  // lock) is gathered afterwards.
   struct PairingResult
   {
     int64_t BoundaryEdges = 0, NonManifoldEdges = 0;
@@ -56,51 +60,79 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
   const int32_t* rowHalfEdges = outgoing.data();
   const int32_t* rowTargets = targets.data();
   PairingResult* results = found.data();
-  ParallelFor(static_cast<size_t>(numHalfEdges), threads,
-              [this, rows, rowHalfEdges, rowTargets, results](size_t begin, size_t end, int t)
+  // Looks at h = a -> b: pairs it with its twin, or reports it.
+  const auto pair = [corners, rows, rowHalfEdges, rowTargets](int32_t h, int32_t a, int32_t b,
+                                                              PairingResult& result)
+  {
+    int32_t forward = 0, backward = 0, twin = -1, smallest = h;
+    for (int32_t k = rows[a]; k < rows[a + 1]; ++k)
+    {
+      if (rowTargets[k] == b)
+      {
+        ++forward;
+        smallest = std::min(smallest, rowHalfEdges[k]);
+      }
+    }
+    for (int32_t k = rows[b]; k < rows[b + 1]; ++k)
+    {
+      if (rowTargets[k] == a)
+      {
+        ++backward;
+        twin = rowHalfEdges[k];
+        smallest = std::min(smallest, rowHalfEdges[k]);
+      }
+    }
+    if (forward == 1 && backward == 1)
+    {
+      corners[h].Twin = twin;
+      corners[twin].Twin = h;
+    }
+    else if (forward == 1 && backward == 0)
+    {
+      ++result.BoundaryEdges;
+    }
+    else
+    {
+      result.ToLock.push_back(a);
+      result.ToLock.push_back(b);
+      if (smallest == h)
+      {
+        ++result.NonManifoldEdges;
+      }
+    }
+  };
+  ParallelFor(static_cast<size_t>(numVertices), threads,
+              [rows, rowHalfEdges, rowTargets, results, pair](size_t begin, size_t end, int t)
               {
-                PairingResult result; // on this thread's stack, copied out at the end
-                for (int32_t h = static_cast<int32_t>(begin); h < static_cast<int32_t>(end); ++h)
+                PairingResult& result = results[t];
+                for (auto a = static_cast<int32_t>(begin); a < static_cast<int32_t>(end); ++a)
                 {
-                  const int32_t a = this->Corners[h].Vertex;
-                  const int32_t b = this->Target(h);
-                  int32_t forward = 0, backward = 0, twin = -1, smallest = h;
-                  for (int32_t k = rows[a]; k < rows[a + 1]; ++k)
+                  for (int32_t i = rows[a]; i < rows[a + 1]; ++i)
                   {
-                    if (rowTargets[k] == b)
+                    if (a < rowTargets[i])
                     {
-                      ++forward;
-                      smallest = std::min(smallest, rowHalfEdges[k]);
-                    }
-                  }
-                  for (int32_t k = rows[b]; k < rows[b + 1]; ++k)
-                  {
-                    if (rowTargets[k] == a)
-                    {
-                      ++backward;
-                      twin = rowHalfEdges[k];
-                      smallest = std::min(smallest, rowHalfEdges[k]);
-                    }
-                  }
-                  if (forward == 1 && backward == 1)
-                  {
-                    this->Corners[h].Twin = twin;
-                  }
-                  else if (forward == 1 && backward == 0)
-                  {
-                    ++result.BoundaryEdges;
-                  }
-                  else
-                  {
-                    result.ToLock.push_back(a);
-                    result.ToLock.push_back(b);
-                    if (smallest == h)
-                    {
-                      ++result.NonManifoldEdges;
+                      pair(rowHalfEdges[i], a, rowTargets[i], result);
                     }
                   }
                 }
-                results[t] = std::move(result);
+              });
+  ParallelFor(static_cast<size_t>(numHalfEdges), threads,
+              [this, corners, results, pair](size_t begin, size_t end, int t)
+              {
+                PairingResult& result = results[t];
+                for (int32_t h = static_cast<int32_t>(begin); h < static_cast<int32_t>(end); ++h)
+                {
+                  if (corners[h].Twin >= 0)
+                  {
+                    continue;
+                  }
+                  const int32_t a = corners[h].Vertex;
+                  const int32_t b = this->Target(h);
+                  if (a >= b)
+                  {
+                    pair(h, a, b, result); // pairs nothing (a repeated id aside): b -> a would have
+                  }
+                }
               });
   for (const PairingResult& result : found)
   {
