@@ -902,7 +902,7 @@ void Decimator::CollapseBlocks(std::vector<Candidate>& batch, const std::vector<
   };
   // A thread is worth it for some thousands of candidates only; either way the blocks are
   // the same, and so is the result.
-  const int threads = this->ThreadCount(batch.size());
+  const int threads = this->ThreadCount(CandidateWork * batch.size());
   int& used = level.FinerFlags != 0 ? this->WideCollapseThreadsUsed : this->CollapseThreadsUsed;
   used = std::max(used, threads);
   this->AddWorkers(threads);
@@ -954,37 +954,65 @@ void Decimator::CollapseBlock(Candidate* begin, Candidate* end, int32_t block,
   }
 }
 
+uint8_t Decimator::NeighborCrossings(int32_t v) const
+{
+  uint8_t crossings = 0;
+  this->Mesh.ForEachNeighbor(
+    v, [this, &crossings, v](int32_t u) { crossings |= this->BlockCrossings(u, v); });
+  return crossings;
+}
+
 void Decimator::FlagInterior(const int32_t* vertices, size_t count, uint8_t flags)
 {
   for (size_t i = 0; i < count; ++i)
   {
     const int32_t v = vertices[i];
-    uint8_t outside = 0; // the flags of the levels where v has a neighbour in another block
-    this->Mesh.ForEachNeighbor(
-      v, [this, &outside, v](int32_t u) { outside |= this->BlockCrossings(u, v); });
-    this->Interior[v] = static_cast<uint8_t>((this->Interior[v] & ~flags) | (flags & ~outside));
+    this->Interior[v] =
+      static_cast<uint8_t>((this->Interior[v] & ~flags) | (flags & ~this->NeighborCrossings(v)));
   }
 }
 
 void Decimator::FlagEveryInterior()
 {
-  // Each edge appears as at least one half-edge: both of its ends learn of a neighbour in
-  // another block. (For a locked vertex this may be stricter than its fan; its flag is
-  // never read.)
+  // Each edge is a side of at least one live face: both of its ends learn of a neighbour in
+  // another block. Few edges cross blocks: the threads list those ends, each for its own range
+  // of faces, and this thread clears their flags. (For a locked vertex this may be stricter
+  // than its fan; its flag is never read.)
+  const int32_t numFaces = this->Mesh.GetNumberOfFaceSlots();
+  const int threads = this->ThreadCount(3 * static_cast<size_t>(numFaces));
+  std::vector<std::vector<std::pair<int32_t, uint8_t>>> crossed(threads);
+  ParallelFor(static_cast<size_t>(numFaces), threads,
+              [this, &crossed](size_t begin, size_t end, int t)
+              {
+                std::vector<std::pair<int32_t, uint8_t>>& list = crossed[t];
+                for (auto f = static_cast<int32_t>(begin); f < static_cast<int32_t>(end); ++f)
+                {
+                  if (!this->Mesh.IsFaceAlive(f))
+                  {
+                    continue;
+                  }
+                  int32_t ids[3];
+                  this->Mesh.GetFace(f, ids);
+                  for (int k = 0; k < 3; ++k)
+                  {
+                    const int32_t a = ids[k], b = ids[k == 2 ? 0 : k + 1];
+                    const uint8_t crossings = this->BlockCrossings(a, b);
+                    if (crossings != 0)
+                    {
+                      list.emplace_back(a, crossings);
+                      list.emplace_back(b, crossings);
+                    }
+                  }
+                }
+              });
   this->Interior.assign(this->Mesh.GetNumberOfVertices(),
                         this->SmallBlocks.Flag | this->WideBlocks.Flag);
-  const int32_t numHalfEdges = 3 * this->Mesh.GetNumberOfFaceSlots();
-  for (int32_t h = 0; h < numHalfEdges; ++h)
+  for (const auto& list : crossed)
   {
-    const int32_t a = this->Mesh.Origin(h);
-    if (a < 0)
+    for (const auto& crossing : list)
     {
-      continue;
+      this->Interior[crossing.first] &= static_cast<uint8_t>(~crossing.second);
     }
-    const int32_t b = this->Mesh.Target(h);
-    const uint8_t crossings = BlockCrossings(a, b);
-    this->Interior[a] &= static_cast<uint8_t>(~crossings);
-    this->Interior[b] &= static_cast<uint8_t>(~crossings);
   }
 }
 
