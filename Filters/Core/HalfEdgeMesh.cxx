@@ -47,7 +47,7 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
   // takes a range of vertices a and, for their half-edges a -> b with a < b, counts those of
   // the edge each way; when there is one each way it pairs them (writing both twins: no other
   // half-edge pairs these). Then each takes a range of half-edges and, for those a -> b with
-  // a > b left unpaired, counts them too (a boundary or non-manifold edge). A non-manifold edge
+  // a >= b left unpaired, counts them too (a boundary or non-manifold edge). A non-manifold edge
   // is counted by its smallest half-edge. What the threads find (edges to count, vertices to
   // lock) is gathered afterwards.
   struct PairingResult
@@ -104,7 +104,7 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
   ParallelFor(static_cast<size_t>(numVertices), threads,
               [rows, rowHalfEdges, rowTargets, results, pair](size_t begin, size_t end, int t)
               {
-                PairingResult& result = results[t];
+                PairingResult result; // on this thread's stack, copied out at the end
                 for (auto a = static_cast<int32_t>(begin); a < static_cast<int32_t>(end); ++a)
                 {
                   for (int32_t i = rows[a]; i < rows[a + 1]; ++i)
@@ -115,11 +115,12 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
                     }
                   }
                 }
+                results[t] = std::move(result);
               });
   ParallelFor(static_cast<size_t>(numHalfEdges), threads,
               [this, corners, results, pair](size_t begin, size_t end, int t)
               {
-                PairingResult& result = results[t];
+                PairingResult result = std::move(results[t]); // as above
                 for (int32_t h = static_cast<int32_t>(begin); h < static_cast<int32_t>(end); ++h)
                 {
                   if (corners[h].Twin >= 0)
@@ -133,6 +134,7 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
                     pair(h, a, b, result); // pairs nothing (a repeated id aside): b -> a would have
                   }
                 }
+                results[t] = std::move(result);
               });
   for (const PairingResult& result : found)
   {
