@@ -954,21 +954,15 @@ void Decimator::CollapseBlock(Candidate* begin, Candidate* end, int32_t block,
   }
 }
 
-uint8_t Decimator::NeighborCrossings(int32_t v) const
-{
-  uint8_t crossings = 0;
-  this->Mesh.ForEachNeighbor(
-    v, [this, &crossings, v](int32_t u) { crossings |= this->BlockCrossings(u, v); });
-  return crossings;
-}
-
 void Decimator::FlagInterior(const int32_t* vertices, size_t count, uint8_t flags)
 {
   for (size_t i = 0; i < count; ++i)
   {
     const int32_t v = vertices[i];
-    this->Interior[v] =
-      static_cast<uint8_t>((this->Interior[v] & ~flags) | (flags & ~this->NeighborCrossings(v)));
+    uint8_t outside = 0; // the flags of the levels where v has a neighbour in another block
+    this->Mesh.ForEachNeighbor(
+      v, [this, &outside, v](int32_t u) { outside |= this->BlockCrossings(u, v); });
+    this->Interior[v] = static_cast<uint8_t>((this->Interior[v] & ~flags) | (flags & ~outside));
   }
 }
 

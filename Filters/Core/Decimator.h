@@ -339,8 +339,6 @@ private:
                           int shift) const;
   /// Whether every vertex of every face the collapse v0 -> v1 reads or writes is in `block`.
   bool IsInsideBlock(int32_t v0, int32_t v1, int32_t block, const BlockLevel& level) const;
-  /// The flags of the levels where one of v's neighbours lies in another block.
-  uint8_t NeighborCrossings(int32_t v) const;
   /// Interior[v] for every vertex (on several threads): for each level, whether all of v's
   /// neighbours are in v's block.
   void FlagEveryInterior();
