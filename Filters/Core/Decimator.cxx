@@ -142,7 +142,8 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   Buffer<int32_t> triangles;
   Buffer<uint8_t> fixed;
   const bool large = original.NumberOfPoints >= LargeMeshVertices;
-  if (this->Options.Renumber && large)
+  this->Renumbered = this->Options.Renumber && large;
+  if (this->Renumbered)
   {
     this->RenumberInput(original, order, points, colors, triangles, fixed, input,
                         this->ThreadCount(size_t(original.NumberOfPoints)));
@@ -725,6 +726,41 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
   this->SmallBlocks = { shift, 1, 0 };
   this->WideBlocks = { shift + 3, 2, 1 };
   this->FlagEveryInterior();
+  this->BlockFaces.clear();
+  if (this->Renumbered)
+  {
+    // Faces in order of their smallest vertex, none collapsed yet: a binary search each (kept
+    // non-decreasing should a face be out of order, e.g. a degenerate one left empty).
+    const int32_t faces = this->Mesh.GetNumberOfFaceSlots();
+    const HalfEdgeMesh& mesh = this->Mesh;
+    auto smallest = [&mesh](int32_t f)
+    {
+      int32_t ids[3];
+      mesh.GetFace(f, ids);
+      return std::min(ids[0], std::min(ids[1], ids[2]));
+    };
+    const int32_t blocks = (n >> shift) + 1;
+    this->BlockFaces.resize(size_t(blocks) + 1);
+    int32_t first = 0;
+    for (int32_t b = 0; b <= blocks; ++b)
+    {
+      const int64_t v = std::min<int64_t>(int64_t(b) << shift, n);
+      int32_t lo = first, hi = faces;
+      while (lo < hi)
+      {
+        const int32_t mid = lo + (hi - lo) / 2;
+        if (smallest(mid) < v)
+        {
+          lo = mid + 1;
+        }
+        else
+        {
+          hi = mid;
+        }
+      }
+      this->BlockFaces[b] = first = lo;
+    }
+  }
   // Blocks: ranges of 2^Shift ids (neighbours on the surface in the spatial order), fixed
   // partitions, so that the result does not depend on the number of threads.
   std::vector<Candidate> batch, deferred;
@@ -885,6 +921,7 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
   }
   this->Stamp = std::vector<int32_t>();
   this->Interior = std::vector<uint8_t>();
+  this->BlockFaces = std::vector<int32_t>();
 }
 
 void Decimator::CollapseBlocks(std::vector<Candidate>& batch, const std::vector<size_t>& blockStart,
@@ -924,6 +961,7 @@ void Decimator::CollapseBlock(Candidate* begin, Candidate* end, int32_t block,
   std::sort(begin, end); // cost order
   int32_t* stamp = this->Stamp.data();
   const size_t count = static_cast<size_t>(end - begin);
+  this->WarmBlock(block, level, count);
   for (size_t i = 0; i < count; ++i)
   {
     this->PrefetchCandidates(begin, i, count, block, level.Shift);
@@ -1058,6 +1096,38 @@ void Decimator::PrefetchCandidates(const Candidate* candidates, size_t i, size_t
       this->Mesh.PrefetchFirstFace(target);
       COLORDECIMATION_PREFETCH(this->Hot.data() + target);
     }
+  }
+}
+
+void Decimator::WarmBlock(int32_t block, const BlockLevel& level, size_t candidates) const
+{
+  // The candidates come in cost order, and so, in no order the hardware can foresee, do the
+  // two-rings the rules walk: a cold line after another (kitchen scan: some 1100 cycles a
+  // rules check), which the prefetches of PrefetchCandidates, a few records each, only partly
+  // hide. Swept in address order first, the block's records stream in (kitchen scan: the
+  // block phase 0.55 -> 0.48 s, the run 3-6 % faster). The sweep takes the vertex records the
+  // rules and the block test read, and the faces from the block's first to the next block's
+  // (fans reaching back into the block before are partly left out). The metrics, read twice
+  // a collapse, gained nothing (nor did sweeping the re-costed vertices: those come in vertex
+  // order already).
+  const size_t size = size_t(1) << level.Shift;
+  if (this->BlockFaces.empty() || candidates * WarmDensity < size)
+  {
+    return;
+  }
+  const size_t n = size_t(this->Mesh.GetNumberOfVertices());
+  const size_t lo = std::min(size_t(block) * size, n), hi = std::min(lo + size, n);
+  const size_t fine = size_t(level.Shift - this->SmallBlocks.Shift);
+  const size_t last = this->BlockFaces.size() - 1;
+  const int32_t firstFace = this->BlockFaces[std::min(size_t(block) << fine, last)];
+  const int32_t endFace = this->BlockFaces[std::min(size_t(block + 1) << fine, last)];
+  PrefetchRange(this->Hot.data() + lo, this->Hot.data() + hi);
+  this->Mesh.PrefetchFaces(firstFace, endFace);
+  for (size_t v = lo; v < hi; v += 16) // 16 ids to a line
+  {
+    COLORDECIMATION_PREFETCH(this->Best.data() + v);
+    COLORDECIMATION_PREFETCH(this->Stamp.data() + v);
+    this->Mesh.PrefetchVertex(int32_t(v));
   }
 }
 

@@ -292,6 +292,12 @@ private:
   static constexpr size_t CandidateWork = 3;
   /// Batched: how many collapses ahead each prefetch stage works.
   static constexpr size_t FarAhead = 16, MiddleAhead = 8, NearAhead = 4;
+  /// Batched: a block is swept into the cache (WarmBlock) when it has a candidate per this
+  /// many vertex ids at least. Each candidate reads a two-ring of some twenty vertices and
+  /// faces, so that most of the block's lines are read either way (kitchen scan: the blocks
+  /// of the first 11 passes of 28 and some of the next four; sweeping every block measured
+  /// the same, one candidate per 4 ids gained nothing).
+  static constexpr size_t WarmDensity = 16;
   /// Greedy: cost the vertex at the top exactly (exact: over its legal collapses only) and
   /// give it its new key, or take it out of the heap if it has no collapse left.
   void Requeue(int32_t v0, bool exact);
@@ -337,6 +343,9 @@ private:
   /// the records of that block of 2^shift ids only).
   void PrefetchCandidates(const Candidate* candidates, size_t i, size_t count, int32_t block,
                           int shift) const;
+  /// Sweep the records of `block` (its vertices and faces) into the cache ahead of its
+  /// candidates, when it has one per WarmDensity ids at least and BlockFaces is set.
+  void WarmBlock(int32_t block, const BlockLevel& level, size_t candidates) const;
   /// Whether every vertex of every face the collapse v0 -> v1 reads or writes is in `block`.
   bool IsInsideBlock(int32_t v0, int32_t v1, int32_t block, const BlockLevel& level) const;
   /// Interior[v] for every vertex (on several threads): for each level, whether all of v's
@@ -440,6 +449,11 @@ private:
   /// collapse inside a block never changes that level's flag; one across blocks may, either
   /// way, for v0's former neighbours: FlagInterior)
   std::vector<uint8_t> Interior;
+  /// Batched, on a renumbered mesh: BlockFaces[b] is the first face of small block b, i.e.
+  /// the first whose smallest vertex is in it or after it (the faces come in that order,
+  /// SpatialOrder.h); one entry per block and one more. Empty otherwise: no block is swept.
+  std::vector<int32_t> BlockFaces;
+  bool Renumbered = false; ///< Run works on a SpatialOrder copy
 };
 
 } // namespace colordecimation

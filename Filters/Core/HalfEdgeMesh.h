@@ -81,6 +81,12 @@ public:
     COLORDECIMATION_PREFETCH(this->Out.data() + v);
     COLORDECIMATION_PREFETCH(this->Flags.data() + v);
   }
+  /// Hint that the faces [firstFace, lastFace) are about to be read.
+  void PrefetchFaces(int32_t firstFace, int32_t lastFace) const
+  {
+    PrefetchRange(this->Corners.data() + 3 * size_t(firstFace),
+                  this->Corners.data() + 3 * size_t(lastFace));
+  }
   /// Hint that the face of v's outgoing half-edge is about to be read (reads Out[v]).
   void PrefetchFirstFace(int32_t v) const
   {
