@@ -729,8 +729,8 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
   this->BlockFaces.clear();
   if (this->Renumbered)
   {
-    // Faces in order of their smallest vertex, none collapsed yet: a binary search each (kept
-    // non-decreasing should a face be out of order, e.g. a degenerate one left empty).
+    // The faces come in order of their smallest vertex and none is collapsed yet: a binary
+    // search for each block, from the previous block's answer on.
     const int32_t faces = this->Mesh.GetNumberOfFaceSlots();
     const HalfEdgeMesh& mesh = this->Mesh;
     auto smallest = [&mesh](int32_t f)

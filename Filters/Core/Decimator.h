@@ -296,7 +296,8 @@ private:
   /// many vertex ids at least. Each candidate reads a two-ring of some twenty vertices and
   /// faces, so that most of the block's lines are read either way (kitchen scan: the blocks
   /// of the first 11 passes of 28 and some of the next four; sweeping every block measured
-  /// the same, one candidate per 4 ids gained nothing).
+  /// the same, and a threshold of one candidate per 4 ids, which few blocks reach, gained
+  /// nothing).
   static constexpr size_t WarmDensity = 16;
   /// Greedy: cost the vertex at the top exactly (exact: over its legal collapses only) and
   /// give it its new key, or take it out of the heap if it has no collapse left.
