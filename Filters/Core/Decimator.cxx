@@ -890,27 +890,20 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
     {
       this->Stamp[v] = -pass;
     }
+    // One scan of the live vertices keeps those not collapsed away and lists the affected ones
+    // (never collapsed away: a stamped vertex is not collapsed).
     kept.clear();
     const int32_t* before = live.data();
+    const int32_t* stamp = this->Stamp.data();
     CollectInOrder(
       live.size(), this->ThreadCount(live.size()),
-      [this, before](size_t i, int32_t& u)
+      [this, before, stamp, pass](size_t i, int32_t& u)
       {
         u = before[i];
-        return !this->Mesh.IsRemoved(u);
+        return this->Mesh.IsRemoved(u) ? 0 : stamp[u] == pass ? 3 : 1;
       },
-      kept);
+      kept, affected);
     live.swap(kept);
-    const int32_t* stamp = this->Stamp.data();
-    const int32_t* listed = live.data();
-    CollectInOrder(
-      live.size(), this->ThreadCount(live.size()),
-      [stamp, listed, pass](size_t i, int32_t& u)
-      {
-        u = listed[i];
-        return stamp[u] == pass;
-      },
-      affected);
     this->EvaluateAll(affected.data(), affected.size(), false, false, keys.data());
     this->EvaluateAll(rejected.data(), rejected.size(), true, false, keys.data());
     if (progress)

@@ -80,6 +80,47 @@ bool ParallelAll(size_t count, int threads, const Body& body)
 }
 
 /**
+ * Append to `first` and `second`, in index order, the item that make(i, item) fills in for
+ * each i < count, to the lists whose bits make returns (1: `first`, 2: `second`, 3: both), on
+ * `threads` threads: each collects its own range, and the ranges are appended in order, so the
+ * lists are the same whatever the number of threads. `first` usually takes most items: each
+ * thread makes room for its whole range there at once.
+ */
+template <typename T, typename Make>
+void CollectInOrder(size_t count, int threads, const Make& make, std::vector<T>& first,
+                    std::vector<T>& second)
+{
+  threads = std::max(threads, 1);
+  std::vector<std::vector<T>> collected(2 * static_cast<size_t>(threads));
+  std::vector<T>* lists = collected.data();
+  ParallelFor(count, threads,
+              [lists, make](size_t begin, size_t end, int t)
+              {
+                std::vector<T>& one = lists[2 * t];
+                std::vector<T>& two = lists[2 * t + 1];
+                one.reserve(end - begin);
+                T item;
+                for (size_t i = begin; i < end; ++i)
+                {
+                  const int to = make(i, item);
+                  if (to & 1)
+                  {
+                    one.push_back(item);
+                  }
+                  if (to & 2)
+                  {
+                    two.push_back(item);
+                  }
+                }
+              });
+  for (int t = 0; t < threads; ++t)
+  {
+    first.insert(first.end(), collected[2 * t].begin(), collected[2 * t].end());
+    second.insert(second.end(), collected[2 * t + 1].begin(), collected[2 * t + 1].end());
+  }
+}
+
+/**
  * Append to `out`, in index order, the item that make(i, item) fills in for each i < count for
  * which it returns true, on `threads` threads: each collects its own range, and the ranges are
  * appended in order, so `out` is the same whatever the number of threads.
@@ -87,26 +128,9 @@ bool ParallelAll(size_t count, int threads, const Body& body)
 template <typename T, typename Make>
 void CollectInOrder(size_t count, int threads, const Make& make, std::vector<T>& out)
 {
-  threads = std::max(threads, 1);
-  std::vector<std::vector<T>> collected(threads);
-  std::vector<T>* lists = collected.data();
-  ParallelFor(count, threads,
-              [lists, make](size_t begin, size_t end, int t)
-              {
-                std::vector<T>& list = lists[t];
-                T item;
-                for (size_t i = begin; i < end; ++i)
-                {
-                  if (make(i, item))
-                  {
-                    list.push_back(item);
-                  }
-                }
-              });
-  for (const std::vector<T>& list : collected)
-  {
-    out.insert(out.end(), list.begin(), list.end());
-  }
+  std::vector<T> none;
+  CollectInOrder(
+    count, threads, [make](size_t i, T& item) { return make(i, item) ? 1 : 0; }, out, none);
 }
 
 /**

@@ -6,14 +6,16 @@
  * A pass takes the k cheapest of up to a million keyed vertices. Instead of copying them all
  * and partitioning the copy (nth_element), SelectCheapest estimates the k-th key from a
  * sample of one vertex in 16, takes the vertices up to a little above it in one scan (on
- * several threads), and partitions only those; should the sample mislead (too few taken), it
- * takes them all.
+ * several threads), and partitions only those a little below it or above (those further below
+ * are all taken); should the sample mislead (too few taken, or too many below), it takes them
+ * all or partitions all it took.
  * The chosen set is exactly the k smallest by (key, vertex), as a full partition would choose,
  * and it comes out in vertex order, so it is already grouped by block.
  */
 #ifndef colordecimation_Selection_h
 #define colordecimation_Selection_h
 
+#include "Buffer.h"
 #include "Parallel.h"
 
 #include <algorithm>
@@ -61,9 +63,9 @@ size_t SelectCheapest(size_t count, const int32_t* vertices, const KeyOf& keyOf,
   const auto vertexAt = [vertices](size_t i)
   { return vertices ? vertices[i] : static_cast<int32_t>(i); };
 
-  // 1. A threshold from a sample (the keys of every SampleStride-th listed vertex): a little
-  // above the sample's share of wanted keys, so that the keys up to it nearly always include
-  // the wanted ones.
+  // 1. Two thresholds from a sample (the keys of every SampleStride-th listed vertex): a little
+  // below and a little above the sample's share of wanted keys, so that nearly always the keys
+  // below the lower one are all wanted and those up to the upper one include all wanted.
   constexpr size_t SampleStride = 16;
   std::vector<double> sample;
   sample.reserve(count / SampleStride + 1);
@@ -75,7 +77,8 @@ size_t SelectCheapest(size_t count, const int32_t* vertices, const KeyOf& keyOf,
       sample.push_back(key);
     }
   }
-  double threshold = Infinity;
+  double lower = -Infinity, upper = Infinity;
+  double upperShare = 1.0; // about the share of the candidates up to `upper`
   if (!sample.empty())
   {
     const double estimate = static_cast<double>(sample.size() * SampleStride);
@@ -84,72 +87,134 @@ size_t SelectCheapest(size_t count, const int32_t* vertices, const KeyOf& keyOf,
     const double size = static_cast<double>(sample.size());
     const double margin = 0.02 * size + 4.0 * std::sqrt(share * size) + 2.0;
     const auto index = static_cast<size_t>(std::ceil(share * size + margin));
+    auto end = sample.end();
     if (index < sample.size())
     {
       std::nth_element(sample.begin(), sample.begin() + index, sample.end());
-      threshold = sample[index];
+      upper = sample[index];
+      upperShare = static_cast<double>(index + 1) / size;
+      end = sample.begin() + index;
+    }
+    const double below = std::floor(share * size - margin);
+    if (below > 0)
+    {
+      const auto lowIndex = static_cast<size_t>(below);
+      std::nth_element(sample.begin(), sample.begin() + lowIndex, end);
+      lower = sample[lowIndex];
     }
   }
 
-  // 2. The candidates up to the threshold, in vertex order (each thread its range, appended in
-  // range order), and how many candidates there are in all.
-  std::vector<std::vector<Candidate>> taken(threads);
-  std::vector<size_t> counted(threads, 0);
-  const size_t first = out.size();
-  size_t total = 0;
-  const auto collect = [&](double upTo)
+  // 2. The candidates up to `upper`, in vertex order (each thread its range, appended in range
+  // order), those of them from `lower` on apart, and how many candidates there are in all and
+  // below `lower`.
+  struct Taken
   {
-    std::vector<Candidate>* lists = taken.data();
-    size_t* counts = counted.data();
+    Buffer<Candidate> List, Uncertain; ///< the first Size and Unsure are written
+    size_t Size = 0, Unsure = 0, Candidates = 0, Below = 0;
+  };
+  std::vector<Taken> taken(threads);
+  const size_t first = out.size();
+  size_t total = 0, below = 0;
+  std::vector<Candidate> uncertain;
+  const auto collect = [&](double upTo, double share)
+  {
+    Taken* lists = taken.data();
     ParallelFor(count, threads,
-                [lists, counts, keyOf, vertexAt, upTo](size_t begin, size_t end, int t)
+                [lists, keyOf, vertexAt, lower, upTo, share](size_t begin, size_t end, int t)
                 {
-                  std::vector<Candidate>& list = lists[t];
-                  list.clear();
-                  size_t candidates = 0;
-                  for (size_t i = begin; i < end; ++i)
+                  // Without branches on the keys (which would mispredict a fourth of the
+                  // time): each candidate is written to both lists, and kept by moving their
+                  // ends on, or not; room is made ahead, a chunk at a time.
+                  constexpr size_t Chunk = 256;
+                  Taken& mine = lists[t];
+                  mine.Size = mine.Unsure = mine.Candidates = mine.Below = 0;
+                  mine.List.resize(static_cast<size_t>(share * static_cast<double>(end - begin)));
+                  for (size_t chunk = begin; chunk < end; chunk += Chunk)
                   {
-                    Candidate c;
-                    c.Vertex = vertexAt(i);
-                    if (keyOf(c.Vertex, c.Key))
+                    for (Buffer<Candidate>* list : { &mine.List, &mine.Uncertain })
                     {
-                      ++candidates;
-                      if (c.Key <= upTo)
+                      const size_t used = list == &mine.List ? mine.Size : mine.Unsure;
+                      if (list->size() < used + Chunk)
                       {
-                        list.push_back(c);
+                        list->resize(std::max(2 * list->size(), used + Chunk));
                       }
                     }
+                    Candidate* kept = mine.List.data();
+                    Candidate* unsure = mine.Uncertain.data();
+                    size_t size = mine.Size, unsureSize = mine.Unsure, candidates = 0,
+                           belowCount = 0;
+                    const size_t stop = std::min(end, chunk + Chunk);
+                    for (size_t i = chunk; i < stop; ++i)
+                    {
+                      // (keyOf need not write the key of a non-candidate)
+                      Candidate c{ 0.0, vertexAt(i) };
+                      const bool candidate = keyOf(c.Vertex, c.Key);
+                      const bool in = candidate & (c.Key <= upTo);
+                      const bool low = in & (c.Key < lower);
+                      kept[size] = c;
+                      size += in ? 1 : 0;
+                      unsure[unsureSize] = c;
+                      unsureSize += (in & !low) ? 1 : 0;
+                      candidates += candidate ? 1 : 0;
+                      belowCount += low ? 1 : 0;
+                    }
+                    mine.Size = size;
+                    mine.Unsure = unsureSize;
+                    mine.Candidates += candidates;
+                    mine.Below += belowCount;
                   }
-                  counts[t] = candidates;
                 });
     out.resize(first);
-    total = 0;
-    for (int t = 0; t < threads; ++t)
+    uncertain.clear();
+    total = below = 0;
+    for (const Taken& mine : taken)
     {
-      out.insert(out.end(), taken[t].begin(), taken[t].end());
-      total += counted[t];
+      out.insert(out.end(), mine.List.begin(), mine.List.begin() + mine.Size);
+      uncertain.insert(uncertain.end(), mine.Uncertain.begin(),
+                       mine.Uncertain.begin() + mine.Unsure);
+      total += mine.Candidates;
+      below += mine.Below;
     }
   };
-  collect(threshold);
+  collect(upper, std::min(1.0, 1.05 * upperShare) + 1e-3);
   const size_t wanted = std::min(total, static_cast<size_t>(howMany(total)));
   if (out.size() - first < wanted)
   {
-    collect(Infinity); // the sample misled: all of them
+    collect(Infinity, 1.0); // the sample misled: all of them
   }
   if (out.size() - first == wanted)
   {
     return total;
   }
 
-  // 3. Of those, only the wanted smallest stay (in vertex order).
+  // 3. Of those, only the wanted smallest stay (in vertex order): all those below `lower` and
+  // the smallest of the others, found among those alone; or, should the lower threshold
+  // mislead (too many below it), among all.
   if (wanted == 0)
   {
     out.resize(first);
     return total;
   }
-  std::vector<Candidate> ranked(out.begin() + first, out.end());
-  std::nth_element(ranked.begin(), ranked.begin() + (wanted - 1), ranked.end());
-  const Candidate last = ranked[wanted - 1];
+  Candidate last;
+  if (below == wanted)
+  {
+    const double cut = lower;
+    out.erase(std::remove_if(out.begin() + first, out.end(),
+                             [cut](const Candidate& c) { return !(c.Key < cut); }),
+              out.end());
+    return total;
+  }
+  if (below < wanted)
+  {
+    std::nth_element(uncertain.begin(), uncertain.begin() + (wanted - below - 1), uncertain.end());
+    last = uncertain[wanted - below - 1];
+  }
+  else
+  {
+    std::vector<Candidate> ranked(out.begin() + first, out.end());
+    std::nth_element(ranked.begin(), ranked.begin() + (wanted - 1), ranked.end());
+    last = ranked[wanted - 1];
+  }
   out.erase(
     std::remove_if(out.begin() + first, out.end(), [last](const Candidate& c) { return last < c; }),
     out.end());

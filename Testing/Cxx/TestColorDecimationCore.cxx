@@ -441,8 +441,10 @@ void TestBatchSelection()
   std::uniform_int_distribution<int> coarse(0, 6);
   // Pattern 0: random keys (many ties, near ties 1e-9 and 1e-5 apart around 1). Pattern 1: the
   // vertices a sample of every 16th would see are the cheapest (the estimate misleads). Pattern
-  // 2: those vertices are no candidates (an empty sample).
-  for (const int pattern : { 0, 1, 2 })
+  // 2: those vertices are no candidates (an empty sample). Pattern 3: they are the dearest
+  // (both thresholds too high: too many below the lower one). Pattern 4: two well apart groups
+  // of keys, the cheap one a quarter of the candidates (the cut may fall between thresholds).
+  for (const int pattern : { 0, 1, 2, 3, 4 })
   {
     for (const int32_t n : { 0, 1, 7, 1000, 20000, 100000 })
     {
@@ -465,6 +467,15 @@ void TestBatchSelection()
         else if (pattern == 2)
         {
           eligible[v] = eligible[v] && v % 16 != 0;
+        }
+        else if (pattern == 3)
+        {
+          keys[v] = v % 16 == 0 ? 100.0 + v : 1.0 + v % 7;
+        }
+        else if (pattern == 4)
+        {
+          eligible[v] = 1;
+          keys[v] = v % 4 == 1 ? 1.0 + 1e-3 * (v % 5) : 50.0 + v % 3;
         }
       }
       std::vector<Candidate> all;
