@@ -951,7 +951,7 @@ void Decimator::CollapseBlocks(std::vector<Candidate>& batch, const std::vector<
 void Decimator::CollapseBlock(Candidate* begin, Candidate* end, int32_t block,
                               const BlockLevel& level, int32_t pass, Workspace& ws)
 {
-  std::sort(begin, end); // cost order
+  SortByKey(begin, end, ws.SortRoom); // cost order (the block's candidates come in vertex order)
   int32_t* stamp = this->Stamp.data();
   const size_t count = static_cast<size_t>(end - begin);
   this->WarmBlock(block, level, count);

@@ -261,6 +261,7 @@ private:
     // Batched: what this thread's collapses of a pass produced.
     std::vector<int32_t> Rejected;   ///< vertices whose choice the rules forbade
     std::vector<Candidate> Deferred; ///< candidates reaching out of their block
+    Buffer<Candidate> SortRoom;      ///< scratch of SortByKey
     int64_t Collapses = 0, Rejections = 0, RemovedFaces = 0;
     void ClearPass()
     {

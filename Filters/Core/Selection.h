@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -45,6 +46,69 @@ struct Candidate
 inline double OrderableKey(double key)
 {
   return std::isnan(key) ? std::numeric_limits<double>::infinity() : key;
+}
+
+/**
+ * Sort candidates that come in increasing vertex order by (key, vertex), as std::sort with
+ * Candidate's operator< would, using `scratch` for room. From a few hundred candidates on, a
+ * stable radix sort on the keys' bits, a byte at a time (the bytes all candidates share
+ * skipped), which keeps equal keys in vertex order: some three times faster than std::sort on a
+ * block's candidates. The keys must not be NaN (see OrderableKey).
+ */
+inline void SortByKey(Candidate* begin, Candidate* end, Buffer<Candidate>& scratch)
+{
+  const auto count = static_cast<size_t>(end - begin);
+  if (count < 256)
+  {
+    std::sort(begin, end);
+    return;
+  }
+  // Doubles as unsigned integers in the same order: -0 as +0, negatives with all bits flipped,
+  // the others with the sign bit set.
+  const auto bitsOf = [](double key)
+  {
+    uint64_t bits;
+    key += 0.0;
+    std::memcpy(&bits, &key, sizeof(bits));
+    return (bits >> 63) != 0 ? ~bits : bits | (uint64_t(1) << 63);
+  };
+  constexpr int Digits = 8;
+  std::vector<uint32_t> histogram(Digits * 256, 0);
+  for (const Candidate* c = begin; c != end; ++c)
+  {
+    const uint64_t bits = bitsOf(c->Key);
+    for (int d = 0; d < Digits; ++d)
+    {
+      ++histogram[256 * d + ((bits >> (8 * d)) & 0xff)];
+    }
+  }
+  scratch.resize(std::max(scratch.size(), count));
+  Candidate* from = begin;
+  Candidate* into = scratch.data();
+  for (int d = 0; d < Digits; ++d)
+  {
+    uint32_t* counts = histogram.data() + 256 * d;
+    if (*std::max_element(counts, counts + 256) == count)
+    {
+      continue; // every key has the same byte here
+    }
+    uint32_t offset = 0;
+    for (int b = 0; b < 256; ++b)
+    {
+      const uint32_t n = counts[b];
+      counts[b] = offset;
+      offset += n;
+    }
+    for (const Candidate* c = from; c != from + count; ++c)
+    {
+      into[counts[(bitsOf(c->Key) >> (8 * d)) & 0xff]++] = *c;
+    }
+    std::swap(from, into);
+  }
+  if (from != begin)
+  {
+    std::copy(from, from + count, begin);
+  }
 }
 
 /**

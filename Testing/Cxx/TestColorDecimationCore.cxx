@@ -585,6 +585,59 @@ void TestBatchSelection()
   }
 }
 
+void TestSortByKey()
+{
+  // SortByKey against std::sort on candidates in vertex order: the same order, bit for bit, for
+  // sizes on both sides of where it turns to the radix sort; keys with many ties, -0 and +0
+  // (equal, so in vertex order), negatives, infinities, keys sharing their high bytes, and
+  // keys that differ in their last bit only.
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> kind(0, 7);
+  std::uniform_real_distribution<double> wide(-30.0, 30.0);
+  std::uniform_int_distribution<int> coarse(0, 5);
+  Buffer<Candidate> room;
+  for (const int size : { 0, 1, 2, 255, 256, 257, 1000, 5000, 40000 })
+  {
+    for (const int pattern : { 0, 1, 2 })
+    {
+      std::vector<Candidate> candidates(size);
+      for (int i = 0; i < size; ++i)
+      {
+        double key;
+        const int k = kind(rng);
+        if (pattern == 0)
+        {
+          key = k == 0 ? -0.0
+            : k == 1   ? 0.0
+            : k == 2   ? 0.25 * coarse(rng)
+            : k == 3   ? std::numeric_limits<double>::infinity()
+            : k == 4   ? -std::exp(wide(rng))
+                       : std::exp(wide(rng));
+        }
+        else if (pattern == 1)
+        {
+          key = 1.0 + std::ldexp(double(coarse(rng)), -52); // the last bits only
+        }
+        else
+        {
+          key = 3.0 + 1e-3 * coarse(rng) + 1e-9 * k; // the high bytes shared
+        }
+        candidates[i] = { key, 3 * i + coarse(rng) % 3 }; // increasing vertices
+      }
+      std::vector<Candidate> expected = candidates;
+      std::sort(expected.begin(), expected.end());
+      SortByKey(candidates.data(), candidates.data() + candidates.size(), room);
+      bool same = true;
+      for (int i = 0; same && i < size; ++i)
+      {
+        same = candidates[i].Vertex == expected[i].Vertex &&
+          std::memcmp(&candidates[i].Key, &expected[i].Key, sizeof(double)) == 0;
+      }
+      CD_CHECK_MSG(same, "size " << size << " pattern " << pattern);
+    }
+  }
+}
+
 void TestCountingSort()
 {
   // CountingSort against std::stable_sort, on 1 to 3 threads: every item placed once, in key
@@ -1757,6 +1810,7 @@ int main(int argc, char* argv[])
                         { "CollapseCostFrame", TestCollapseCostFrame },
                         { "VertexHeap", TestVertexHeap },
                         { "BatchSelection", TestBatchSelection },
+                        { "SortByKey", TestSortByKey },
                         { "CountingSort", TestCountingSort },
                         { "HighValenceBound", TestHighValenceBound },
                         { "HalfEdgeBuildClosed", TestHalfEdgeBuildClosed },
