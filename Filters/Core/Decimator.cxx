@@ -20,10 +20,11 @@ constexpr double Infinity = std::numeric_limits<double>::infinity();
 /**
  * The bounding box of the points (lo, hi) and the mean length of the mesh's edges, on
  * `threads` threads: the edges are summed in fixed chunks, and the chunks in order, so the
- * mean has the same bits for any number of threads.
+ * mean has the same bits for any number of threads. The mesh's vertex v is the point
+ * source[v] (v if source is null).
  */
-double MeasureInput(const HalfEdgeMesh& mesh, const double* points, int threads, double lo[3],
-                    double hi[3])
+double MeasureInput(const HalfEdgeMesh& mesh, const double* points, const int32_t* source,
+                    int threads, double lo[3], double hi[3])
 {
   const int32_t n = mesh.GetNumberOfVertices();
   threads = std::max(threads, 1);
@@ -32,6 +33,7 @@ double MeasureInput(const HalfEdgeMesh& mesh, const double* points, int threads,
   ParallelFor(size_t(n), threads,
               [points, box](size_t begin, size_t end, int t)
               {
+                // (the box does not depend on the order of the points)
                 double* b = box + 6 * t;
                 for (size_t v = begin; v < end; ++v)
                 {
@@ -67,8 +69,10 @@ double MeasureInput(const HalfEdgeMesh& mesh, const double* points, int threads,
   double* sum = sums.data();
   int64_t* count = counts.data();
   const HalfEdgeMesh* m = &mesh;
+  const auto point = [points, source](int32_t v)
+  { return points + 3 * size_t(source ? source[v] : v); };
   ParallelFor(size_t(chunks), threads,
-              [m, points, numHalfEdges, sum, count](size_t begin, size_t end, int)
+              [m, point, numHalfEdges, sum, count](size_t begin, size_t end, int)
               {
                 for (size_t c = begin; c < end; ++c)
                 {
@@ -82,7 +86,7 @@ double MeasureInput(const HalfEdgeMesh& mesh, const double* points, int threads,
                     {
                       continue; // each interior edge once
                     }
-                    chunkSum += Distance3(points + 3 * m->Origin(h), points + 3 * m->Target(h));
+                    chunkSum += Distance3(point(m->Origin(h)), point(m->Target(h)));
                     ++chunkCount;
                   }
                   sum[c] = chunkSum;
@@ -130,24 +134,21 @@ std::vector<float> Decimator::GetNormalizedPositions() const
   return positions;
 }
 
-DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targetTriangles,
+DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTriangles,
                                    const std::function<bool(double)>& progress)
 {
-  // 0. Locality: a large mesh is decimated in a spatial order (SpatialOrder.h), on renumbered
-  // copies of its arrays, and mapped back to its own ids at the end.
-  DecimatorInput input = original;
+  // 0. Locality: a large mesh is decimated in a spatial order (SpatialOrder.h), under new
+  // vertex and face ids, and mapped back to its own ids at the end. The input's arrays are read
+  // through the map (source[v]: the input's id of vertex v), not copied.
   SpatialOrder order;
-  Buffer<double> points;
-  Buffer<float> colors;
-  Buffer<int32_t> triangles;
-  Buffer<uint8_t> fixed;
-  const bool large = original.NumberOfPoints >= LargeMeshVertices;
+  const bool large = input.NumberOfPoints >= LargeMeshVertices;
   this->Renumbered = this->Options.Renumber && large;
   if (this->Renumbered)
   {
-    this->RenumberInput(original, order, points, colors, triangles, fixed, input,
-                        this->ThreadCount(size_t(original.NumberOfPoints)));
+    ComputeSpatialOrder(input.NumberOfPoints, input.Points, input.NumberOfTriangles,
+                        input.Triangles, order, this->ThreadCount(size_t(input.NumberOfPoints)));
   }
+  const int32_t* source = this->Renumbered ? order.OldVertex.data() : nullptr;
 
   DecimatorStatistics stats;
   const int32_t n = input.NumberOfPoints;
@@ -156,12 +157,15 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
 
   // 1. Connectivity.
   stats.Build = this->Mesh.Build(n, input.Triangles, input.NumberOfTriangles,
-                                 this->ThreadCount(3 * size_t(input.NumberOfTriangles)));
+                                 this->ThreadCount(3 * size_t(input.NumberOfTriangles)),
+                                 this->Renumbered ? order.OldFace.data() : nullptr,
+                                 this->Renumbered ? order.NewVertex.data() : nullptr);
+  order.NewVertex = std::vector<int32_t>();
   if (input.Fixed)
   {
     for (int32_t v = 0; v < n; ++v)
     {
-      if (input.Fixed[v])
+      if (input.Fixed[source ? source[v] : v])
       {
         this->Mesh.Lock(v);
       }
@@ -171,7 +175,7 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   // 2. The normalised frame: bounding-box centre, mean edge length 1.
   double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
   stats.MeanEdgeLength =
-    MeasureInput(this->Mesh, input.Points, this->ThreadCount(size_t(n)), lo, hi);
+    MeasureInput(this->Mesh, input.Points, source, this->ThreadCount(size_t(n)), lo, hi);
   const double scale = (stats.MeanEdgeLength > 0 && std::isfinite(stats.MeanEdgeLength))
     ? 1.0 / stats.MeanEdgeLength
     : 1.0;
@@ -189,32 +193,33 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   const double centre[3] = { this->FrameCentre[0], this->FrameCentre[1], this->FrameCentre[2] };
   const double* inputPoints = input.Points;
   const float* inputColors = this->UseColor ? input.Colors : nullptr;
-  ParallelFor(
-    size_t(n), this->ThreadCount(size_t(n)),
-    [hotRecords, centre, scale, inputPoints, inputColors, lab](size_t begin, size_t end, int)
-    {
-      for (size_t v = begin; v < end; ++v)
-      {
-        HotVertex& hot = hotRecords[v];
-        for (int k = 0; k < 3; ++k)
-        {
-          hot.P[k] = static_cast<float>((inputPoints[3 * v + k] - centre[k]) * scale);
-          hot.C[k] = inputColors ? inputColors[3 * v + k] : 0.0f;
-        }
-        if (lab)
-        {
-          const double rgb[3] = { hot.C[0], hot.C[1], hot.C[2] };
-          double c[3];
-          RGBToMetricColor(ColorSpace::CIELab, rgb, c);
-          for (int k = 0; k < 3; ++k)
-          {
-            hot.C[k] = static_cast<float>(c[k]);
-          }
-        }
-        hot.QC = 0;
-        hot.Spare = 0;
-      }
-    });
+  ParallelFor(size_t(n), this->ThreadCount(size_t(n)),
+              [hotRecords, centre, scale, inputPoints, inputColors, source, lab](size_t begin,
+                                                                                 size_t end, int)
+              {
+                for (size_t v = begin; v < end; ++v)
+                {
+                  HotVertex& hot = hotRecords[v];
+                  const size_t i = source ? size_t(source[v]) : v;
+                  for (int k = 0; k < 3; ++k)
+                  {
+                    hot.P[k] = static_cast<float>((inputPoints[3 * i + k] - centre[k]) * scale);
+                    hot.C[k] = inputColors ? inputColors[3 * i + k] : 0.0f;
+                  }
+                  if (lab)
+                  {
+                    const double rgb[3] = { hot.C[0], hot.C[1], hot.C[2] };
+                    double c[3];
+                    RGBToMetricColor(ColorSpace::CIELab, rgb, c);
+                    for (int k = 0; k < 3; ++k)
+                    {
+                      hot.C[k] = static_cast<float>(c[k]);
+                    }
+                  }
+                  hot.QC = 0;
+                  hot.Spare = 0;
+                }
+              });
 
   // 3. Per-vertex metric state.
   this->AnyMoved = false;
@@ -249,17 +254,7 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
                                          this->ReferenceNormals,
                                          this->ThreadCount(size_t(input.NumberOfTriangles)));
   this->Main.Rules.SetReferenceNormals(this->ReferenceNormals.data());
-  // The renumbered copies of the input, if any, are no longer needed: everything below reads
-  // the mesh, the hot records and the metric state.
-  points = Buffer<double>();
-  colors = Buffer<float>();
-  triangles = Buffer<int32_t>();
-  fixed = Buffer<uint8_t>();
-  order.NewVertex = std::vector<int32_t>();
-  input.Points = nullptr;
-  input.Colors = nullptr;
-  input.Triangles = nullptr;
-  input.Fixed = nullptr;
+  // Everything below reads the mesh, the hot records and the metric state only.
 
   this->ThreadsUsed = 1;
   this->CollapseThreadsUsed = 1;
@@ -306,59 +301,6 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& original, int64_t targe
   return stats;
 }
 
-void Decimator::RenumberInput(const DecimatorInput& original, SpatialOrder& order,
-                              Buffer<double>& points, Buffer<float>& colors,
-                              Buffer<int32_t>& triangles, Buffer<uint8_t>& fixed,
-                              DecimatorInput& renumbered, int threads)
-{
-  const int32_t n = original.NumberOfPoints;
-  const int32_t nt = original.NumberOfTriangles;
-  ComputeSpatialOrder(n, original.Points, nt, original.Triangles, order, threads);
-  // Per-vertex arrays: new vertex v takes old vertex OldVertex[v]'s `width` values.
-  const int32_t* oldVertex = order.OldVertex.data();
-  auto gather = [oldVertex, n, threads](const auto* source, size_t width, auto& values)
-  {
-    values.resize(width * size_t(n));
-    auto* target = values.data();
-    ParallelFor(size_t(n), threads,
-                [oldVertex, source, width, target](size_t begin, size_t end, int)
-                {
-                  for (size_t v = begin; v < end; ++v)
-                  {
-                    std::copy_n(source + width * size_t(oldVertex[v]), width, target + width * v);
-                  }
-                });
-    return values.data();
-  };
-  renumbered.Points = gather(original.Points, 3, points);
-  if (original.Colors)
-  {
-    renumbered.Colors = gather(original.Colors, 3, colors);
-  }
-  if (original.Fixed)
-  {
-    renumbered.Fixed = gather(original.Fixed, 1, fixed);
-  }
-  triangles.resize(3 * size_t(nt));
-  const int32_t* oldFace = order.OldFace.data();
-  const int32_t* newVertex = order.NewVertex.data();
-  const int32_t* source = original.Triangles;
-  int32_t* target = triangles.data();
-  ParallelFor(size_t(nt), threads,
-              [oldFace, newVertex, source, target](size_t begin, size_t end, int)
-              {
-                for (size_t f = begin; f < end; ++f)
-                {
-                  const int32_t* t = source + 3 * size_t(oldFace[f]);
-                  for (int k = 0; k < 3; ++k)
-                  {
-                    target[3 * f + k] = newVertex[t[k]];
-                  }
-                }
-              });
-  renumbered.Triangles = triangles.data();
-}
-
 void Decimator::RestoreOrder(const SpatialOrder& order)
 {
   // The heap and the choices refer to the renumbered ids and are of no use after Run: freed
@@ -366,6 +308,17 @@ void Decimator::RestoreOrder(const SpatialOrder& order)
   this->Heap.Release();
   this->Best = std::vector<int32_t>();
   this->Bounded = std::vector<uint8_t>();
+  if (!this->Options.KeepVertexState)
+  {
+    // What the output needs: the moved vertices' points and colours (hot records). The rest
+    // goes first, so that the copies the mapping makes take its room.
+    this->Metrics = Buffer<VertexMetric>();
+    this->ColorQuadrics = std::vector<ColorQuadric>();
+    if (!this->AnyMoved)
+    {
+      this->Hot = Buffer<HotVertex>();
+    }
+  }
   const auto n = static_cast<int64_t>(order.OldVertex.size());
   const int threads = this->ThreadCount(order.OldFace.size());
   this->Mesh.Renumber(order.OldVertex.data(), order.OldFace.data(), threads);
@@ -376,16 +329,6 @@ void Decimator::RestoreOrder(const SpatialOrder& order)
       Permute(values, n, order.OldVertex.data(), 1, threads);
     }
   };
-  if (!this->Options.KeepVertexState)
-  {
-    // What the output needs: the moved vertices' points and colours (hot records).
-    this->Metrics = Buffer<VertexMetric>();
-    this->ColorQuadrics = std::vector<ColorQuadric>();
-    if (!this->AnyMoved)
-    {
-      this->Hot = Buffer<HotVertex>();
-    }
-  }
   restore(this->Hot);
   restore(this->Metrics);
   restore(this->ColorQuadrics);

@@ -6,8 +6,9 @@
  *
  * Pipeline (in the order Run performs it):
  * 0. meshes of LargeMeshVertices points or more are renumbered in a spatial order
- *    (SpatialOrder.h) for cache locality; everything below runs on the renumbered copy, and
- *    the mesh and per-vertex state are mapped back to the input's ids at the end;
+ *    (SpatialOrder.h) for cache locality; everything below runs under the new ids (the
+ *    input's arrays read through the map, not copied), and the mesh and per-vertex state are
+ *    mapped back to the input's ids at the end;
  * 1. HalfEdgeMesh::Build: connectivity, locking of non-manifold places;
  * 2. the normalised frame: bounding-box centre at the origin, mean edge length 1 (SPEC.md);
  * 3. InitializeVertexMetrics: area-weighted quadrics and visual importance;
@@ -381,12 +382,6 @@ private:
    * 41k-point mesh and saves 5 % on a 163k-point one, 15 % on a 655k-point one).
    */
   static constexpr int32_t LargeMeshVertices = 65536;
-  /// The input in spatial order: renumbered copies of its arrays (made on `threads` threads),
-  /// and `renumbered` on them.
-  static void RenumberInput(const DecimatorInput& original, SpatialOrder& order,
-                            Buffer<double>& points, Buffer<float>& colors,
-                            Buffer<int32_t>& triangles, Buffer<uint8_t>& fixed,
-                            DecimatorInput& renumbered, int threads);
   /// Map the decimated mesh and the per-vertex state back to the input's ids.
   void RestoreOrder(const SpatialOrder& order);
   void GatherRing(int32_t v0, Ring& ring) const;
@@ -455,7 +450,7 @@ private:
   /// the first whose smallest vertex is in it or after it (the faces come in that order,
   /// SpatialOrder.h); one entry per block and one more. Empty otherwise: no block is swept.
   std::vector<int32_t> BlockFaces;
-  bool Renumbered = false; ///< Run works on a SpatialOrder copy
+  bool Renumbered = false; ///< Run works under SpatialOrder's ids
 };
 
 } // namespace colordecimation

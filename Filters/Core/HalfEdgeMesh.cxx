@@ -9,15 +9,25 @@ namespace colordecimation
 {
 
 MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangles,
-                                    int32_t numTriangles, int threads)
+                                    int32_t numTriangles, int threads, const int32_t* faceOrder,
+                                    const int32_t* newVertex)
 {
   MeshBuildReport report;
   const int32_t numHalfEdges = 3 * numTriangles;
   this->Corners.resize(numHalfEdges);
   Corner* corners = this->Corners.data();
   ParallelFor(static_cast<size_t>(numHalfEdges), threads,
-              [corners, triangles](size_t begin, size_t end, int)
+              [corners, triangles, faceOrder, newVertex](size_t begin, size_t end, int)
               {
+                if (faceOrder && newVertex)
+                {
+                  for (size_t h = begin; h < end; ++h)
+                  {
+                    const size_t corner = 3 * size_t(faceOrder[h / 3]) + h % 3;
+                    corners[h] = { newVertex[triangles[corner]], -1 };
+                  }
+                  return;
+                }
                 for (size_t h = begin; h < end; ++h)
                 {
                   corners[h] = { triangles[h], -1 };

@@ -63,9 +63,11 @@ public:
 
   /// Build from `numTriangles` triangles given as 3 vertex ids each. Triangles must not
   /// repeat a vertex (the caller drops those). The twins are paired on `threads` threads
-  /// (the result is the same for any number).
+  /// (the result is the same for any number). Renumbered: face f is the given triangle
+  /// faceOrder[f], on the vertices newVertex[id] (both non-null, or both null).
   MeshBuildReport Build(int32_t numVertices, const int32_t* triangles, int32_t numTriangles,
-                        int threads = 1);
+                        int threads = 1, const int32_t* faceOrder = nullptr,
+                        const int32_t* newVertex = nullptr);
 
   static int32_t Next(int32_t h) { return (h % 3 == 2) ? h - 2 : h + 1; }
   static int32_t Prev(int32_t h) { return (h % 3 == 0) ? h + 2 : h - 1; }

@@ -8,8 +8,8 @@
  * then reads and re-costs the two-ring around it. When that neighbourhood is scattered over
  * the arrays, as in a scan written slice by slice or a subdivided mesh, nearly every vertex
  * and triangle it touches is a cache miss. Renumbered, a neighbourhood sits in a few cache
- * lines. The Decimator works on the renumbered copy and maps the result back, so that
- * callers only ever see their own ids.
+ * lines. The Decimator builds its mesh and state under the new ids (reading the input through
+ * the map) and maps the result back, so that callers only ever see their own ids.
  *
  * Both orders are stable (equal codes keep their input order) and cost O(n): a three-pass
  * radix sort of 30-bit codes (10 bits per axis) and a counting sort of the triangles.
