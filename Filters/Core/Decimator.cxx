@@ -666,8 +666,9 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
   // chosen collapse was found illegal; either way it waits for the re-costing.
   this->Stamp.assign(n, 0);
   const int shift = std::min(std::max(this->Options.BlockShift, 4), 24);
-  this->SmallBlocks = { shift, 1, 0 };
-  this->WideBlocks = { shift + 3, 2, 1 };
+  this->SmallBlocks = { shift, 0, 1, 0 };
+  this->WideBlocks = { shift + 3, 0, 2, 1 | 4 };
+  this->ShiftedBlocks = { shift + 3, int32_t(1) << (shift + 2), 4, 1 | 2 };
   this->FlagEveryInterior();
   this->BlockFaces.clear();
   if (this->Renumbered)
@@ -767,17 +768,18 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
     // 1. The blocks, on several threads: the collapses whose whole neighbourhood lies in their
     // block, first in small blocks, then those deferred from them in wide ones; the others
     // are deferred again. Each block sorts its own candidates by cost.
-    for (const BlockLevel& level : { this->SmallBlocks, this->WideBlocks })
+    for (const BlockLevel& level : { this->SmallBlocks, this->WideBlocks, this->ShiftedBlocks })
     {
-      if (level.FinerFlags != 0) // the batch comes in vertex order, those deferred do not
+      if (level.Flag != this->SmallBlocks.Flag) // the batch comes in vertex order, those
+                                                // deferred do not
       {
         std::sort(batch.begin(), batch.end(),
                   [](const Candidate& a, const Candidate& b) { return a.Vertex < b.Vertex; });
       }
-      blockStart.assign((n >> level.Shift) + 2, 0);
+      blockStart.assign(size_t(level.BlockOf(n)) + 2, 0);
       for (const Candidate& c : batch)
       {
-        ++blockStart[(c.Vertex >> level.Shift) + 1];
+        ++blockStart[size_t(level.BlockOf(c.Vertex)) + 1];
       }
       std::partial_sum(blockStart.begin(), blockStart.end(), blockStart.begin());
       this->CollapseBlocks(batch, blockStart, level, pass);
@@ -801,7 +803,7 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
       {
         break;
       }
-      this->PrefetchCandidates(deferred.data(), i, deferred.size(), -1, 0);
+      this->PrefetchCandidates(deferred.data(), i, deferred.size(), -1, this->SmallBlocks);
       const int32_t v0 = deferred[i].Vertex;
       const int32_t v1 = this->Best[v0];
       if (this->Stamp[v0] == pass || v1 < 0 || this->Stamp[v1] == pass)
@@ -816,7 +818,7 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
         // longer have one (a collapse inside a block never changes that block's flags: all it
         // touches is in the block).
         this->FlagInterior(ws.FormerNeighbors.data(), ws.FormerNeighbors.size(),
-                           this->SmallBlocks.Flag | this->WideBlocks.Flag);
+                           this->AllBlockFlags());
       }
     }
     gather(ws); // the mesh counted these faces itself: ws.RemovedFaces is 0
@@ -876,7 +878,8 @@ void Decimator::CollapseBlocks(std::vector<Candidate>& batch, const std::vector<
   // A thread is worth it for some thousands of candidates only; either way the blocks are
   // the same, and so is the result.
   const int threads = this->ThreadCount(CandidateWork * batch.size());
-  int& used = level.FinerFlags != 0 ? this->WideCollapseThreadsUsed : this->CollapseThreadsUsed;
+  int& used = level.Flag != this->SmallBlocks.Flag ? this->WideCollapseThreadsUsed
+                                                   : this->CollapseThreadsUsed;
   used = std::max(used, threads);
   this->AddWorkers(threads);
   // Every workspace starts the pass empty, those of idle threads too (they are gathered).
@@ -900,7 +903,7 @@ void Decimator::CollapseBlock(Candidate* begin, Candidate* end, int32_t block,
   this->WarmBlock(block, level, count);
   for (size_t i = 0; i < count; ++i)
   {
-    this->PrefetchCandidates(begin, i, count, block, level.Shift);
+    this->PrefetchCandidates(begin, i, count, block, level);
     const int32_t v0 = begin[i].Vertex;
     const int32_t v1 = this->Best[v0];
     if (stamp[v0] == pass || v1 < 0)
@@ -918,12 +921,12 @@ void Decimator::CollapseBlock(Candidate* begin, Candidate* end, int32_t block,
     }
     const int64_t collapses = ws.Collapses;
     this->TryCollapse(v0, v1, pass, ws, false);
-    if (level.FinerFlags != 0 && ws.Collapses != collapses)
+    if (level.OtherFlags != 0 && ws.Collapses != collapses)
     {
       // v0's former neighbours may now have a neighbour in another finer block (or no longer
       // have one). All of them and their fans are in this block: no other thread reads or
       // writes them.
-      this->FlagInterior(ws.FormerNeighbors.data(), ws.FormerNeighbors.size(), level.FinerFlags);
+      this->FlagInterior(ws.FormerNeighbors.data(), ws.FormerNeighbors.size(), level.OtherFlags);
     }
   }
 }
@@ -973,8 +976,7 @@ void Decimator::FlagEveryInterior()
                   }
                 }
               });
-  this->Interior.assign(this->Mesh.GetNumberOfVertices(),
-                        this->SmallBlocks.Flag | this->WideBlocks.Flag);
+  this->Interior.assign(this->Mesh.GetNumberOfVertices(), this->AllBlockFlags());
   for (const auto& list : crossed)
   {
     for (const auto& crossing : list)
@@ -999,12 +1001,13 @@ int64_t Decimator::CountStaleFlags()
 }
 
 void Decimator::PrefetchCandidates(const Candidate* candidates, size_t i, size_t count,
-                                   int32_t block, int shift) const
+                                   int32_t block, const BlockLevel& level) const
 {
   // The candidates are known in advance: their neighbourhoods are fetched a few collapses
   // ahead, in three stages (the vertex, its first face and target, the target's first face),
   // none of which waits. In a block (block >= 0) only the block's records are read.
-  const auto mayRead = [block, shift](int32_t v) { return block < 0 || (v >> shift) == block; };
+  const auto mayRead = [block, &level](int32_t v)
+  { return block < 0 || level.BlockOf(v) == block; };
   if (i + FarAhead < count)
   {
     const int32_t v = candidates[i + FarAhead].Vertex;
@@ -1052,11 +1055,15 @@ void Decimator::WarmBlock(int32_t block, const BlockLevel& level, size_t candida
     return;
   }
   const size_t n = size_t(this->Mesh.GetNumberOfVertices());
-  const size_t lo = std::min(size_t(block) * size, n), hi = std::min(lo + size, n);
-  const size_t fine = size_t(level.Shift - this->SmallBlocks.Shift);
+  const size_t start = std::max(size_t(block) * size, size_t(level.Offset)) - size_t(level.Offset);
+  const size_t lo = std::min(start, n), hi = std::min(size_t(block + 1) * size - level.Offset, n);
+  // The faces from the first small block's to the one after the last (the small blocks lie
+  // inside the block).
+  const int smallShift = this->SmallBlocks.Shift;
   const size_t last = this->BlockFaces.size() - 1;
-  const int32_t firstFace = this->BlockFaces[std::min(size_t(block) << fine, last)];
-  const int32_t endFace = this->BlockFaces[std::min(size_t(block + 1) << fine, last)];
+  const int32_t firstFace = this->BlockFaces[std::min(lo >> smallShift, last)];
+  const int32_t endFace =
+    this->BlockFaces[std::min((hi + (size_t(1) << smallShift) - 1) >> smallShift, last)];
   PrefetchRange(this->Hot.data() + lo, this->Hot.data() + hi);
   this->Mesh.PrefetchFaces(firstFace, endFace);
   for (size_t v = lo; v < hi; v += 16) // 16 ids to a line
@@ -1074,7 +1081,7 @@ bool Decimator::IsInsideBlock(int32_t v0, int32_t v1, int32_t block, const Block
   // four vertices must be interior to it. A locked vl or vr fails the rules without its fan
   // being read.
   const uint8_t* interior = this->Interior.data();
-  if (!(interior[v0] & level.Flag) || (v1 >> level.Shift) != block || !(interior[v1] & level.Flag))
+  if (!(interior[v0] & level.Flag) || level.BlockOf(v1) != block || !(interior[v1] & level.Flag))
   {
     return false;
   }

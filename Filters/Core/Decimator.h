@@ -313,28 +313,47 @@ private:
    * threads (CollapseBlocks): in each block, in cost order, the collapses whose whole
    * neighbourhood lies inside it (IsInsideBlock); no two threads ever touch the same face or
    * vertex. Those that reach out of their block are deferred to the wide blocks (2^3 small ones
-   * each), which run the same way; what reaches out of those is made afterwards on this
-   * thread, in cost order. Then the affected vertices are re-costed. The outcome depends on
-   * the blocks, never on the threads.
+   * each), which run the same way, then to the shifted wide blocks (the same size, moved by half
+   * a block, so that the wide blocks' borders lie inside them); what reaches out of those is
+   * made afterwards on this thread, in cost order. Then the affected vertices are re-costed.
+   * The outcome depends on the blocks, never on the threads.
    */
   void CollapseInBatches(DecimatorStatistics& stats, const std::function<bool(double)>& progress);
-  /// A partition of the vertex ids into blocks of 2^Shift, and its bit in Interior.
+  /// A partition of the vertex ids into blocks of 2^Shift ids, the first Offset ids short
+  /// (block b: from b 2^Shift - Offset on), and its bit in Interior.
   struct BlockLevel
   {
     int Shift;
+    int32_t Offset;
     uint8_t Flag;
-    uint8_t FinerFlags; ///< the flags of the partitions that refine this one
+    /// The flags of the other partitions whose blocks a block of this one does not lie inside:
+    /// the flags a collapse inside it may change.
+    uint8_t OtherFlags;
+    int32_t BlockOf(int32_t v) const
+    {
+      return static_cast<int32_t>((static_cast<uint32_t>(v) + uint32_t(this->Offset)) >>
+                                  this->Shift);
+    }
   };
-  /// Blocks of 2^Options.BlockShift ids (16384 by default), and wide ones of eight of them.
-  BlockLevel SmallBlocks = { 14, 1, 0 };
-  BlockLevel WideBlocks = { 17, 2, 1 };
+  /// Blocks of 2^Options.BlockShift ids (16384 by default), wide ones of eight of them, and
+  /// wide ones shifted by half their size (the small blocks lie inside both kinds).
+  BlockLevel SmallBlocks = { 14, 0, 1, 0 };
+  BlockLevel WideBlocks = { 17, 0, 2, 1 | 4 };
+  BlockLevel ShiftedBlocks = { 17, 1 << 16, 4, 1 | 2 };
+  uint8_t AllBlockFlags() const
+  {
+    return static_cast<uint8_t>(this->SmallBlocks.Flag | this->WideBlocks.Flag |
+                                this->ShiftedBlocks.Flag);
+  }
   /// The flags of the partitions where u and v lie in different blocks.
   uint8_t BlockCrossings(int32_t u, int32_t v) const
   {
-    return static_cast<uint8_t>(
-      ((u >> this->SmallBlocks.Shift) != (v >> this->SmallBlocks.Shift) ? this->SmallBlocks.Flag
-                                                                        : 0) |
-      ((u >> this->WideBlocks.Shift) != (v >> this->WideBlocks.Shift) ? this->WideBlocks.Flag : 0));
+    uint8_t crossings = 0;
+    for (const BlockLevel* level : { &this->SmallBlocks, &this->WideBlocks, &this->ShiftedBlocks })
+    {
+      crossings |= level->BlockOf(u) != level->BlockOf(v) ? level->Flag : 0;
+    }
+    return crossings;
   }
   /// The blocks of `level` on several threads (blockStart: where each block's candidates start
   /// in the batch); what reaches out of its block goes to the workspace's Deferred.
@@ -345,7 +364,7 @@ private:
   /// Fetch the neighbourhoods of candidates[i + a few] into the cache (block >= 0: reading
   /// the records of that block of 2^shift ids only).
   void PrefetchCandidates(const Candidate* candidates, size_t i, size_t count, int32_t block,
-                          int shift) const;
+                          const BlockLevel& level) const;
   /// Sweep the records of `block` (its vertices and faces) into the cache ahead of its
   /// candidates, when it has one per WarmDensity ids at least and BlockFaces is set.
   void WarmBlock(int32_t block, const BlockLevel& level, size_t candidates) const;
