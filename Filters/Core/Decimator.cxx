@@ -845,7 +845,8 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
       [this, before, stamp, pass](size_t i, int32_t& u)
       {
         u = before[i];
-        return this->Mesh.IsRemoved(u) ? 0 : stamp[u] == pass ? 3 : 1;
+        const int alive = this->Mesh.IsRemoved(u) ? 0 : 1;
+        return alive | ((alive & (stamp[u] == pass ? 1 : 0)) << 1);
       },
       kept, affected);
     live.swap(kept);

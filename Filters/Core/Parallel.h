@@ -10,6 +10,8 @@
 #ifndef colordecimation_Parallel_h
 #define colordecimation_Parallel_h
 
+#include "Buffer.h"
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -83,40 +85,49 @@ bool ParallelAll(size_t count, int threads, const Body& body)
  * Append to `first` and `second`, in index order, the item that make(i, item) fills in for
  * each i < count, to the lists whose bits make returns (1: `first`, 2: `second`, 3: both), on
  * `threads` threads: each collects its own range, and the ranges are appended in order, so the
- * lists are the same whatever the number of threads. `first` usually takes most items: each
- * thread makes room for its whole range there at once.
+ * lists are the same whatever the number of threads. Each thread makes room for its whole
+ * range in both lists at once.
  */
 template <typename T, typename Make>
 void CollectInOrder(size_t count, int threads, const Make& make, std::vector<T>& first,
                     std::vector<T>& second)
 {
   threads = std::max(threads, 1);
-  std::vector<std::vector<T>> collected(2 * static_cast<size_t>(threads));
-  std::vector<T>* lists = collected.data();
+  // Each thread writes every item to both of its lists and moves their ends on, or not: no
+  // branch on what make returns (which would mispredict as often as the lists' shares are
+  // even).
+  struct Lists
+  {
+    Buffer<T> One, Two;
+    size_t Ones = 0, Twos = 0;
+  };
+  std::vector<Lists> collected(static_cast<size_t>(threads));
+  Lists* lists = collected.data();
   ParallelFor(count, threads,
               [lists, make](size_t begin, size_t end, int t)
               {
-                std::vector<T>& one = lists[2 * t];
-                std::vector<T>& two = lists[2 * t + 1];
-                one.reserve(end - begin);
+                Lists& mine = lists[t];
+                mine.One.resize(end - begin);
+                mine.Two.resize(end - begin);
+                T* one = mine.One.data();
+                T* two = mine.Two.data();
+                size_t ones = 0, twos = 0;
                 T item;
                 for (size_t i = begin; i < end; ++i)
                 {
                   const int to = make(i, item);
-                  if (to & 1)
-                  {
-                    one.push_back(item);
-                  }
-                  if (to & 2)
-                  {
-                    two.push_back(item);
-                  }
+                  one[ones] = item;
+                  ones += static_cast<size_t>(to & 1);
+                  two[twos] = item;
+                  twos += static_cast<size_t>((to >> 1) & 1);
                 }
+                mine.Ones = ones;
+                mine.Twos = twos;
               });
-  for (int t = 0; t < threads; ++t)
+  for (const Lists& mine : collected)
   {
-    first.insert(first.end(), collected[2 * t].begin(), collected[2 * t].end());
-    second.insert(second.end(), collected[2 * t + 1].begin(), collected[2 * t + 1].end());
+    first.insert(first.end(), mine.One.begin(), mine.One.begin() + mine.Ones);
+    second.insert(second.end(), mine.Two.begin(), mine.Two.begin() + mine.Twos);
   }
 }
 
