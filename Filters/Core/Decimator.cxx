@@ -766,8 +766,9 @@ void Decimator::CollapseInBatches(DecimatorStatistics& stats,
       this->Mesh.RemoveLiveFaces(ws.RemovedFaces);
     };
     // 1. The blocks, on several threads: the collapses whose whole neighbourhood lies in their
-    // block, first in small blocks, then those deferred from them in wide ones; the others
-    // are deferred again. Each block sorts its own candidates by cost.
+    // block, first in small blocks, then those deferred from them in wide ones, then those
+    // deferred from these in shifted wide ones; the others are deferred again. Each block
+    // sorts its own candidates by cost.
     for (const BlockLevel& level : { this->SmallBlocks, this->WideBlocks, this->ShiftedBlocks })
     {
       if (level.Flag != this->SmallBlocks.Flag) // the batch comes in vertex order, those
