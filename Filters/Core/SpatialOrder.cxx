@@ -42,45 +42,22 @@ void ComputeSpatialOrder(int32_t numVertices, const double* points, int32_t numT
   const auto n = static_cast<size_t>(std::max(numVertices, 0));
   const auto nt = static_cast<size_t>(std::max(numTriangles, 0));
 
-  // The bounding box (finite coordinates only), as a cube: each thread's box of its range, then
-  // their union.
-  struct Box
-  {
-    double Lo[3] = { 0, 0, 0 }, Hi[3] = { 0, 0, 0 };
-    bool Any = false;
-  };
-  std::vector<Box> boxes(static_cast<size_t>(std::max(threads, 1)));
-  Box* perThread = boxes.data();
-  ParallelFor(n, threads,
-              [points, perThread](size_t begin, size_t end, int t)
-              {
-                Box box;
-                for (size_t v = begin; v < end; ++v)
-                {
-                  const double* p = points + 3 * v;
-                  if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
-                  {
-                    continue;
-                  }
-                  for (int k = 0; k < 3; ++k)
-                  {
-                    box.Lo[k] = box.Any ? std::min(box.Lo[k], p[k]) : p[k];
-                    box.Hi[k] = box.Any ? std::max(box.Hi[k], p[k]) : p[k];
-                  }
-                  box.Any = true;
-                }
-                perThread[t] = box;
-              });
+  // The bounding box (finite coordinates only), as a cube.
   double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
   bool any = false;
-  for (const Box& box : boxes)
+  for (size_t v = 0; v < n; ++v)
   {
-    for (int k = 0; box.Any && k < 3; ++k)
+    const double* p = points + 3 * v;
+    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
     {
-      lo[k] = any ? std::min(lo[k], box.Lo[k]) : box.Lo[k];
-      hi[k] = any ? std::max(hi[k], box.Hi[k]) : box.Hi[k];
+      continue;
     }
-    any = any || box.Any;
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = any ? std::min(lo[k], p[k]) : p[k];
+      hi[k] = any ? std::max(hi[k], p[k]) : p[k];
+    }
+    any = true;
   }
   const double extent = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
 
