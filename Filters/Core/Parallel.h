@@ -85,50 +85,68 @@ bool ParallelAll(size_t count, int threads, const Body& body)
  * Append to `first` and `second`, in index order, the item that make(i, item) fills in for
  * each i < count, to the lists whose bits make returns (1: `first`, 2: `second`, 3: both), on
  * `threads` threads: each collects its own range, and the ranges are appended in order, so the
- * lists are the same whatever the number of threads. Each thread makes room for its whole
- * range in both lists at once.
+ * lists are the same whatever the number of threads. Returns how many items make marked with
+ * bit 4 (a count of its own, e.g. of the items it looked at but took in neither list). Each
+ * thread makes room for `firstShare` of its range in `first` to begin with.
  */
 template <typename T, typename Make>
-void CollectInOrder(size_t count, int threads, const Make& make, std::vector<T>& first,
-                    std::vector<T>& second)
+size_t CollectInOrder(size_t count, int threads, const Make& make, std::vector<T>& first,
+                      std::vector<T>& second, double firstShare = 1.0)
 {
   threads = std::max(threads, 1);
   // Each thread writes every item to both of its lists and moves their ends on, or not: no
   // branch on what make returns (which would mispredict as often as the lists' shares are
-  // even).
+  // even). Room is made ahead, a chunk at a time.
+  constexpr size_t Chunk = 256;
   struct Lists
   {
     Buffer<T> One, Two;
-    size_t Ones = 0, Twos = 0;
+    size_t Ones = 0, Twos = 0, Marked = 0;
   };
   std::vector<Lists> collected(static_cast<size_t>(threads));
   Lists* lists = collected.data();
   ParallelFor(count, threads,
-              [lists, make](size_t begin, size_t end, int t)
+              [lists, make, firstShare](size_t begin, size_t end, int t)
               {
                 Lists& mine = lists[t];
-                mine.One.resize(end - begin);
-                mine.Two.resize(end - begin);
-                T* one = mine.One.data();
-                T* two = mine.Two.data();
-                size_t ones = 0, twos = 0;
+                mine.One.resize(static_cast<size_t>(firstShare * static_cast<double>(end - begin)));
+                size_t ones = 0, twos = 0, marked = 0;
                 T item;
-                for (size_t i = begin; i < end; ++i)
+                for (size_t chunk = begin; chunk < end; chunk += Chunk)
                 {
-                  const int to = make(i, item);
-                  one[ones] = item;
-                  ones += static_cast<size_t>(to & 1);
-                  two[twos] = item;
-                  twos += static_cast<size_t>((to >> 1) & 1);
+                  if (mine.One.size() < ones + Chunk)
+                  {
+                    mine.One.resize(std::max(2 * mine.One.size(), ones + Chunk));
+                  }
+                  if (mine.Two.size() < twos + Chunk)
+                  {
+                    mine.Two.resize(std::max(2 * mine.Two.size(), twos + Chunk));
+                  }
+                  T* one = mine.One.data();
+                  T* two = mine.Two.data();
+                  const size_t stop = std::min(end, chunk + Chunk);
+                  for (size_t i = chunk; i < stop; ++i)
+                  {
+                    const int to = make(i, item);
+                    one[ones] = item;
+                    ones += static_cast<size_t>(to & 1);
+                    two[twos] = item;
+                    twos += static_cast<size_t>((to >> 1) & 1);
+                    marked += static_cast<size_t>((to >> 2) & 1);
+                  }
                 }
                 mine.Ones = ones;
                 mine.Twos = twos;
+                mine.Marked = marked;
               });
+  size_t marked = 0;
   for (const Lists& mine : collected)
   {
     first.insert(first.end(), mine.One.begin(), mine.One.begin() + mine.Ones);
     second.insert(second.end(), mine.Two.begin(), mine.Two.begin() + mine.Twos);
+    marked += mine.Marked;
   }
+  return marked;
 }
 
 /**

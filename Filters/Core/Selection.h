@@ -171,74 +171,25 @@ size_t SelectCheapest(size_t count, const int32_t* vertices, const KeyOf& keyOf,
   // 2. The candidates up to `upper`, in vertex order (each thread its range, appended in range
   // order), those of them from `lower` on apart, and how many candidates there are in all and
   // below `lower`.
-  struct Taken
-  {
-    Buffer<Candidate> List, Uncertain; ///< the first Size and Unsure are written
-    size_t Size = 0, Unsure = 0, Candidates = 0, Below = 0;
-  };
-  std::vector<Taken> taken(threads);
   const size_t first = out.size();
   size_t total = 0, below = 0;
   std::vector<Candidate> uncertain;
   const auto collect = [&](double upTo, double share)
   {
-    Taken* lists = taken.data();
-    ParallelFor(count, threads,
-                [lists, keyOf, vertexAt, lower, upTo, share](size_t begin, size_t end, int t)
-                {
-                  // Without branches on the keys (which would mispredict a fourth of the
-                  // time): each candidate is written to both lists, and kept by moving their
-                  // ends on, or not; room is made ahead, a chunk at a time.
-                  constexpr size_t Chunk = 256;
-                  Taken& mine = lists[t];
-                  mine.Size = mine.Unsure = mine.Candidates = mine.Below = 0;
-                  mine.List.resize(static_cast<size_t>(share * static_cast<double>(end - begin)));
-                  for (size_t chunk = begin; chunk < end; chunk += Chunk)
-                  {
-                    for (Buffer<Candidate>* list : { &mine.List, &mine.Uncertain })
-                    {
-                      const size_t used = list == &mine.List ? mine.Size : mine.Unsure;
-                      if (list->size() < used + Chunk)
-                      {
-                        list->resize(std::max(2 * list->size(), used + Chunk));
-                      }
-                    }
-                    Candidate* kept = mine.List.data();
-                    Candidate* unsure = mine.Uncertain.data();
-                    size_t size = mine.Size, unsureSize = mine.Unsure, candidates = 0,
-                           belowCount = 0;
-                    const size_t stop = std::min(end, chunk + Chunk);
-                    for (size_t i = chunk; i < stop; ++i)
-                    {
-                      // (keyOf need not write the key of a non-candidate)
-                      Candidate c{ 0.0, vertexAt(i) };
-                      const bool candidate = keyOf(c.Vertex, c.Key);
-                      const bool in = candidate & (c.Key <= upTo);
-                      const bool low = in & (c.Key < lower);
-                      kept[size] = c;
-                      size += in ? 1 : 0;
-                      unsure[unsureSize] = c;
-                      unsureSize += (in & !low) ? 1 : 0;
-                      candidates += candidate ? 1 : 0;
-                      belowCount += low ? 1 : 0;
-                    }
-                    mine.Size = size;
-                    mine.Unsure = unsureSize;
-                    mine.Candidates += candidates;
-                    mine.Below += belowCount;
-                  }
-                });
     out.resize(first);
     uncertain.clear();
-    total = below = 0;
-    for (const Taken& mine : taken)
-    {
-      out.insert(out.end(), mine.List.begin(), mine.List.begin() + mine.Size);
-      uncertain.insert(uncertain.end(), mine.Uncertain.begin(),
-                       mine.Uncertain.begin() + mine.Unsure);
-      total += mine.Candidates;
-      below += mine.Below;
-    }
+    total = CollectInOrder(
+      count, threads,
+      [keyOf, vertexAt, lower, upTo](size_t i, Candidate& c)
+      {
+        c = { 0.0, vertexAt(i) }; // keyOf need not write the key of a non-candidate
+        const bool candidate = keyOf(c.Vertex, c.Key);
+        const bool in = candidate & (c.Key <= upTo);
+        const bool low = in & (c.Key < lower);
+        return (in ? 1 : 0) | ((in & !low) ? 2 : 0) | (candidate ? 4 : 0);
+      },
+      out, uncertain, share);
+    below = out.size() - first - uncertain.size();
   };
   collect(upper, std::min(1.0, 1.05 * upperShare) + 1e-3);
   const size_t wanted = std::min(total, static_cast<size_t>(howMany(total)));
