@@ -638,6 +638,56 @@ void TestSortByKey()
   }
 }
 
+void TestCollectInOrder()
+{
+  // CollectInOrder against a plain loop, on 1 to 3 threads, for sizes around its chunks of
+  // 256 and room made for none, some or all of a range at first: both lists in index order,
+  // items in both or neither, and the count of the items marked with bit 4.
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> bits(0, 7);
+  for (const size_t count :
+       { size_t(0), size_t(1), size_t(255), size_t(256), size_t(257), size_t(1000), size_t(20000) })
+  {
+    std::vector<int> marks(count);
+    for (int& m : marks)
+    {
+      m = bits(rng);
+    }
+    std::vector<int32_t> expectedFirst = { -7 }, expectedSecond;
+    size_t expectedMarked = 0;
+    for (size_t i = 0; i < count; ++i)
+    {
+      if (marks[i] & 1)
+      {
+        expectedFirst.push_back(static_cast<int32_t>(3 * i));
+      }
+      if (marks[i] & 2)
+      {
+        expectedSecond.push_back(static_cast<int32_t>(3 * i));
+      }
+      expectedMarked += (marks[i] & 4) ? 1 : 0;
+    }
+    for (const int threads : { 1, 2, 3 })
+    {
+      for (const double share : { 0.0, 0.3, 1.0 })
+      {
+        std::vector<int32_t> first = { -7 }, second; // appended to, not replaced
+        const int* m = marks.data();
+        const size_t marked = CollectInOrder(
+          count, threads,
+          [m](size_t i, int32_t& item)
+          {
+            item = static_cast<int32_t>(3 * i);
+            return m[i];
+          },
+          first, second, share);
+        CD_CHECK_MSG(first == expectedFirst && second == expectedSecond && marked == expectedMarked,
+                     "count " << count << " threads " << threads << " share " << share);
+      }
+    }
+  }
+}
+
 void TestCountingSort()
 {
   // CountingSort against std::stable_sort, on 1 to 3 threads: every item placed once, in key
@@ -1811,6 +1861,7 @@ int main(int argc, char* argv[])
                         { "VertexHeap", TestVertexHeap },
                         { "BatchSelection", TestBatchSelection },
                         { "SortByKey", TestSortByKey },
+                        { "CollectInOrder", TestCollectInOrder },
                         { "CountingSort", TestCountingSort },
                         { "HighValenceBound", TestHighValenceBound },
                         { "HalfEdgeBuildClosed", TestHalfEdgeBuildClosed },
