@@ -362,7 +362,7 @@ private:
   void CollapseBlock(Candidate* begin, Candidate* end, int32_t block, const BlockLevel& level,
                      int32_t pass, Workspace& ws);
   /// Fetch the neighbourhoods of candidates[i + a few] into the cache (block >= 0: reading
-  /// the records of that block of 2^shift ids only).
+  /// the records of that block of `level` only).
   void PrefetchCandidates(const Candidate* candidates, size_t i, size_t count, int32_t block,
                           const BlockLevel& level) const;
   /// Sweep the records of `block` (its vertices and faces) into the cache ahead of its

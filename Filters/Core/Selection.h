@@ -159,10 +159,10 @@ size_t SelectCheapest(size_t count, const int32_t* vertices, const KeyOf& keyOf,
       upperShare = static_cast<double>(index + 1) / size;
       end = sample.begin() + index;
     }
-    const double below = std::floor(share * size - margin);
-    if (below > 0)
+    const double lowPosition = std::floor(share * size - margin);
+    if (lowPosition > 0)
     {
-      const auto lowIndex = static_cast<size_t>(below);
+      const auto lowIndex = static_cast<size_t>(lowPosition);
       std::nth_element(sample.begin(), sample.begin() + lowIndex, end);
       lower = sample[lowIndex];
     }
