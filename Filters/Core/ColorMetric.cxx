@@ -47,30 +47,21 @@ void CollapseColorErrors(const double p0[3], const double c0[3], Ring& ring, dou
     errors[i] = 0.0;
   }
   // errors[j] = sum over i of |product[i] - after(i, j)|, after(i, j) being the colour-length
-  // product of i and j (0 for i = j). It is symmetric, so each pair is computed once, in row
-  // min(i, j): row i adds its term to errors[k] for every k > i (a vectorised loop) and keeps
-  // the terms of errors[i] to add them in the order of k. Every errors[j] thus sums its terms
-  // in the order of i, as the plain double loop would: the same bits with half the roots.
-  double* terms = ring.Terms.data();
+  // product of i and j (0 for i = j, where the differences are zero). Row by row, each row a
+  // vectorised loop over every j (padded entries included, whose results are not read): every
+  // errors[j] sums its terms in the order of i, as the plain loop of CollapseColorError does,
+  // and after(i, j) has the same bits as after(j, i) (the differences only change sign).
   for (int i = 0; i < n; ++i)
   {
     const double xi = x[i], yi = y[i], zi = z[i], ri = r[i], gi = g[i], bi = b[i];
     const double before = product[i];
-    errors[i] += before; // the pair (i, i): after is 0
-    for (int k = i + 1; k < n; ++k)
+    for (int k = 0; k < padded; ++k)
     {
       const double dx = x[k] - xi, dy = y[k] - yi, dz = z[k] - zi;
       const double dr = r[k] - ri, dg = g[k] - gi, db = b[k] - bi;
       const double after = std::sqrt((dr * dr + dg * dg + db * db) * (dx * dx + dy * dy + dz * dz));
       errors[k] += std::abs(before - after);
-      terms[k] = std::abs(product[k] - after);
     }
-    double sum = errors[i];
-    for (int k = i + 1; k < n; ++k)
-    {
-      sum += terms[k];
-    }
-    errors[i] = sum;
   }
 }
 

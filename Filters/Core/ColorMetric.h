@@ -87,7 +87,6 @@ struct Ring
   std::vector<double> QC;      ///< Q(i) at its own position (the quadric's constant term)
   std::vector<uint8_t> IsCandidate;
   std::vector<double> Product; ///< scratch: |c0-ci| |p0-pi|
-  std::vector<double> Terms;   ///< scratch: one row of CollapseColorErrors' pairs
 
   /// Size rounded up to a multiple of 4: the arrays hold zeros up to there after Pad().
   int PaddedSize() const { return (this->Size + 3) & ~3; }
@@ -138,8 +137,8 @@ private:
   {
     const size_t n = 2 * this->Vertex.size() + 16; // a multiple of 4
     this->Vertex.resize(n);
-    for (auto* v : { &this->X, &this->Y, &this->Z, &this->R, &this->G, &this->B, &this->QC,
-                     &this->Product, &this->Terms })
+    for (auto* v :
+         { &this->X, &this->Y, &this->Z, &this->R, &this->G, &this->B, &this->QC, &this->Product })
     {
       v->resize(n);
     }
