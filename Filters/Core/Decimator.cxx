@@ -1177,14 +1177,28 @@ void Decimator::CostRing(int32_t v0, bool withColorError, Workspace& ws) const
   const double* y = ring.Y.data();
   const double* z = ring.Z.data();
   const double* qc = ring.QC.data();
-  for (int j = 0; j < n; ++j)
+  const auto quadricError = [=](int j)
   {
     const double dx = x[j] - p0[0], dy = y[j] - p0[1], dz = z[j] - p0[2];
     const double quadric = dx * (a00 * dx + a01 * dy + a02 * dz) +
       dy * (a01 * dx + a11 * dy + a12 * dz) + dz * (a02 * dx + a12 * dy + a22 * dz) +
       2.0 * (b0 * dx + b1 * dy + b2 * dz) + c + qc[j];
-    const double q = weight * std::max(0.0, quadric);
-    costs[j] = paperMetric ? TotalCost(q, importance, costs[j]) : q;
+    return weight * (quadric > 0.0 ? quadric : 0.0); // std::max(0.0, quadric), NaN to 0 too
+  };
+  // Two loops without branches, so that each is vectorised.
+  if (paperMetric)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      costs[j] = TotalCost(quadricError(j), importance, costs[j]);
+    }
+  }
+  else
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      costs[j] = quadricError(j);
+    }
   }
 }
 
