@@ -39,13 +39,15 @@ void CollapseColorErrors(const double p0[3], const double c0[3], Ring& ring, dou
   const double* g = ring.G.data();
   const double* b = ring.B.data();
   double* product = ring.Product.data();
+  // In locals, which the stores below cannot change (so that the loop is vectorised).
+  const double px = p0[0], py = p0[1], pz = p0[2], cr = c0[0], cg = c0[1], cb = c0[2];
   for (int i = 0; i < padded; ++i)
   {
-    const double dx = x[i] - p0[0], dy = y[i] - p0[1], dz = z[i] - p0[2];
-    const double dr = r[i] - c0[0], dg = g[i] - c0[1], db = b[i] - c0[2];
+    const double dx = x[i] - px, dy = y[i] - py, dz = z[i] - pz;
+    const double dr = r[i] - cr, dg = g[i] - cg, db = b[i] - cb;
     product[i] = std::sqrt((dr * dr + dg * dg + db * db) * (dx * dx + dy * dy + dz * dz));
-    errors[i] = 0.0;
   }
+  std::fill(errors, errors + padded, 0.0);
   // errors[j] = sum over i of |product[i] - after(i, j)|, after(i, j) being the colour-length
   // product of i and j (0 for i = j, where the differences are zero). Row by row, each row a
   // vectorised loop over every j (padded entries included, whose results are not read): every
