@@ -191,8 +191,8 @@ void PrintHelp(std::ostream& os)
         "                       only when no MESH is given\n"
         "  --no-sweep           no scale sweep\n"
         "  --no-default-meshes  without MESH, skip the real mesh and the 977k sphere\n"
-        "  --repeat N           runs per method and mesh; the median time is reported\n"
-        "                       (default 1)\n"
+        "  --repeat N           runs per method and mesh, in rounds (each method once per\n"
+        "                       round); the median time is reported (default 1)\n"
         "  --quadric-max N      in the sweep, run vtkQuadricDecimation only up to N input\n"
         "                       triangles (default 1M; 0 = no limit). Given meshes always run it.\n"
         "  --no-quadric         skip vtkQuadricDecimation everywhere\n"
@@ -498,12 +498,24 @@ bool MethodAvailable(int method)
 #endif
 }
 
-RunResult Measure(int method, vtkPolyData* given, const Options& options, const std::string& name)
+/// One method's runs on one mesh, gathered over the rounds of RunCase.
+struct Measurement
 {
-  RunResult result;
-  std::vector<double> times, cpuTimes;
-  vtkSmartPointer<vtkPolyData> mesh = given;
-  for (int r = 0; r < options.Repeat; ++r)
+  RunResult Result;
+  std::vector<double> Times, CpuTimes;
+  vtkSmartPointer<vtkPolyData> Mesh; // the mesh as given, or its cleaned copy (see below)
+};
+
+/// Run `r` (0-based) of `method`, added to `m`.
+void MeasureOnce(int method, vtkPolyData* given, const Options& options, const std::string& name,
+                 int r, Measurement& m)
+{
+  RunResult& result = m.Result;
+  if (!m.Mesh)
+  {
+    m.Mesh = given;
+  }
+  for (;;)
   {
     std::fprintf(
       stderr, "[bench] %s: %s%s ...", name.c_str(), MethodName(method),
@@ -516,6 +528,7 @@ RunResult Measure(int method, vtkPolyData* given, const Options& options, const 
     bool reset = true;
     {
       PeakMemoryProbe probe;
+      vtkPolyData* mesh = m.Mesh;
       switch (method)
       {
         case OursColor:
@@ -546,7 +559,7 @@ RunResult Measure(int method, vtkPolyData* given, const Options& options, const 
       reset = probe.PeakWasReset();
     }
     std::fprintf(stderr, " %.3f s (CPU %.3f s)\n", single.Seconds, single.CpuSeconds);
-    if (!single.Ok && method == QuadricAttributes && mesh == given)
+    if (!single.Ok && method == QuadricAttributes && m.Mesh == given)
     {
       // vtkQuadricDecimation's attribute metric gives up on some raw scans ("Unable to factor
       // attribute matrix!"); it runs once duplicate points are merged. Clean (untimed) and run
@@ -560,8 +573,7 @@ RunResult Measure(int method, vtkPolyData* given, const Options& options, const 
       vtkNew<vtkCleanPolyData> clean;
       clean->SetInputData(given);
       clean->Update();
-      mesh = clean->GetOutput();
-      --r;
+      m.Mesh = clean->GetOutput();
       continue;
     }
     if (!single.Ok)
@@ -570,17 +582,17 @@ RunResult Measure(int method, vtkPolyData* given, const Options& options, const 
                    name.c_str(), MethodName(method), single.Error.c_str(), single.OutputTriangles);
       result.Error = single.Error;
     }
-    times.push_back(single.Seconds);
-    cpuTimes.push_back(single.CpuSeconds);
+    m.Times.push_back(single.Seconds);
+    m.CpuTimes.push_back(single.CpuSeconds);
     result.OutputTriangles = single.OutputTriangles;
     result.StateBytes = single.StateBytes;
     result.PeakBytes = std::max(result.PeakBytes, peak);
     result.PeakReset = result.PeakReset && reset;
+    result.Ran = true;
+    result.Seconds = Median(m.Times);
+    result.CpuSeconds = Median(m.CpuTimes);
+    return;
   }
-  result.Ran = true;
-  result.Seconds = Median(times);
-  result.CpuSeconds = Median(cpuTimes);
-  return result;
 }
 
 /// The same triangles for every method: polygons and strips are triangulated once here.
@@ -612,20 +624,36 @@ CaseResult RunCase(const std::string& name, const std::string& description, vtkP
   result.Description = description;
   result.Points = mesh->GetNumberOfPoints();
   result.Triangles = CountTriangles(mesh);
+  std::vector<int> methods;
   for (int method = 0; method < NumberOfMethods; ++method)
   {
     if (!MethodAvailable(method))
     {
       result.Runs[method].Skipped = "not built (meshoptimizer not found)";
-      continue;
     }
-    if ((method == QuadricAttributes || method == QuadricGeometry) && !runQuadric)
+    else if ((method == QuadricAttributes || method == QuadricGeometry) && !runQuadric)
     {
       result.Runs[method].Skipped =
         options.NoQuadric ? "not run (--no-quadric)" : "not run (above --quadric-max)";
-      continue;
     }
-    result.Runs[method] = Measure(method, mesh, options, name);
+    else
+    {
+      methods.push_back(method);
+    }
+  }
+  // In rounds, each method once per round: a slow spell of a shared machine falls on every
+  // method rather than on the repeats of one, and the ratios of the medians stay fair.
+  Measurement measured[NumberOfMethods];
+  for (int r = 0; r < options.Repeat; ++r)
+  {
+    for (const int method : methods)
+    {
+      MeasureOnce(method, mesh, options, name, r, measured[method]);
+    }
+  }
+  for (const int method : methods)
+  {
+    result.Runs[method] = measured[method].Result;
   }
   return result;
 }
@@ -853,7 +881,11 @@ std::string Report(const Options& options, const std::vector<CaseResult>& cases,
        << (dirty.empty() ? "" : " with uncommitted changes in Filters/") << "\n";
   }
   os << "- Repeats: " << options.Repeat << " run(s) per method and mesh"
-     << (options.Repeat > 1 ? ", median time, largest peak" : "") << "\n\n";
+     << (options.Repeat > 1 ? ", taken in rounds (each method once per round, so that a slow "
+                              "spell of the machine falls on all of them), median time, largest "
+                              "peak"
+                            : "")
+     << "\n\n";
 
   os << "## What is measured\n\n"
         "- Every method runs in this one process on the very same vtkPolyData (triangles; "
