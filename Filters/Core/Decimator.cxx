@@ -1006,8 +1006,9 @@ void Decimator::PrefetchCandidates(const Candidate* candidates, size_t i, size_t
                                    int32_t block, const BlockLevel& level) const
 {
   // The candidates are known in advance: their neighbourhoods are fetched a few collapses
-  // ahead, in three stages (the vertex, its first face and target, the target's first face),
-  // none of which waits. In a block (block >= 0) only the block's records are read.
+  // ahead, in three stages (the vertex, its first face and target, the target's first face
+  // and both metric records, which the collapse merges), none of which waits. In a block
+  // (block >= 0) only the block's records are read.
   const auto mayRead = [block, &level](int32_t v)
   { return block < 0 || level.BlockOf(v) == block; };
   if (i + FarAhead < count)
@@ -1031,11 +1032,20 @@ void Decimator::PrefetchCandidates(const Candidate* candidates, size_t i, size_t
   }
   if (i + NearAhead < count)
   {
-    const int32_t target = this->Best[candidates[i + NearAhead].Vertex];
+    const int32_t v = candidates[i + NearAhead].Vertex;
+    const int32_t target = this->Best[v];
+    if (!this->Metrics.empty())
+    {
+      COLORDECIMATION_PREFETCH(this->Metrics.data() + v);
+    }
     if (target >= 0 && mayRead(target))
     {
       this->Mesh.PrefetchFirstFace(target);
       COLORDECIMATION_PREFETCH(this->Hot.data() + target);
+      if (!this->Metrics.empty())
+      {
+        COLORDECIMATION_PREFETCH(this->Metrics.data() + target);
+      }
     }
   }
 }
