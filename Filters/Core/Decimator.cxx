@@ -347,7 +347,7 @@ void Decimator::PrefetchEvaluation(const int32_t* vertices, size_t i, size_t end
     COLORDECIMATION_PREFETCH(this->Hot.data() + v);
     if (!this->Metrics.empty())
     {
-      COLORDECIMATION_PREFETCH(this->Metrics.data() + v);
+      this->PrefetchMetric(v);
     }
   }
   if (i + MiddleAhead < end)
@@ -383,7 +383,7 @@ void Decimator::PrefetchNeighborhood(int32_t v0)
                                  }
                                  else
                                  {
-                                   COLORDECIMATION_PREFETCH(this->Metrics.data() + u);
+                                   this->PrefetchMetric(u);
                                  }
                                  COLORDECIMATION_PREFETCH(this->Best.data() + u);
                                  if (this->Stamp.empty())
@@ -1036,7 +1036,7 @@ void Decimator::PrefetchCandidates(const Candidate* candidates, size_t i, size_t
     const int32_t target = this->Best[v];
     if (!this->Metrics.empty())
     {
-      COLORDECIMATION_PREFETCH(this->Metrics.data() + v);
+      this->PrefetchMetric(v);
     }
     if (target >= 0 && mayRead(target))
     {
@@ -1044,7 +1044,7 @@ void Decimator::PrefetchCandidates(const Candidate* candidates, size_t i, size_t
       COLORDECIMATION_PREFETCH(this->Hot.data() + target);
       if (!this->Metrics.empty())
       {
-        COLORDECIMATION_PREFETCH(this->Metrics.data() + target);
+        this->PrefetchMetric(target);
       }
     }
   }
@@ -1227,7 +1227,7 @@ Decimator::Choice Decimator::Evaluate(int32_t v0, bool exact, bool allowBound, W
   }
   else
   {
-    COLORDECIMATION_PREFETCH(this->Metrics.data() + v0);
+    this->PrefetchMetric(v0);
     this->GatherRing(v0, ws.CurrentRing);
     choice.Bound = allowBound && !exact && this->Options.BoundHighValence &&
       ws.CurrentRing.Size > LargeRing && this->Options.Metric == ErrorMetric::HalfEdgeColor &&

@@ -74,6 +74,7 @@
 #include "ColorQuadric.h"
 #include "ColorSpace.h"
 #include "HalfEdgeMesh.h"
+#include "Prefetch.h"
 #include "Selection.h"
 #include "SpatialOrder.h"
 #include "VertexHeap.h"
@@ -413,6 +414,14 @@ private:
   void PrefetchNeighborhood(int32_t v0);
   /// Fetch what evaluating vertices[i + a few] reads into the cache.
   void PrefetchEvaluation(const int32_t* vertices, size_t i, size_t end) const;
+  /// Hint that v's metric record is about to be read: both of its ends, since a 48-byte record
+  /// straddles two cache lines one time in two.
+  void PrefetchMetric(int32_t v) const
+  {
+    const char* record = reinterpret_cast<const char*>(this->Metrics.data() + v);
+    COLORDECIMATION_PREFETCH(record);
+    COLORDECIMATION_PREFETCH(record + sizeof(VertexMetric) - 1);
+  }
   /// ColorQuadric: cost of every ring member (and, with OptimalPlacement, its placement).
   void CostRingColorQuadric(int32_t v0, Workspace& ws) const;
   /**
