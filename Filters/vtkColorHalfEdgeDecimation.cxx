@@ -28,6 +28,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolygon.h"
+#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTriangleStrip.h"
@@ -519,6 +520,7 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   , ActualReduction(0.0)
   , NumberOfCollapses(0)
   , StateMemory(0)
+  , NumberOfThreadsUsed(0)
 {
   this->SetOriginalPointIdsArrayName("vtkOriginalPointIds");
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
@@ -567,6 +569,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   this->ActualReduction = 0.0;
   this->NumberOfCollapses = 0;
   this->StateMemory = 0;
+  this->NumberOfThreadsUsed = 0;
   if (!input || !output)
   {
     return 0;
@@ -603,15 +606,19 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
     return 1;
   }
 
+  // Threads: as many as asked, or as vtkSMPTools runs (VTK_SMP_MAX_THREADS, ParaView's settings).
+  const int threads = this->NumberOfThreads > 0
+    ? this->NumberOfThreads
+    : std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
   colordecimation::Buffer<double> xyz;
-  if (!GatherPoints(input->GetPoints(), xyz, this->NumberOfThreads))
+  if (!GatherPoints(input->GetPoints(), xyz, threads))
   {
     vtkErrorMacro(<< "The input has NaN or infinite point coordinates; output is empty.");
     return 1;
   }
 
   TriangleSoup soup;
-  ExtractTriangles(input, soup, this->NumberOfThreads);
+  ExtractTriangles(input, soup, threads);
   if (soup.IdsOutOfRange)
   {
     vtkErrorMacro(<< "The input has cells with point ids outside [0, " << numPoints
@@ -695,7 +702,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   options.OptimalPlacement = this->OptimalPlacement != 0;
   options.Schedule = this->CollapseSchedule == Batched ? colordecimation::CollapseSchedule::Batched
                                                        : colordecimation::CollapseSchedule::Greedy;
-  options.NumberOfThreads = this->NumberOfThreads;
+  options.NumberOfThreads = threads;
   options.KeepVertexState = false; // the output needs the mesh and the moved vertices only
   options.ColorWeight = this->ColorWeight;
   options.BoundaryWeight = this->BoundaryWeight;
@@ -750,6 +757,8 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   }
   this->NumberOfCollapses = stats.Collapses;
   this->StateMemory = static_cast<vtkIdType>(stats.StateBytes);
+  this->NumberOfThreadsUsed =
+    std::max({ stats.Threads, stats.CollapseThreads, stats.WideCollapseThreads });
 
   // Output: the surviving triangles on the points they use, in input order.
   const colordecimation::HalfEdgeMesh& mesh = decimator.GetMesh();
@@ -931,4 +940,5 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ActualReduction: " << this->ActualReduction << "\n";
   os << indent << "NumberOfCollapses: " << this->NumberOfCollapses << "\n";
   os << indent << "StateMemory: " << this->StateMemory << "\n";
+  os << indent << "NumberOfThreadsUsed: " << this->NumberOfThreadsUsed << "\n";
 }

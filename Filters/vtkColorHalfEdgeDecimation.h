@@ -196,9 +196,10 @@ public:
 
   ///@{
   /**
-   * Set/Get the number of threads that cost vertices: the initial costs, and with the Batched
-   * schedule the re-costing passes. 0 (default): one per hardware thread. The output does
-   * not depend on it.
+   * Set/Get the number of threads of the parallel phases (set-up, costing, and with the
+   * Batched schedule the collapses by blocks and the re-costing passes). 0 (default): as
+   * many as vtkSMPTools runs (vtkSMPTools::GetEstimatedNumberOfThreads(), which obeys
+   * VTK_SMP_MAX_THREADS and ParaView's thread settings). The output does not depend on it.
    */
   vtkSetClampMacro(NumberOfThreads, int, 0, VTK_INT_MAX);
   vtkGetMacro(NumberOfThreads, int);
@@ -274,6 +275,13 @@ public:
    */
   vtkGetMacro(StateMemory, vtkIdType);
 
+  /**
+   * The most threads the last execution ran on at once. With NumberOfThreads 0 the filter
+   * takes its thread count from vtkSMPTools (so VTK_SMP_MAX_THREADS and ParaView's thread
+   * settings apply).
+   */
+  vtkGetMacro(NumberOfThreadsUsed, int);
+
 protected:
   vtkColorHalfEdgeDecimation();
   ~vtkColorHalfEdgeDecimation() override;
@@ -297,6 +305,7 @@ protected:
   double ActualReduction;
   vtkIdType NumberOfCollapses;
   vtkIdType StateMemory;
+  int NumberOfThreadsUsed;
 
 private:
   vtkColorHalfEdgeDecimation(const vtkColorHalfEdgeDecimation&) = delete;
