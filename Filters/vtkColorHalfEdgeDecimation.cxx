@@ -9,7 +9,7 @@
 #include "vtkColorHalfEdgeDecimation.h"
 
 #include "Core/Decimator.h"
-#include "Core/Parallel.h"
+#include "Core/util/Parallel.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"

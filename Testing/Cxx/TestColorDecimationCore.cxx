@@ -2,15 +2,15 @@
 // the vertex heap against a reference, the corner table and the collapse rules.
 #include "ColorDecimationTestUtilities.h"
 
-#include "CollapseRules.h"
-#include "ColorMetric.h"
 #include "Decimator.h"
-#include "HalfEdgeMesh.h"
-#include "Parallel.h"
-#include "Quadric.h"
-#include "Selection.h"
-#include "SpatialOrder.h"
-#include "VertexHeap.h"
+#include "mesh/HalfEdgeMesh.h"
+#include "mesh/SpatialOrder.h"
+#include "metric/HalfEdgeColor.h"
+#include "metric/Quadric.h"
+#include "rules/CollapseRules.h"
+#include "schedule/Selection.h"
+#include "schedule/VertexHeap.h"
+#include "util/Parallel.h"
 
 #include "ColorDecimationMeshes.h"
 #include "vtkDataArray.h"

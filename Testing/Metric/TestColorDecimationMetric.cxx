@@ -5,12 +5,12 @@
 // vtkColorHalfEdgeDecimation (targets met, manifold kept, no flips, colour arrays written back).
 #include "ColorDecimationTestUtilities.h"
 
-#include "CollapseRules.h"
-#include "ColorMetric.h"
-#include "ColorQuadric.h"
-#include "ColorSpace.h"
 #include "Decimator.h"
-#include "HalfEdgeMesh.h"
+#include "mesh/HalfEdgeMesh.h"
+#include "metric/ColorQuadric.h"
+#include "metric/ColorSpace.h"
+#include "metric/HalfEdgeColor.h"
+#include "rules/CollapseRules.h"
 
 #include "ColorDecimationMeshes.h"
 #include "vtkColorHalfEdgeDecimation.h"

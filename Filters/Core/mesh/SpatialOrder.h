@@ -17,7 +17,7 @@
 #ifndef colordecimation_SpatialOrder_h
 #define colordecimation_SpatialOrder_h
 
-#include "Parallel.h"
+#include "util/Parallel.h"
 #include "vtkColorDecimationModule.h" // for export macro
 
 #include <algorithm>

@@ -15,8 +15,8 @@
 #ifndef colordecimation_Selection_h
 #define colordecimation_Selection_h
 
-#include "Buffer.h"
-#include "Parallel.h"
+#include "util/Buffer.h"
+#include "util/Parallel.h"
 
 #include <algorithm>
 #include <cmath>

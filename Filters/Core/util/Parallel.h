@@ -10,7 +10,7 @@
 #ifndef colordecimation_Parallel_h
 #define colordecimation_Parallel_h
 
-#include "Buffer.h"
+#include "util/Buffer.h"
 
 #include <algorithm>
 #include <cstddef>

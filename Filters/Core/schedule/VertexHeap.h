@@ -24,7 +24,7 @@
 #ifndef colordecimation_VertexHeap_h
 #define colordecimation_VertexHeap_h
 
-#include "Prefetch.h"
+#include "util/Prefetch.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,6 +1,6 @@
-#include "ColorQuadric.h"
+#include "metric/ColorQuadric.h"
 
-#include "HalfEdgeMesh.h"
+#include "mesh/HalfEdgeMesh.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "ColorSpace.h"
+#include "metric/ColorSpace.h"
 
 #include <algorithm>
 #include <cmath>

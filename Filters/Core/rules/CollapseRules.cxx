@@ -1,7 +1,7 @@
-#include "CollapseRules.h"
+#include "rules/CollapseRules.h"
 
-#include "HalfEdgeMesh.h"
-#include "Parallel.h"
+#include "mesh/HalfEdgeMesh.h"
+#include "util/Parallel.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
-#include "SpatialOrder.h"
+#include "mesh/SpatialOrder.h"
 
-#include "Buffer.h"
-#include "Parallel.h"
+#include "util/Buffer.h"
+#include "util/Parallel.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
-#include "HalfEdgeMesh.h"
+#include "mesh/HalfEdgeMesh.h"
 
-#include "Parallel.h"
-#include "SpatialOrder.h"
+#include "mesh/SpatialOrder.h"
+#include "util/Parallel.h"
 
 #include <algorithm>
 

@@ -32,8 +32,8 @@
 #ifndef colordecimation_HalfEdgeMesh_h
 #define colordecimation_HalfEdgeMesh_h
 
-#include "Buffer.h"
-#include "Prefetch.h"
+#include "util/Buffer.h"
+#include "util/Prefetch.h"
 #include "vtkColorDecimationModule.h" // for export macro
 
 #include <cstdint>

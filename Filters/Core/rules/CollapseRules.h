@@ -20,7 +20,7 @@
 #ifndef colordecimation_CollapseRules_h
 #define colordecimation_CollapseRules_h
 
-#include "Buffer.h"
+#include "util/Buffer.h"
 #include "vtkColorDecimationModule.h" // for export macro
 
 #include <cstdint>

@@ -1,0 +1,132 @@
+#include "engine/Engine.h"
+
+#include <cmath>
+
+namespace colordecimation
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+constexpr double MaximumDriftAngle = 75.0; ///< degrees (section 5)
+
+CollapseRuleOptions MakeRuleOptions(const DecimatorOptions& options)
+{
+  CollapseRuleOptions rules;
+  rules.PreserveBoundary = options.PreserveBoundary;
+  const double angle = std::min(std::max(options.MaximumNormalAngle, 0.0), 180.0);
+  rules.MinimumNormalCosine = std::cos(angle * Pi / 180.0);
+  // Total drift from the input triangle's normal: at most 75 degrees (or the per-collapse
+  // angle if smaller), so that no triangle comes to face away from the input surface; none
+  // when the guard is switched off (180 degrees).
+  rules.MinimumDriftCosine =
+    angle >= 180.0 ? -1.0 : std::cos(std::min(angle, MaximumDriftAngle) * Pi / 180.0);
+  return rules;
+}
+} // namespace
+
+EngineBase::EngineBase(const DecimatorOptions& options)
+  : Options(options)
+  , RuleOptions(MakeRuleOptions(options))
+{
+}
+
+EngineBase::~EngineBase() = default;
+
+int EngineBase::ThreadCount(size_t items) const
+{
+  return ThreadsFor(items, this->Options.NumberOfThreads, MinimumThreadWork);
+}
+
+void EngineBase::SetUp(const DecimatorInput& input, bool useColor, DecimatorStatistics& stats)
+{
+  const int32_t n = input.NumberOfPoints;
+  this->ComputeOrder(input);
+  this->BuildMesh(input, stats);
+  const int32_t* source = this->Renumbered ? this->Order.OldVertex.data() : nullptr;
+  this->Geometry = MeasureFrame(this->Mesh, input.Points, source, this->ThreadCount(size_t(n)));
+  stats.MeanEdgeLength = this->Geometry.MeanEdgeLength;
+  this->UseColor = useColor;
+  FillHotRecords(this->Geometry, n, input.Points, useColor ? input.Colors : nullptr, source,
+                 this->Options.Space, this->ThreadCount(size_t(n)), this->Hot);
+  // Each face slot's input normal bounds how far collapses may turn it, in total.
+  CollapseRules::ComputeReferenceNormals(this->Mesh, this->Positions(), HotStride,
+                                         this->ReferenceNormals,
+                                         this->ThreadCount(size_t(input.NumberOfTriangles)));
+  this->ThreadsUsed = 1;
+}
+
+void EngineBase::ComputeOrder(const DecimatorInput& input)
+{
+  // A large mesh is decimated in a spatial order, under new vertex and face ids, and mapped
+  // back to its own ids at the end. The input's arrays are read through the map (OldVertex:
+  // the input's id of each vertex), not copied.
+  this->Large = input.NumberOfPoints >= LargeMeshVertices;
+  this->Renumbered = this->Options.Renumber && this->Large;
+  this->Order = SpatialOrder();
+  if (this->Renumbered)
+  {
+    ComputeSpatialOrder(input.NumberOfPoints, input.Points, input.NumberOfTriangles,
+                        input.Triangles, this->Order,
+                        this->ThreadCount(size_t(input.NumberOfPoints)));
+  }
+}
+
+void EngineBase::BuildMesh(const DecimatorInput& input, DecimatorStatistics& stats)
+{
+  const int32_t n = input.NumberOfPoints;
+  stats.Build = this->Mesh.Build(n, input.Triangles, input.NumberOfTriangles,
+                                 this->ThreadCount(3 * size_t(input.NumberOfTriangles)),
+                                 this->Renumbered ? this->Order.OldFace.data() : nullptr,
+                                 this->Renumbered ? this->Order.NewVertex.data() : nullptr);
+  this->Order.NewVertex = std::vector<int32_t>();
+  if (input.Fixed)
+  {
+    const int32_t* source = this->Renumbered ? this->Order.OldVertex.data() : nullptr;
+    for (int32_t v = 0; v < n; ++v)
+    {
+      if (input.Fixed[source ? source[v] : v])
+      {
+        this->Mesh.Lock(v);
+      }
+    }
+  }
+}
+
+void EngineBase::Finish(bool keepHot)
+{
+  this->ReferenceNormals = Buffer<float>();
+  if (this->Order.Empty())
+  {
+    return;
+  }
+  // The choices refer to the renumbered ids and are of no use now: freed first, so that each
+  // copy made while mapping back is smaller than what they held. Without KeepVertexState the
+  // output needs the mesh and the moved vertices' records only.
+  this->Best = std::vector<int32_t>();
+  this->Bounded = std::vector<uint8_t>();
+  if (!this->Options.KeepVertexState)
+  {
+    this->ReleaseMetric();
+    if (!keepHot)
+    {
+      this->Hot = Buffer<HotVertex>();
+    }
+  }
+  this->Mesh.Renumber(this->Order.OldVertex.data(), this->Order.OldFace.data(),
+                      this->ThreadCount(this->Order.OldFace.size()));
+  this->RestoreValues(this->Hot);
+  this->RestoreMetric();
+  this->Order = SpatialOrder();
+}
+
+void EngineBase::GetOutputColor(int32_t v, double rgb[3]) const
+{
+  const double c[3] = { this->Hot[v].C[0], this->Hot[v].C[1], this->Hot[v].C[2] };
+  MetricColorToRGB(this->UseColor ? this->Options.Space : ColorSpace::RGB, c, rgb);
+  for (int k = 0; k < 3; ++k)
+  {
+    rgb[k] = std::min(std::max(rgb[k], 0.0), 1.0);
+  }
+}
+
+} // namespace colordecimation

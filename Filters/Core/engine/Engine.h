@@ -1,0 +1,258 @@
+/**
+ * @file Engine.h
+ * @brief The mechanism shared by the schedules: the set-up, the choice of each vertex's
+ * cheapest collapse (costing), the legality check, the collapse itself with the merge of the
+ * metric's state, and the vertices a collapse affects (docs/ALGORITHM.md, sections 6 and 10).
+ *
+ * EngineBase holds what does not depend on the metric: the mesh, the frame and the hot
+ * records, the input normals for the rules, each vertex's chosen target. Engine<Metric> adds
+ * the metric, a policy type (metric/HalfEdgeColor.h, metric/ColorQuadricMetric.h) that gives
+ * the cost of every member of a ring, merges the state of a collapse, and says whether
+ * collapses move the survivor. The schedules (schedule/Greedy.h, schedule/Batched.h) are loops
+ * over an Engine<Metric>; templates keep the per-candidate calls inlined.
+ *
+ * Costing is lazy about legality: a vertex is keyed by its cheapest *admissible* target (the
+ * boundary rule and locks only), a lower bound of its cheapest *valid* one; a schedule that
+ * finds the chosen collapse illegal re-costs the vertex over its legal collapses only
+ * (Evaluate with exact = true).
+ */
+#ifndef colordecimation_Engine_h
+#define colordecimation_Engine_h
+
+#include "engine/Frame.h"
+#include "engine/Options.h"
+#include "mesh/HalfEdgeMesh.h"
+#include "mesh/SpatialOrder.h"
+#include "metric/ColorQuadric.h"
+#include "metric/HalfEdgeColor.h"
+#include "metric/Ring.h"
+#include "rules/CollapseRules.h"
+#include "util/Buffer.h"
+#include "util/Parallel.h"
+#include "util/Prefetch.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace colordecimation
+{
+
+/// How many items ahead each stage of a prefetch pipeline works (the vertex, its first face,
+/// its neighbours' records).
+constexpr size_t FarAhead = 16, MiddleAhead = 8, NearAhead = 4;
+
+/// A vertex's chosen collapse.
+struct Choice
+{
+  int32_t Target = -1;
+  double Cost = 0;
+  bool Bound = false; ///< Cost is only a lower bound (Evaluate's allowBound)
+};
+
+class VTKCOLORDECIMATION_EXPORT EngineBase
+{
+public:
+  explicit EngineBase(const DecimatorOptions& options);
+  virtual ~EngineBase();
+
+  /**
+   * The set-up before the metric's state: the spatial order of a large mesh, the connectivity
+   * (with the input's fixed points locked), the frame and the hot records (with colour when
+   * useColor), and the input normals that bound each face's drift.
+   */
+  void SetUp(const DecimatorInput& input, bool useColor, DecimatorStatistics& stats);
+  /// After the schedule: free what the output does not need and map the mesh back to the
+  /// input's ids (keepHot: the hot records are kept, e.g. for moved vertices).
+  void Finish(bool keepHot);
+
+  /// Threads worth starting for this many items of work: NumberOfThreads at most,
+  /// MinimumThreadWork items per thread.
+  int ThreadCount(size_t items) const;
+
+  const DecimatorOptions& GetOptions() const { return this->Options; }
+  HalfEdgeMesh& GetMesh() { return this->Mesh; }
+  const HalfEdgeMesh& GetMesh() const { return this->Mesh; }
+  const Buffer<HotVertex>& GetHot() const { return this->Hot; }
+  const Frame& GetFrame() const { return this->Geometry; }
+  bool IsRenumbered() const { return this->Renumbered; }
+  bool IsLarge() const { return this->Large; }
+  /// The most threads EvaluateAll started.
+  int GetThreadsUsed() const { return this->ThreadsUsed; }
+  /// The current colour of v as RGB in [0,1].
+  void GetOutputColor(int32_t v, double rgb[3]) const;
+
+  // What the facade (Decimator) asks of the metric after a run.
+  /// The cost of v0 -> v1 on the current mesh (no legality check), or a negative value if
+  /// they are not neighbours.
+  virtual double CollapseCost(int32_t v0, int32_t v1) = 0;
+  /// Whether vertex v was moved (and recoloured) by a full collapse.
+  virtual bool IsMoved(int32_t v) const = 0;
+  virtual bool HasMovedVertices() const = 0;
+  virtual size_t MetricBytesPerVertex() const = 0;
+
+  /// Each vertex's chosen target, -1 if none (the schedules read it).
+  std::vector<int32_t> Best;
+  /// Each vertex: its key is a lower bound, to be made exact (Greedy).
+  std::vector<uint8_t> Bounded;
+
+  static constexpr size_t MinimumThreadWork = 4096;
+  /// From this many points on, the arrays are far larger than the cache: the mesh is
+  /// renumbered and neighbourhoods are prefetched (section 10).
+  static constexpr int32_t LargeMeshVertices = 65536;
+
+protected:
+  /// The 1-ring of v0 with the targets admissible for a collapse (a boundary vertex only
+  /// collapses along its boundary: to its first or last neighbour).
+  void GatherRing(int32_t v0, Ring& ring) const;
+  const float* Positions() const { return this->Hot.empty() ? nullptr : this->Hot[0].P; }
+  /// Map one per-vertex array of a renumbered run back to the input's ids (left as it is when
+  /// it does not hold one value per vertex, e.g. released).
+  template <typename Values>
+  void RestoreValues(Values& values) const
+  {
+    const auto n = static_cast<int64_t>(this->Order.OldVertex.size());
+    if (static_cast<int64_t>(values.size()) == n)
+    {
+      Permute(values, n, this->Order.OldVertex.data(), 1,
+              this->ThreadCount(this->Order.OldFace.size()));
+    }
+  }
+  /// Free the metric's state (what the output does not need, see KeepVertexState).
+  virtual void ReleaseMetric() = 0;
+  /// Map what is left of the metric's state back to the input's ids.
+  virtual void RestoreMetric() = 0;
+
+  DecimatorOptions Options;
+  CollapseRuleOptions RuleOptions;
+  HalfEdgeMesh Mesh;
+  Buffer<HotVertex> Hot;
+  Frame Geometry;
+  bool UseColor = false;
+  bool Large = false;      ///< at least LargeMeshVertices points
+  bool Renumbered = false; ///< the run works under SpatialOrder's ids
+  SpatialOrder Order;
+  Buffer<float> ReferenceNormals; ///< the input normal of every face slot (CollapseRules)
+  mutable int ThreadsUsed = 1;
+
+private:
+  void ComputeOrder(const DecimatorInput& input);
+  void BuildMesh(const DecimatorInput& input, DecimatorStatistics& stats);
+};
+
+/**
+ * The engine over one metric. Each thread that costs vertices or collapses has a Workspace;
+ * Workspace(0) is the calling thread's.
+ */
+template <typename Metric>
+class Engine final : public EngineBase
+{
+public:
+  using Placement = typename Metric::Placement;
+
+  /// What costing one vertex and collapsing write to: one per thread.
+  struct Workspace
+  {
+    explicit Workspace(const CollapseRules& rules)
+      : Rules(rules)
+    {
+    }
+    Ring CurrentRing;
+    std::vector<double> Costs;
+    std::vector<int> Order;
+    typename Metric::Scratch Scratch;
+    CollapseRules Rules;                  ///< its own copy (the rules keep scratch)
+    std::vector<int32_t> FormerNeighbors; ///< v0's neighbours before the last collapse
+  };
+
+  explicit Engine(const DecimatorOptions& options)
+    : EngineBase(options)
+    , TheMetric(options)
+    , Main(CollapseRules(this->RuleOptions))
+  {
+  }
+
+  /// Set-up (EngineBase::SetUp), then the metric's initial state.
+  void Start(const DecimatorInput& input, DecimatorStatistics& stats)
+  {
+    this->SetUp(input, Metric::ReadsColor && input.Colors, stats);
+    this->TheMetric.Initialize(this->Mesh, this->Geometry, this->Hot, this->UseColor,
+                               this->ThreadCount(3 * size_t(input.NumberOfTriangles)));
+    this->Main.Rules.SetReferenceNormals(this->ReferenceNormals.data());
+  }
+  /// After the schedule: the workers and input normals freed, the order restored.
+  void Stop()
+  {
+    this->Workers.clear();
+    this->Main.Rules.SetReferenceNormals(nullptr);
+    this->Finish(this->TheMetric.AnyMoved());
+  }
+
+  Metric& GetMetric() { return this->TheMetric; }
+  const Metric& GetMetric() const { return this->TheMetric; }
+  Workspace& GetWorkspace(int t) { return t == 0 ? this->Main : this->Workers[t - 1]; }
+  /// Make sure there is a workspace for each of `threads` threads.
+  void AddWorkers(int threads)
+  {
+    while (this->Workers.size() < static_cast<size_t>(threads - 1))
+    {
+      this->Workers.push_back(this->Main); // its own scratch; the same rules and normals
+    }
+  }
+  int GetNumberOfWorkspaces() const { return 1 + static_cast<int>(this->Workers.size()); }
+
+  /**
+   * Cheapest admissible (exact = false) or legal (exact = true) collapse of v0. With
+   * allowBound, a vertex the metric keys by a bound (KeysByBound) gets that lower bound.
+   */
+  Choice Evaluate(int32_t v0, bool exact, bool allowBound, Workspace& ws) const;
+  /**
+   * Evaluate each listed vertex (none twice) into Best, Bounded and keys[v], on up to
+   * ThreadCount threads; locked and removed vertices get no choice.
+   */
+  void EvaluateAll(const int32_t* vertices, size_t count, bool exact, bool allowBound,
+                   double* keys);
+  /// Every vertex's choice into Best and Bounded; returns the keys (by vertex).
+  std::vector<double> EvaluateEveryVertex(bool allowBound);
+  /// Fetch what evaluating vertices[i + a few] reads into the cache.
+  void PrefetchEvaluation(const int32_t* vertices, size_t i, size_t end) const;
+
+  /// The rules' verdict on v0 -> v1; `moves`: the metric's placement moves v1 (into place).
+  bool IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, Placement& place, Workspace& ws) const;
+  /// Merge v0's state into v1 and collapse (ws.FormerNeighbors: v0's neighbours before); the
+  /// number of faces removed (`counted`: the mesh counts them itself; see HalfEdgeMesh).
+  int ApplyCollapse(int32_t v0, int32_t v1, bool moves, const Placement& place, Workspace& ws,
+                    bool counted);
+  /// The vertices whose chosen collapse or its cost the collapse into v1 may have changed.
+  template <typename Function>
+  void ForEachAffected(int32_t v1, const std::vector<int32_t>& formerNeighbors, Function&& f) const;
+
+  double CollapseCost(int32_t v0, int32_t v1) override;
+  bool IsMoved(int32_t v) const override { return this->TheMetric.IsMoved(v); }
+  bool HasMovedVertices() const override { return this->TheMetric.AnyMoved(); }
+  size_t MetricBytesPerVertex() const override { return Metric::BytesPerVertex(); }
+
+protected:
+  void ReleaseMetric() override { this->TheMetric.Release(); }
+  void RestoreMetric() override
+  {
+    this->TheMetric.Restore([this](auto& values) { this->RestoreValues(values); });
+  }
+
+private:
+  /// Costs of the ring of v0 into ws.Costs.
+  void CostRing(int32_t v0, bool withColorError, Workspace& ws) const;
+  Choice Cheapest(const Ring& ring, const std::vector<double>& costs) const;
+  Choice CheapestLegal(int32_t v0, Workspace& ws) const;
+
+  Metric TheMetric;
+  Workspace Main;
+  std::vector<Workspace> Workers;
+};
+
+} // namespace colordecimation
+
+#include "engine/Engine.txx"
+
+#endif

@@ -1,0 +1,268 @@
+// The template and inline parts of Engine.h (included at its end).
+
+namespace colordecimation
+{
+
+inline void EngineBase::GatherRing(int32_t v0, Ring& ring) const
+{
+  ring.Clear();
+  const bool boundary = this->Mesh.IsBoundaryVertex(v0);
+  this->Mesh.ForEachNeighbor(v0,
+                             [&](int32_t u)
+                             {
+                               const HotVertex& hot = this->Hot[u];
+                               const double p[3] = { hot.P[0], hot.P[1], hot.P[2] };
+                               const double c[3] = { hot.C[0], hot.C[1], hot.C[2] };
+                               // A boundary vertex only collapses along its boundary: to the
+                               // first or last neighbour.
+                               const bool candidate =
+                                 !this->Mesh.IsLocked(u) && (!boundary || ring.Size == 0);
+                               ring.Add(u, p, c, candidate, hot.QC);
+                             });
+  if (boundary && ring.Size > 0)
+  {
+    ring.IsCandidate[ring.Size - 1] = !this->Mesh.IsLocked(ring.Vertex[ring.Size - 1]);
+  }
+  ring.Pad();
+}
+
+template <typename Metric>
+void Engine<Metric>::CostRing(int32_t v0, bool withColorError, Workspace& ws) const
+{
+  const size_t n = static_cast<size_t>(ws.CurrentRing.PaddedSize());
+  if (ws.Costs.size() < n)
+  {
+    ws.Costs.resize(2 * n);
+  }
+  this->TheMetric.CostRing(v0, withColorError, ws.CurrentRing, ws.Costs.data(), ws.Scratch);
+}
+
+template <typename Metric>
+Choice Engine<Metric>::Evaluate(int32_t v0, bool exact, bool allowBound, Workspace& ws) const
+{
+  Choice choice;
+  if (!this->Mesh.IsCollapsible(v0) ||
+      (this->Options.PreserveBoundary && this->Mesh.IsBoundaryVertex(v0)))
+  {
+    return choice;
+  }
+  this->TheMetric.Prefetch(v0);
+  this->GatherRing(v0, ws.CurrentRing);
+  choice.Bound = allowBound && !exact && this->TheMetric.KeysByBound(ws.CurrentRing.Size);
+  this->CostRing(v0, !choice.Bound, ws);
+  if (!exact)
+  {
+    const Choice cheapest = this->Cheapest(ws.CurrentRing, ws.Costs);
+    choice.Target = cheapest.Target;
+    choice.Cost = cheapest.Cost;
+    return choice;
+  }
+  return this->CheapestLegal(v0, ws);
+}
+
+template <typename Metric>
+Choice Engine<Metric>::Cheapest(const Ring& ring, const std::vector<double>& costs) const
+{
+  Choice choice;
+  double best = std::numeric_limits<double>::infinity();
+  for (int j = 0; j < ring.Size; ++j)
+  {
+    if (ring.IsCandidate[j] && costs[j] < best)
+    {
+      best = costs[j];
+      choice.Target = ring.Vertex[j];
+    }
+  }
+  choice.Cost = best;
+  return choice;
+}
+
+template <typename Metric>
+Choice Engine<Metric>::CheapestLegal(int32_t v0, Workspace& ws) const
+{
+  const Ring& ring = ws.CurrentRing;
+  ws.Order.clear();
+  for (int j = 0; j < ring.Size; ++j)
+  {
+    if (ring.IsCandidate[j])
+    {
+      ws.Order.push_back(j);
+    }
+  }
+  std::sort(ws.Order.begin(), ws.Order.end(),
+            [&ws](int a, int b) { return ws.Costs[a] < ws.Costs[b]; });
+  Choice choice;
+  for (int j : ws.Order)
+  {
+    double p[3];
+    const bool legal = this->TheMetric.RingPlacement(v0, j, ws.Scratch, p)
+      ? ws.Rules.IsLegal(this->Mesh, this->Positions(), v0, ring.Vertex[j], HotStride, p)
+      : ws.Rules.IsLegal(this->Mesh, this->Positions(), v0, ring.Vertex[j], HotStride);
+    if (legal)
+    {
+      choice.Target = ring.Vertex[j];
+      choice.Cost = ws.Costs[j];
+      break;
+    }
+  }
+  return choice;
+}
+
+template <typename Metric>
+void Engine<Metric>::EvaluateAll(const int32_t* vertices, size_t count, bool exact,
+                                 bool allowBound, double* keys)
+{
+  // Each evaluation reads the mesh and the per-vertex state, and writes its own vertex's
+  // entries only: the vertices can be shared among threads in any way, with the same result.
+  auto evaluate = [this, vertices, exact, allowBound, keys](Workspace& ws, size_t begin, size_t end)
+  {
+    for (size_t i = begin; i < end; ++i)
+    {
+      this->PrefetchEvaluation(vertices, i, end);
+      const int32_t v = vertices[i];
+      Choice choice;
+      if (!this->Mesh.IsLocked(v) && !this->Mesh.IsRemoved(v))
+      {
+        choice = this->Evaluate(v, exact, allowBound, ws);
+      }
+      this->Best[v] = choice.Target;
+      this->Bounded[v] = choice.Bound ? 1 : 0;
+      keys[v] = choice.Cost;
+    }
+  };
+  // An exact evaluation runs the rules on its choices until one is legal: some times the work.
+  constexpr size_t ExactEvaluationWork = 6;
+  const int threads = this->ThreadCount(exact ? ExactEvaluationWork * count : count);
+  this->ThreadsUsed = std::max(this->ThreadsUsed, threads);
+  this->AddWorkers(threads);
+  ParallelFor(count, threads,
+              [this, evaluate](size_t begin, size_t end, int t)
+              { evaluate(this->GetWorkspace(t), begin, end); });
+}
+
+template <typename Metric>
+std::vector<double> Engine<Metric>::EvaluateEveryVertex(bool allowBound)
+{
+  const int32_t n = this->Mesh.GetNumberOfVertices();
+  this->Best.assign(n, -1);
+  this->Bounded.assign(n, 0);
+  std::vector<int32_t> all(n);
+  for (int32_t v = 0; v < n; ++v)
+  {
+    all[v] = v;
+  }
+  std::vector<double> keys(n);
+  this->EvaluateAll(all.data(), all.size(), false, allowBound, keys.data());
+  return keys;
+}
+
+template <typename Metric>
+void Engine<Metric>::PrefetchEvaluation(const int32_t* vertices, size_t i, size_t end) const
+{
+  // The vertex records a few evaluations ahead, then its first face, then the records of
+  // that face's other two corners (two of its neighbours); the rest of the fan is usually
+  // on the same lines.
+  if (i + FarAhead < end)
+  {
+    const int32_t v = vertices[i + FarAhead];
+    this->Mesh.PrefetchVertex(v);
+    COLORDECIMATION_PREFETCH(this->Hot.data() + v);
+    this->TheMetric.Prefetch(v);
+  }
+  if (i + MiddleAhead < end)
+  {
+    this->Mesh.PrefetchFirstFace(vertices[i + MiddleAhead]);
+  }
+  if (i + NearAhead < end)
+  {
+    const int32_t h = this->Mesh.Outgoing(vertices[i + NearAhead]);
+    if (h >= 0)
+    {
+      COLORDECIMATION_PREFETCH(this->Hot.data() + this->Mesh.Target(h));
+      COLORDECIMATION_PREFETCH(this->Hot.data() + this->Mesh.Origin(HalfEdgeMesh::Prev(h)));
+    }
+  }
+}
+
+template <typename Metric>
+bool Engine<Metric>::IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, Placement& place,
+                                     Workspace& ws) const
+{
+  // A full collapse puts v1 at the metric's placement.
+  double newPosition[3];
+  moves = this->TheMetric.Place(v0, v1, place, newPosition);
+  return moves ? ws.Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride, newPosition)
+               : ws.Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride);
+}
+
+template <typename Metric>
+int Engine<Metric>::ApplyCollapse(int32_t v0, int32_t v1, bool moves, const Placement& place,
+                                  Workspace& ws, bool counted)
+{
+  this->TheMetric.Merge(v0, v1, moves, place);
+  ws.FormerNeighbors.clear();
+  this->Mesh.ForEachNeighbor(v0, [&ws](int32_t u) { ws.FormerNeighbors.push_back(u); });
+  this->Best[v0] = -1;
+  return counted ? this->Mesh.Collapse(v0, v1) : this->Mesh.CollapseUncounted(v0, v1);
+}
+
+template <typename Metric>
+template <typename Function>
+void Engine<Metric>::ForEachAffected(int32_t v1, const std::vector<int32_t>& formerNeighbors,
+                                     Function&& f) const
+{
+  // v1 and v0's former neighbours have a new 1-ring. The other neighbours of v1 only saw their
+  // cost towards v1 grow: only those whose choice was v1 are affected. After a full collapse
+  // every cost towards v1 may have changed (its point and quadric both did): its whole new
+  // 1-ring, which holds v0's former neighbours, is affected.
+  f(v1);
+  if (this->TheMetric.MovesVertices())
+  {
+    this->Mesh.ForEachNeighbor(v1, f);
+    return;
+  }
+  for (int32_t u : formerNeighbors)
+  {
+    if (u != v1)
+    {
+      f(u);
+    }
+  }
+  this->Mesh.ForEachNeighbor(v1,
+                             [this, v1, &formerNeighbors, &f](int32_t u)
+                             {
+                               if (this->Best[u] == v1 &&
+                                   std::find(formerNeighbors.begin(), formerNeighbors.end(), u) ==
+                                     formerNeighbors.end())
+                               {
+                                 f(u);
+                               }
+                             });
+}
+
+template <typename Metric>
+double Engine<Metric>::CollapseCost(int32_t v0, int32_t v1)
+{
+  if (!this->Mesh.IsCollapsible(v0))
+  {
+    return -1;
+  }
+  Workspace& ws = this->Main;
+  Ring& ring = ws.CurrentRing;
+  this->GatherRing(v0, ring);
+  for (int j = 0; j < ring.Size; ++j)
+  {
+    ring.IsCandidate[j] = ring.Vertex[j] == v1;
+  }
+  this->CostRing(v0, true, ws);
+  for (int j = 0; j < ring.Size; ++j)
+  {
+    if (ring.Vertex[j] == v1)
+    {
+      return ws.Costs[j];
+    }
+  }
+  return -1;
+}
+
+} // namespace colordecimation

@@ -1,0 +1,113 @@
+/**
+ * @file Options.h
+ * @brief What a decimation run is given (options, input) and what it reports (statistics).
+ *
+ * The method is specified in docs/ALGORITHM.md; the section numbers below refer to it.
+ */
+#ifndef colordecimation_Options_h
+#define colordecimation_Options_h
+
+#include "mesh/HalfEdgeMesh.h"
+#include "metric/ColorSpace.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+
+namespace colordecimation
+{
+
+enum class ErrorMetric
+{
+  HalfEdgeColor = 0, ///< (1 + Q)(1 + I)(1 + C): the paper's metric (section 4)
+  Geometry = 1,      ///< Q alone (half-edge QEM), colour ignored
+  ColorQuadric = 2   ///< Garland-Heckbert's 6-D colour quadric (section 9)
+};
+
+/// The order in which collapses are made.
+enum class CollapseSchedule
+{
+  /// One at a time, always the cheapest valid collapse of the whole mesh (section 6).
+  Greedy = 0,
+  /// In passes of the cheapest BatchFraction of the chosen collapses, by blocks of the mesh on
+  /// several threads (section 7). The result does not depend on the number of threads.
+  Batched = 1
+};
+
+/// Called now and then with the fraction done; returning false aborts the run.
+using ProgressFunction = std::function<bool(double)>;
+
+struct DecimatorOptions
+{
+  ErrorMetric Metric = ErrorMetric::HalfEdgeColor;
+  bool PreserveBoundary = false;
+  double MaximumNormalAngle = 90.0; ///< degrees (section 5)
+  double GeometryWeight = 1.0;      ///< w in Q' = w Q (section 2); not ColorQuadric
+  /// Where colour is measured (every colour term of every metric; section 8).
+  ColorSpace Space = ColorSpace::RGB;
+  /// ColorQuadric: the colour coordinates of R^6 are multiplied by this weight.
+  double ColorWeight = 1.0;
+  /// ColorQuadric: full collapses, the survivor moved to the minimiser of Q0 + Q1 (section 9).
+  bool OptimalPlacement = false;
+  /// Weight of Garland-Heckbert's boundary constraint planes (0: none, the paper's metric;
+  /// section 3).
+  double BoundaryWeight = 0.0;
+  /// Key vertices of more than LargeRing neighbours by a lower bound until they reach the top
+  /// of the heap (section 6: the same result, less work; off only to test that claim).
+  bool BoundHighValence = true;
+  /// Decimate meshes of at least LargeMeshVertices points in a spatial order (section 10;
+  /// the same collapses up to the order of equal costs; off only to test that claim).
+  bool Renumber = true;
+  /**
+   * Whether Run leaves the per-vertex state (GetMetrics, GetColorQuadrics,
+   * GetNormalizedPosition) for every vertex, by input id. Without it, only what the output
+   * needs is kept (the mesh, and the moved vertices' records). The filter does without.
+   */
+  bool KeepVertexState = true;
+  CollapseSchedule Schedule = CollapseSchedule::Greedy;
+  /// Batched: the share of the candidate collapses that each pass considers, in (0, 1].
+  double BatchFraction = 0.25;
+  /// Batched: blocks of 2^BlockShift vertex ids, wide blocks of 2^(BlockShift + 3), clamped to
+  /// [4, 24]. The result depends on it, never on the number of threads; tests make it small
+  /// so that small meshes have many blocks.
+  int BlockShift = 14;
+  /// Batched, for tests: after each pass, count the block flags that differ from flags
+  /// computed afresh (DecimatorStatistics::StaleBlockFlags).
+  bool VerifyBlockFlags = false;
+  /// Threads of the parallel phases; 0: one per hardware thread. The result is the same for
+  /// any number.
+  int NumberOfThreads = 0;
+};
+
+struct DecimatorInput
+{
+  int32_t NumberOfPoints = 0;
+  const double* Points = nullptr; ///< 3 per point, original coordinates
+  const float* Colors = nullptr;  ///< 3 per point, RGB in [0,1]; null: no colour
+  int32_t NumberOfTriangles = 0;
+  const int32_t* Triangles = nullptr; ///< 3 point ids per triangle, no repeated id
+  const uint8_t* Fixed = nullptr;     ///< optional, 1 per point: non-zero points never collapse
+};
+
+struct DecimatorStatistics
+{
+  MeshBuildReport Build;
+  int64_t InputTriangles = 0;
+  int64_t TargetTriangles = 0;
+  int64_t OutputTriangles = 0;
+  int64_t Collapses = 0;
+  int64_t RejectedPops = 0;    ///< chosen collapses that failed the rules and were re-costed
+  int64_t Passes = 0;          ///< Batched: re-costing passes
+  int Threads = 1;             ///< the most threads that costed vertices at once
+  int CollapseThreads = 1;     ///< Batched: the most threads that collapsed blocks at once
+  int WideCollapseThreads = 1; ///< Batched: the same for the wide blocks
+  int64_t StaleBlockFlags = 0; ///< Batched with VerifyBlockFlags: should be 0
+  double MeanEdgeLength = 0;   ///< of the input, in its own units (the frame's unit)
+  bool Aborted = false;
+  size_t StateBytes = 0;           ///< bytes held by the decimator's arrays
+  size_t MetricBytesPerVertex = 0; ///< the metric's per-vertex state
+};
+
+} // namespace colordecimation
+
+#endif

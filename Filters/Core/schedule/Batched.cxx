@@ -1,0 +1,468 @@
+#include "schedule/Batched.h"
+
+#include "metric/ColorQuadricMetric.h"
+#include "metric/HalfEdgeColor.h"
+#include "schedule/Blocks.h"
+#include "schedule/Selection.h"
+
+#include <atomic>
+#include <cmath>
+#include <numeric>
+
+namespace colordecimation
+{
+namespace
+{
+/// A block is swept into the cache before its collapses (WarmBlock) when it has a candidate per
+/// this many vertex ids at least: each candidate reads a two-ring of some twenty vertices and
+/// faces, so most of the block's lines are read either way.
+constexpr size_t WarmDensity = 16;
+/// A candidate in a block costs about this many plain evaluations (the rules, the collapse, or a
+/// skip), so that a pass's last few thousand candidates still share the cores.
+constexpr size_t CandidateWork = 3;
+
+/// What one thread's collapses of a pass produced.
+struct Lane
+{
+  std::vector<int32_t> Rejected;   ///< vertices whose choice the rules forbade
+  std::vector<Candidate> Deferred; ///< candidates reaching out of their block
+  Buffer<Candidate> SortRoom;      ///< scratch of SortByKey
+  int64_t Collapses = 0, Rejections = 0, RemovedFaces = 0;
+  void ClearPass()
+  {
+    this->Rejected.clear();
+    this->Deferred.clear();
+    this->Collapses = this->Rejections = this->RemovedFaces = 0;
+  }
+};
+
+template <typename Metric>
+class BatchedSchedule
+{
+public:
+  using Workspace = typename Engine<Metric>::Workspace;
+
+  explicit BatchedSchedule(Engine<Metric>& engine)
+    : E(engine)
+    , Blocks(engine.GetOptions().BlockShift)
+  {
+  }
+
+  void Run(DecimatorStatistics& stats, const ProgressFunction& progress)
+  {
+    this->Start();
+    const HalfEdgeMesh& mesh = this->E.GetMesh();
+    const int64_t startFaces = mesh.GetNumberOfLiveFaces();
+    const int64_t toRemove = std::max<int64_t>(startFaces - stats.TargetTriangles, 1);
+    int32_t pass = 0;
+    while (mesh.GetNumberOfLiveFaces() > stats.TargetTriangles && !stats.Aborted)
+    {
+      ++pass;
+      if (this->SelectBatch(stats) == 0)
+      {
+        break;
+      }
+      this->Affected.clear();
+      this->Rejected.clear();
+      this->CollapseByBlocks(pass, stats);
+      this->CollapseDeferred(pass, stats);
+      ++stats.Passes;
+      if (this->E.GetOptions().VerifyBlockFlags)
+      {
+        stats.StaleBlockFlags += this->Blocks.CountStaleFlags(mesh, this->FlagThreads());
+      }
+      this->Recost(pass);
+      if (progress)
+      {
+        const double done = double(startFaces - mesh.GetNumberOfLiveFaces()) / toRemove;
+        stats.Aborted = !progress(std::min(done, 1.0));
+      }
+    }
+    stats.CollapseThreads = this->CollapseThreadsUsed;
+    stats.WideCollapseThreads = this->WideCollapseThreadsUsed;
+  }
+
+private:
+  void Start();
+  /// The batch: the cheapest fraction of the candidates; returns how many candidates there are.
+  size_t SelectBatch(const DecimatorStatistics& stats);
+  /// Step 1: the blocks of each level on several threads, each passing on what reaches out of
+  /// its blocks to the next level; what is left in Deferred.
+  void CollapseByBlocks(int32_t pass, DecimatorStatistics& stats);
+  void CollapseLevel(const BlockLevel& level, int32_t pass);
+  void CollapseBlock(Candidate* begin, Candidate* end, int32_t block, const BlockLevel& level,
+                     int32_t pass, Workspace& ws, Lane& lane);
+  /// Step 2: the deferred ones, in cost order, on this thread, up to the target.
+  void CollapseDeferred(int32_t pass, DecimatorStatistics& stats);
+  /// Step 3: re-cost in vertex order, the rejected ones over their legal collapses only.
+  void Recost(int32_t pass);
+  /// Check v0 -> v1, then collapse it and stamp the affected vertices, or stamp v0 as rejected;
+  /// `counted`: the mesh counts the removed faces itself (otherwise the lane does).
+  void TryCollapse(int32_t v0, int32_t v1, int32_t pass, Workspace& ws, Lane& lane, bool counted);
+  /// Add a lane's results of a pass to the pass's lists and to the statistics.
+  void Gather(Lane& lane, DecimatorStatistics& stats);
+  /// Fetch the neighbourhoods of candidates[i + a few] into the cache (block >= 0: reading
+  /// the records of that block of `level` only).
+  void PrefetchCandidates(const Candidate* candidates, size_t i, size_t count, int32_t block,
+                          const BlockLevel& level) const;
+  /// Sweep the records of `block` into the cache ahead of its candidates.
+  void WarmBlock(int32_t block, const BlockLevel& level, size_t candidates) const;
+  int FlagThreads() const
+  {
+    return this->E.ThreadCount(3 * static_cast<size_t>(this->E.GetMesh().GetNumberOfFaceSlots()));
+  }
+
+  Engine<Metric>& E;
+  BlockPartition Blocks;
+  std::vector<double> Keys;
+  /// Stamp[v] == pass: v was affected by a collapse of this pass (its key is stale) or its
+  /// chosen collapse was found illegal; either way it waits for the re-costing.
+  std::vector<int32_t> Stamp;
+  std::vector<Lane> Lanes; ///< one per workspace of the engine
+  std::vector<Candidate> Batch, Deferred;
+  std::vector<size_t> BlockStart;
+  std::vector<int32_t> Affected, Rejected;
+  /// The vertices that may have a collapse, in vertex order: the collapsible ones, less those
+  /// collapsed away after each pass, so that the scans of a pass shrink with the mesh.
+  std::vector<int32_t> Live, Kept;
+  int CollapseThreadsUsed = 1;
+  int WideCollapseThreadsUsed = 1;
+};
+
+template <typename Metric>
+void BatchedSchedule<Metric>::Start()
+{
+  const HalfEdgeMesh& mesh = this->E.GetMesh();
+  const int32_t n = mesh.GetNumberOfVertices();
+  this->Keys = this->E.EvaluateEveryVertex(false);
+  this->Stamp.assign(n, 0);
+  this->Blocks.FlagEveryInterior(mesh, this->FlagThreads());
+  if (this->E.IsRenumbered())
+  {
+    this->Blocks.FindBlockFaces(mesh); // faces in order of their smallest vertex
+  }
+  CollectInOrder(
+    static_cast<size_t>(n), this->E.ThreadCount(static_cast<size_t>(n)),
+    [&mesh](size_t v, int32_t& u)
+    {
+      u = static_cast<int32_t>(v);
+      return mesh.IsCollapsible(u);
+    },
+    this->Live);
+}
+
+template <typename Metric>
+size_t BatchedSchedule<Metric>::SelectBatch(const DecimatorStatistics& stats)
+{
+  // No more than the collapses still needed (each removes two triangles, one on a boundary), so
+  // that the block phase, which does not stop half-way, ends at the target or one triangle
+  // below at the lowest. The batch comes in vertex order, hence grouped by block.
+  const int64_t needed = (this->E.GetMesh().GetNumberOfLiveFaces() - stats.TargetTriangles + 1) / 2;
+  const double fraction = this->E.GetOptions().BatchFraction;
+  const int32_t* best = this->E.Best.data();
+  const double* key = this->Keys.data();
+  this->Batch.clear();
+  return SelectCheapest(
+    this->Live.size(), this->Live.data(),
+    [best, key](int32_t v, double& k)
+    {
+      k = OrderableKey(key[v]);
+      return best[v] >= 0;
+    },
+    [needed, fraction](size_t count)
+    {
+      return static_cast<size_t>(std::max<int64_t>(
+        1,
+        std::min<int64_t>(needed,
+                          static_cast<int64_t>(std::ceil(fraction * static_cast<double>(count))))));
+    },
+    this->E.ThreadCount(this->Live.size()), this->Batch);
+}
+
+template <typename Metric>
+void BatchedSchedule<Metric>::CollapseByBlocks(int32_t pass, DecimatorStatistics& stats)
+{
+  const int32_t n = this->E.GetMesh().GetNumberOfVertices();
+  for (const BlockLevel& level : this->Blocks)
+  {
+    if (level.Flag != this->Blocks.Small().Flag)
+    {
+      // The batch comes in vertex order, those deferred do not.
+      std::sort(this->Batch.begin(), this->Batch.end(),
+                [](const Candidate& a, const Candidate& b) { return a.Vertex < b.Vertex; });
+    }
+    this->BlockStart.assign(size_t(level.BlockOf(n)) + 2, 0);
+    for (const Candidate& c : this->Batch)
+    {
+      ++this->BlockStart[size_t(level.BlockOf(c.Vertex)) + 1];
+    }
+    std::partial_sum(this->BlockStart.begin(), this->BlockStart.end(), this->BlockStart.begin());
+    this->CollapseLevel(level, pass);
+    this->Deferred.clear();
+    for (Lane& lane : this->Lanes)
+    {
+      this->Gather(lane, stats);
+    }
+    this->Batch.swap(this->Deferred);
+  }
+  this->Deferred.swap(this->Batch);
+}
+
+template <typename Metric>
+void BatchedSchedule<Metric>::CollapseLevel(const BlockLevel& level, int32_t pass)
+{
+  const int32_t blocks = static_cast<int32_t>(this->BlockStart.size()) - 1;
+  std::atomic<int32_t> nextBlock(0);
+  // A thread is worth it for some thousands of candidates only; either way the blocks are
+  // the same, and so is the result.
+  const int threads = this->E.ThreadCount(CandidateWork * this->Batch.size());
+  int& used = level.Flag != this->Blocks.Small().Flag ? this->WideCollapseThreadsUsed
+                                                      : this->CollapseThreadsUsed;
+  used = std::max(used, threads);
+  this->E.AddWorkers(threads);
+  // Every lane starts the pass empty, those of idle threads too (they are gathered).
+  this->Lanes.resize(size_t(this->E.GetNumberOfWorkspaces()));
+  for (Lane& lane : this->Lanes)
+  {
+    lane.ClearPass();
+  }
+  // One call per thread (the ranges are unused): the threads take the blocks in turn.
+  ParallelFor(size_t(threads), threads,
+              [this, &nextBlock, blocks, level, pass](size_t, size_t, int t)
+              {
+                for (int32_t block = nextBlock++; block < blocks; block = nextBlock++)
+                {
+                  this->CollapseBlock(this->Batch.data() + this->BlockStart[block],
+                                      this->Batch.data() + this->BlockStart[block + 1], block,
+                                      level, pass, this->E.GetWorkspace(t), this->Lanes[t]);
+                }
+              });
+}
+
+template <typename Metric>
+void BatchedSchedule<Metric>::CollapseBlock(Candidate* begin, Candidate* end, int32_t block,
+                                            const BlockLevel& level, int32_t pass, Workspace& ws,
+                                            Lane& lane)
+{
+  SortByKey(begin, end, lane.SortRoom); // cost order (they come in vertex order)
+  const int32_t* stamp = this->Stamp.data();
+  const size_t count = static_cast<size_t>(end - begin);
+  this->WarmBlock(block, level, count);
+  for (size_t i = 0; i < count; ++i)
+  {
+    this->PrefetchCandidates(begin, i, count, block, level);
+    const int32_t v0 = begin[i].Vertex;
+    const int32_t v1 = this->E.Best[v0];
+    if (stamp[v0] == pass || v1 < 0)
+    {
+      continue; // its key is stale: a neighbour collapsed in this pass
+    }
+    if (!this->Blocks.IsInsideBlock(this->E.GetMesh(), v0, v1, block, level))
+    {
+      lane.Deferred.push_back(begin[i]);
+      continue;
+    }
+    if (stamp[v1] == pass)
+    {
+      continue;
+    }
+    const int64_t collapses = lane.Collapses;
+    this->TryCollapse(v0, v1, pass, ws, lane, false);
+    if (level.OtherFlags != 0 && lane.Collapses != collapses)
+    {
+      // v0's former neighbours may now have a neighbour in another finer block (or no longer
+      // have one). All of them and their fans are in this block: no other thread reads or
+      // writes them.
+      this->Blocks.FlagInterior(this->E.GetMesh(), ws.FormerNeighbors.data(),
+                                ws.FormerNeighbors.size(), level.OtherFlags);
+    }
+  }
+}
+
+template <typename Metric>
+void BatchedSchedule<Metric>::CollapseDeferred(int32_t pass, DecimatorStatistics& stats)
+{
+  std::sort(this->Deferred.begin(), this->Deferred.end());
+  Workspace& ws = this->E.GetWorkspace(0);
+  Lane& lane = this->Lanes[0];
+  lane.ClearPass();
+  const HalfEdgeMesh& mesh = this->E.GetMesh();
+  for (size_t i = 0; i < this->Deferred.size(); ++i)
+  {
+    if (mesh.GetNumberOfLiveFaces() <= stats.TargetTriangles)
+    {
+      break;
+    }
+    this->PrefetchCandidates(this->Deferred.data(), i, this->Deferred.size(), -1,
+                             this->Blocks.Small());
+    const int32_t v0 = this->Deferred[i].Vertex;
+    const int32_t v1 = this->E.Best[v0];
+    if (this->Stamp[v0] == pass || v1 < 0 || this->Stamp[v1] == pass)
+    {
+      continue;
+    }
+    const int64_t collapses = lane.Collapses;
+    this->TryCollapse(v0, v1, pass, ws, lane, true);
+    if (lane.Collapses != collapses)
+    {
+      // v0's former neighbours (v1 among them) may now have one in another block, or no longer
+      // have one (a collapse inside a block never changes that block's flags: all it touches
+      // is in the block).
+      this->Blocks.FlagInterior(mesh, ws.FormerNeighbors.data(), ws.FormerNeighbors.size(),
+                                this->Blocks.AllFlags());
+    }
+  }
+  this->Gather(lane, stats); // the mesh counted these faces itself: lane.RemovedFaces is 0
+}
+
+template <typename Metric>
+void BatchedSchedule<Metric>::Recost(int32_t pass)
+{
+  // The affected ones are those stamped with this pass, once the rejected ones are stamped
+  // apart (with -pass, which no pass matches); locked ones, which never have a collapse, are
+  // not listed.
+  for (int32_t v : this->Rejected)
+  {
+    this->Stamp[v] = -pass;
+  }
+  // One scan of the live vertices keeps those not collapsed away and lists the affected ones
+  // (never collapsed away: a stamped vertex is not collapsed).
+  this->Kept.clear();
+  const int32_t* before = this->Live.data();
+  const int32_t* stamp = this->Stamp.data();
+  const HalfEdgeMesh* mesh = &this->E.GetMesh();
+  CollectInOrder(
+    this->Live.size(), this->E.ThreadCount(this->Live.size()),
+    [mesh, before, stamp, pass](size_t i, int32_t& u)
+    {
+      u = before[i];
+      const int alive = mesh->IsRemoved(u) ? 0 : 1;
+      return alive | ((alive & (stamp[u] == pass ? 1 : 0)) << 1);
+    },
+    this->Kept, this->Affected);
+  this->Live.swap(this->Kept);
+  this->E.EvaluateAll(this->Affected.data(), this->Affected.size(), false, false,
+                      this->Keys.data());
+  this->E.EvaluateAll(this->Rejected.data(), this->Rejected.size(), true, false, this->Keys.data());
+}
+
+template <typename Metric>
+void BatchedSchedule<Metric>::TryCollapse(int32_t v0, int32_t v1, int32_t pass, Workspace& ws,
+                                          Lane& lane, bool counted)
+{
+  int32_t* stamp = this->Stamp.data();
+  typename Metric::Placement place;
+  bool moves = false;
+  if (!this->E.IsCollapseLegal(v0, v1, moves, place, ws))
+  {
+    stamp[v0] = pass;
+    lane.Rejected.push_back(v0);
+    ++lane.Rejections;
+    return;
+  }
+  const int removed = this->E.ApplyCollapse(v0, v1, moves, place, ws, counted);
+  lane.RemovedFaces += counted ? 0 : removed; // what the mesh has not counted itself
+  ++lane.Collapses;
+  this->E.ForEachAffected(v1, ws.FormerNeighbors, [pass, stamp](int32_t u) { stamp[u] = pass; });
+}
+
+template <typename Metric>
+void BatchedSchedule<Metric>::Gather(Lane& lane, DecimatorStatistics& stats)
+{
+  this->Rejected.insert(this->Rejected.end(), lane.Rejected.begin(), lane.Rejected.end());
+  this->Deferred.insert(this->Deferred.end(), lane.Deferred.begin(), lane.Deferred.end());
+  stats.Collapses += lane.Collapses;
+  stats.RejectedPops += lane.Rejections;
+  this->E.GetMesh().RemoveLiveFaces(lane.RemovedFaces);
+}
+
+template <typename Metric>
+void BatchedSchedule<Metric>::PrefetchCandidates(const Candidate* candidates, size_t i,
+                                                 size_t count, int32_t block,
+                                                 const BlockLevel& level) const
+{
+  // The candidates are known in advance: their neighbourhoods are fetched a few collapses
+  // ahead, in three stages (the vertex, its first face and target, the target's first face
+  // and both metric records, which the collapse merges), none of which waits. In a block
+  // (block >= 0) only the block's records are read.
+  const HalfEdgeMesh& mesh = this->E.GetMesh();
+  const HotVertex* hot = this->E.GetHot().data();
+  const int32_t* best = this->E.Best.data();
+  const auto mayRead = [block, &level](int32_t v)
+  { return block < 0 || level.BlockOf(v) == block; };
+  if (i + FarAhead < count)
+  {
+    const int32_t v = candidates[i + FarAhead].Vertex;
+    mesh.PrefetchVertex(v);
+    COLORDECIMATION_PREFETCH(this->Stamp.data() + v);
+    COLORDECIMATION_PREFETCH(best + v);
+  }
+  if (i + MiddleAhead < count)
+  {
+    const int32_t v = candidates[i + MiddleAhead].Vertex;
+    mesh.PrefetchFirstFace(v);
+    const int32_t target = best[v];
+    if (target >= 0 && mayRead(target))
+    {
+      mesh.PrefetchVertex(target);
+      COLORDECIMATION_PREFETCH(this->Stamp.data() + target);
+    }
+    COLORDECIMATION_PREFETCH(hot + v);
+  }
+  if (i + NearAhead < count)
+  {
+    const int32_t v = candidates[i + NearAhead].Vertex;
+    const int32_t target = best[v];
+    this->E.GetMetric().Prefetch(v);
+    if (target >= 0 && mayRead(target))
+    {
+      mesh.PrefetchFirstFace(target);
+      COLORDECIMATION_PREFETCH(hot + target);
+      this->E.GetMetric().Prefetch(target);
+    }
+  }
+}
+
+template <typename Metric>
+void BatchedSchedule<Metric>::WarmBlock(int32_t block, const BlockLevel& level,
+                                        size_t candidates) const
+{
+  // The candidates come in cost order, and so, in no order the hardware can foresee, do the
+  // two-rings the rules walk; swept in address order first, the block's records stream in.
+  // The sweep takes the vertex records the rules and the block test read, and the block's
+  // faces (fans reaching back into the block before are partly left out).
+  const HalfEdgeMesh& mesh = this->E.GetMesh();
+  BlockRange range;
+  if (candidates * WarmDensity < (size_t(1) << level.Shift) ||
+      !this->Blocks.WarmRange(block, level, size_t(mesh.GetNumberOfVertices()), range))
+  {
+    return;
+  }
+  const HotVertex* hot = this->E.GetHot().data();
+  PrefetchRange(hot + range.FirstVertex, hot + range.EndVertex);
+  mesh.PrefetchFaces(range.FirstFace, range.EndFace);
+  for (size_t v = range.FirstVertex; v < range.EndVertex; v += 16) // 16 ids to a line
+  {
+    COLORDECIMATION_PREFETCH(this->E.Best.data() + v);
+    COLORDECIMATION_PREFETCH(this->Stamp.data() + v);
+    mesh.PrefetchVertex(int32_t(v));
+  }
+}
+
+} // namespace
+
+template <typename Metric>
+void CollapseInBatches(Engine<Metric>& engine, DecimatorStatistics& stats,
+                       const ProgressFunction& progress)
+{
+  BatchedSchedule<Metric>(engine).Run(stats, progress);
+}
+
+template void CollapseInBatches(Engine<HalfEdgeColorMetric>&, DecimatorStatistics&,
+                                const ProgressFunction&);
+template void CollapseInBatches(Engine<GeometryMetric>&, DecimatorStatistics&,
+                                const ProgressFunction&);
+template void CollapseInBatches(Engine<ColorQuadricMetric>&, DecimatorStatistics&,
+                                const ProgressFunction&);
+
+} // namespace colordecimation
