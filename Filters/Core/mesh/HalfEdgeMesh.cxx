@@ -8,11 +8,43 @@
 namespace colordecimation
 {
 
+/// Outgoing half-edges of each vertex, in compressed rows (counting sort on the origin), with
+/// their targets alongside, so that pairing scans two short contiguous rows.
+struct HalfEdgeMesh::OutgoingRows
+{
+  std::vector<int32_t> Offsets;       ///< row of vertex v: [Offsets[v], Offsets[v + 1])
+  Buffer<int32_t> HalfEdges, Targets; ///< each slot filled once
+};
+
+namespace
+{
+/// What pairing found on one thread: edges to count, vertices to lock.
+struct PairingResult
+{
+  int64_t BoundaryEdges = 0, NonManifoldEdges = 0;
+  std::vector<int32_t> ToLock;
+};
+} // namespace
+
 MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangles,
                                     int32_t numTriangles, int threads, const int32_t* faceOrder,
                                     const int32_t* newVertex)
 {
   MeshBuildReport report;
+  this->CopyCorners(triangles, numTriangles, faceOrder, newVertex, threads);
+  this->Out.assign(numVertices, -1);
+  this->Flags.assign(numVertices, 0);
+  this->LiveFaces = numTriangles;
+  OutgoingRows rows;
+  this->SortOutgoing(numVertices, threads, rows);
+  this->PairTwins(numVertices, threads, rows, report);
+  this->FindFans(numVertices, threads, rows, report);
+  return report;
+}
+
+void HalfEdgeMesh::CopyCorners(const int32_t* triangles, int32_t numTriangles,
+                               const int32_t* faceOrder, const int32_t* newVertex, int threads)
+{
   const int32_t numHalfEdges = 3 * numTriangles;
   this->Corners.resize(numHalfEdges);
   Corner* corners = this->Corners.data();
@@ -33,42 +65,42 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
                   corners[h] = { triangles[h], -1 };
                 }
               });
-  this->Out.assign(numVertices, -1);
-  this->Flags.assign(numVertices, 0);
-  this->LiveFaces = numTriangles;
+}
 
-  // Outgoing half-edges of each vertex, in compressed rows (counting sort on the origin), with
-  // their targets alongside, so that pairing scans two short contiguous rows.
-  std::vector<int32_t> offsets;
-  Buffer<int32_t> outgoing(numHalfEdges), targets(numHalfEdges); // each slot filled once
-  int32_t* rowOutgoing = outgoing.data();
-  int32_t* rowTarget = targets.data();
+void HalfEdgeMesh::SortOutgoing(int32_t numVertices, int threads, OutgoingRows& rows) const
+{
+  const auto numHalfEdges = static_cast<size_t>(this->Corners.size());
+  rows.HalfEdges.resize(numHalfEdges);
+  rows.Targets.resize(numHalfEdges);
+  const Corner* corners = this->Corners.data();
+  int32_t* rowOutgoing = rows.HalfEdges.data();
+  int32_t* rowTarget = rows.Targets.data();
   CountingSort(
-    static_cast<size_t>(numHalfEdges), static_cast<size_t>(numVertices), threads,
+    numHalfEdges, static_cast<size_t>(numVertices), threads,
     [corners](size_t h) { return corners[h].Vertex; },
     [this, rowOutgoing, rowTarget](size_t h, int32_t k)
     {
       rowOutgoing[k] = static_cast<int32_t>(h);
       rowTarget[k] = this->Target(static_cast<int32_t>(h));
     },
-    offsets);
+    rows.Offsets);
+}
 
-  // Pair twins. An edge is manifold when it has exactly one half-edge each way. Each thread
-  // takes a range of vertices a and, for their half-edges a -> b with a < b, counts those of
-  // the edge each way; when there is one each way it pairs them (writing both twins: no other
-  // half-edge pairs these). Then each takes a range of half-edges and, for those a -> b with
-  // a >= b left unpaired, counts them too (a boundary or non-manifold edge). A non-manifold edge
-  // is counted by its smallest half-edge. What the threads find (edges to count, vertices to
-  // lock) is gathered afterwards.
-  struct PairingResult
-  {
-    int64_t BoundaryEdges = 0, NonManifoldEdges = 0;
-    std::vector<int32_t> ToLock;
-  };
+void HalfEdgeMesh::PairTwins(int32_t numVertices, int threads, const OutgoingRows& outgoing,
+                             MeshBuildReport& report)
+{
+  // An edge is manifold when it has exactly one half-edge each way. Each thread takes a range
+  // of vertices a and, for their half-edges a -> b with a < b, counts those of the edge each
+  // way; when there is one each way it pairs them (writing both twins: no other half-edge pairs
+  // these). Then each takes a range of half-edges and, for those a -> b with a >= b left
+  // unpaired, counts them too (a boundary or non-manifold edge). A non-manifold edge is counted
+  // by its smallest half-edge. What the threads find is gathered afterwards.
+  Corner* corners = this->Corners.data();
+  const int32_t numHalfEdges = static_cast<int32_t>(this->Corners.size());
   std::vector<PairingResult> found(static_cast<size_t>(std::max(threads, 1)));
-  const int32_t* rows = offsets.data();
-  const int32_t* rowHalfEdges = outgoing.data();
-  const int32_t* rowTargets = targets.data();
+  const int32_t* rows = outgoing.Offsets.data();
+  const int32_t* rowHalfEdges = outgoing.HalfEdges.data();
+  const int32_t* rowTargets = outgoing.Targets.data();
   PairingResult* results = found.data();
   // Looks at h = a -> b: pairs it with its twin, or reports it.
   const auto pair = [corners, rows, rowHalfEdges, rowTargets](int32_t h, int32_t a, int32_t b,
@@ -127,10 +159,27 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
                 }
                 results[t] = std::move(result);
               });
+  this->ReportUnpaired(numHalfEdges, threads, pair, results);
+  for (const PairingResult& result : found)
+  {
+    report.BoundaryEdges += result.BoundaryEdges;
+    report.NonManifoldEdges += result.NonManifoldEdges;
+    for (const int32_t v : result.ToLock)
+    {
+      this->Flags[v] |= Locked;
+    }
+  }
+}
+
+template <typename Pair, typename Result>
+void HalfEdgeMesh::ReportUnpaired(int32_t numHalfEdges, int threads, const Pair& pair,
+                                  Result* results) const
+{
+  const Corner* corners = this->Corners.data();
   ParallelFor(static_cast<size_t>(numHalfEdges), threads,
               [this, corners, results, pair](size_t begin, size_t end, int t)
               {
-                PairingResult result = std::move(results[t]); // as above
+                auto result = std::move(results[t]); // as above
                 for (int32_t h = static_cast<int32_t>(begin); h < static_cast<int32_t>(end); ++h)
                 {
                   if (corners[h].Twin >= 0)
@@ -146,20 +195,18 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
                 }
                 results[t] = std::move(result);
               });
-  for (const PairingResult& result : found)
-  {
-    report.BoundaryEdges += result.BoundaryEdges;
-    report.NonManifoldEdges += result.NonManifoldEdges;
-    for (const int32_t v : result.ToLock)
-    {
-      this->Flags[v] |= Locked;
-    }
-  }
+}
 
-  // One outgoing half-edge per vertex; detect bow-ties by circulating. Each vertex writes its
+void HalfEdgeMesh::FindFans(int32_t numVertices, int threads, const OutgoingRows& outgoing,
+                            MeshBuildReport& report)
+{
+  // One outgoing half-edge per vertex; bow-ties detected by circulating. Each vertex writes its
   // own records only; the counts are summed afterwards.
   std::vector<MeshBuildReport> counted(static_cast<size_t>(std::max(threads, 1)));
   MeshBuildReport* counts = counted.data();
+  const Corner* corners = this->Corners.data();
+  const int32_t* rows = outgoing.Offsets.data();
+  const int32_t* rowHalfEdges = outgoing.HalfEdges.data();
   int32_t* out = this->Out.data();
   uint8_t* flags = this->Flags.data();
   ParallelFor(static_cast<size_t>(numVertices), threads,
@@ -168,41 +215,7 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
                 MeshBuildReport found;
                 for (auto v = static_cast<int32_t>(begin); v < static_cast<int32_t>(end); ++v)
                 {
-                  const int32_t count = rows[v + 1] - rows[v];
-                  if (count == 0)
-                  {
-                    ++found.IsolatedVertices;
-                    continue;
-                  }
-                  int32_t boundaryOut = -1, boundaryCount = 0;
-                  for (int32_t k = rows[v]; k < rows[v + 1]; ++k)
-                  {
-                    if (corners[rowHalfEdges[k]].Twin < 0)
-                    {
-                      boundaryOut = rowHalfEdges[k];
-                      ++boundaryCount;
-                    }
-                  }
-                  out[v] = boundaryCount == 1 ? boundaryOut : rowHalfEdges[rows[v]];
-                  if ((flags[v] & Locked) == 0)
-                  {
-                    int32_t visited = 0;
-                    if (boundaryCount <= 1)
-                    {
-                      int32_t h = out[v];
-                      do
-                      {
-                        ++visited;
-                        h = corners[Prev(h)].Twin;
-                      } while (h >= 0 && h != out[v] && visited <= count);
-                    }
-                    if (visited != count)
-                    {
-                      flags[v] |= Locked;
-                      ++found.NonManifoldVertices;
-                    }
-                  }
-                  found.LockedVertices += (flags[v] & Locked) ? 1 : 0;
+                  FindFan(corners, rows, rowHalfEdges, v, out, flags, found);
                 }
                 counts[t] = found;
               });
@@ -212,7 +225,46 @@ MeshBuildReport HalfEdgeMesh::Build(int32_t numVertices, const int32_t* triangle
     report.NonManifoldVertices += found.NonManifoldVertices;
     report.LockedVertices += found.LockedVertices;
   }
-  return report;
+}
+
+void HalfEdgeMesh::FindFan(const Corner* corners, const int32_t* rows, const int32_t* rowHalfEdges,
+                           int32_t v, int32_t* out, uint8_t* flags, MeshBuildReport& found)
+{
+  const int32_t count = rows[v + 1] - rows[v];
+  if (count == 0)
+  {
+    ++found.IsolatedVertices;
+    return;
+  }
+  int32_t boundaryOut = -1, boundaryCount = 0;
+  for (int32_t k = rows[v]; k < rows[v + 1]; ++k)
+  {
+    if (corners[rowHalfEdges[k]].Twin < 0)
+    {
+      boundaryOut = rowHalfEdges[k];
+      ++boundaryCount;
+    }
+  }
+  out[v] = boundaryCount == 1 ? boundaryOut : rowHalfEdges[rows[v]];
+  if ((flags[v] & Locked) == 0)
+  {
+    int32_t visited = 0;
+    if (boundaryCount <= 1)
+    {
+      int32_t h = out[v];
+      do
+      {
+        ++visited;
+        h = corners[Prev(h)].Twin;
+      } while (h >= 0 && h != out[v] && visited <= count);
+    }
+    if (visited != count)
+    {
+      flags[v] |= Locked;
+      ++found.NonManifoldVertices;
+    }
+  }
+  found.LockedVertices += (flags[v] & Locked) ? 1 : 0;
 }
 
 int HalfEdgeMesh::Valence(int32_t v) const

@@ -210,6 +210,24 @@ public:
   void Renumber(const int32_t* vertexTo, const int32_t* faceTo, int threads = 1);
 
 private:
+  struct Corner;
+  struct OutgoingRows;
+  // The phases of Build.
+  void CopyCorners(const int32_t* triangles, int32_t numTriangles, const int32_t* faceOrder,
+                   const int32_t* newVertex, int threads);
+  void SortOutgoing(int32_t numVertices, int threads, OutgoingRows& rows) const;
+  /// Twins of the manifold edges; the ends of the others locked.
+  void PairTwins(int32_t numVertices, int threads, const OutgoingRows& rows,
+                 MeshBuildReport& report);
+  /// The unpaired half-edges a -> b with a >= b, looked at by `pair` (PairTwins).
+  template <typename Pair, typename Result>
+  void ReportUnpaired(int32_t numHalfEdges, int threads, const Pair& pair, Result* results) const;
+  /// Each vertex's outgoing half-edge; bow-ties (more than one fan) locked.
+  void FindFans(int32_t numVertices, int threads, const OutgoingRows& rows,
+                MeshBuildReport& report);
+  static void FindFan(const Corner* corners, const int32_t* rows, const int32_t* rowHalfEdges,
+                      int32_t v, int32_t* out, uint8_t* flags, MeshBuildReport& found);
+
   void RemoveFace(int32_t h);
   /// Out[v] anew from a live outgoing half-edge; `closed`: v's fan is known to have no
   /// boundary (then any outgoing half-edge will do, without circulating).

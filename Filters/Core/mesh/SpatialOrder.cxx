@@ -36,14 +36,13 @@ uint32_t MortonCode(const double p[3], const double lo[3], double extent)
   return code;
 }
 
-void ComputeSpatialOrder(int32_t numVertices, const double* points, int32_t numTriangles,
-                         const int32_t* triangles, SpatialOrder& order, int threads)
+namespace
 {
-  const auto n = static_cast<size_t>(std::max(numVertices, 0));
-  const auto nt = static_cast<size_t>(std::max(numTriangles, 0));
-
-  // The bounding box (finite coordinates only), as a cube.
-  double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
+/// The bounding box of the finite points, as a cube: its low corner and its side.
+double FiniteBox(const double* points, size_t n, double lo[3])
+{
+  double hi[3] = { 0, 0, 0 };
+  lo[0] = lo[1] = lo[2] = 0;
   bool any = false;
   for (size_t v = 0; v < n; ++v)
   {
@@ -59,10 +58,15 @@ void ComputeSpatialOrder(int32_t numVertices, const double* points, int32_t numT
     }
     any = true;
   }
-  const double extent = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
+  return std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
+}
 
-  // Vertices: LSD radix sort of (code, vertex) pairs, 10 bits of the code per pass (stable:
-  // equal codes keep the vertices' order).
+/// Vertices: LSD radix sort of (code, vertex) pairs, 10 bits of the code per pass (stable:
+/// equal codes keep the vertices' order).
+void OrderVertices(const double* points, size_t n, int threads, SpatialOrder& order)
+{
+  double lo[3];
+  const double extent = FiniteBox(points, n, lo);
   Buffer<uint64_t> current(n), next(n); // every slot written by each pass
   uint64_t* pairs = current.data();
   const double box[3] = { lo[0], lo[1], lo[2] };
@@ -98,8 +102,13 @@ void ComputeSpatialOrder(int32_t numVertices, const double* points, int32_t numT
                   newVertex[oldVertex[i]] = static_cast<int32_t>(i);
                 }
               });
+}
 
-  // Triangles: counting sort on their smallest renumbered vertex.
+/// Triangles: counting sort on their smallest renumbered vertex.
+void OrderFaces(const int32_t* triangles, size_t nt, int threads, SpatialOrder& order)
+{
+  const size_t n = order.NewVertex.size();
+  const int32_t* newVertex = order.NewVertex.data();
   Buffer<int32_t> key(nt); // every slot written below
   int32_t* keys = key.data();
   ParallelFor(nt, threads,
@@ -117,6 +126,14 @@ void ComputeSpatialOrder(int32_t numVertices, const double* points, int32_t numT
   CountingSort(
     nt, n, threads, [keys](size_t f) { return keys[f]; },
     [oldFace](size_t f, int32_t slot) { oldFace[slot] = static_cast<int32_t>(f); }, faceStart);
+}
+} // namespace
+
+void ComputeSpatialOrder(int32_t numVertices, const double* points, int32_t numTriangles,
+                         const int32_t* triangles, SpatialOrder& order, int threads)
+{
+  OrderVertices(points, static_cast<size_t>(std::max(numVertices, 0)), threads, order);
+  OrderFaces(triangles, static_cast<size_t>(std::max(numTriangles, 0)), threads, order);
 }
 
 } // namespace colordecimation

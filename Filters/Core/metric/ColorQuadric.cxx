@@ -152,6 +152,45 @@ bool MinimizeColorQuadric(const ColorQuadricD& q, double y[6], double tolerance)
   return true;
 }
 
+namespace
+{
+/// The boundary edges of face f (corners x, normal n in the geometric part): the hyperplane
+/// through each edge, perpendicular to the face, added to both its ends.
+void AddBoundaryPlanes(const HalfEdgeMesh& mesh, int32_t f, const int32_t tri[3],
+                       const double x[3][N], const double n[3], double boundaryWeight,
+                       std::vector<ColorQuadric>& quadrics)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    const int32_t h = 3 * f + c;
+    if (mesh.Twin(h) >= 0)
+    {
+      continue;
+    }
+    const double* a = x[c];
+    const double* b = x[(c + 1) % 3];
+    const double e[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    double m[N] = {
+      e[1] * n[2] - e[2] * n[1], e[2] * n[0] - e[0] * n[2], e[0] * n[1] - e[1] * n[0], 0.0, 0.0, 0.0
+    };
+    const double length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    if (!(length > 0.0))
+    {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      m[k] /= length;
+    }
+    ColorQuadric constraint;
+    constraint.AddHyperplaneThroughCentre(
+      m, boundaryWeight * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]));
+    quadrics[tri[c]].Add(constraint);
+    quadrics[tri[(c + 1) % 3]].Add(constraint);
+  }
+}
+} // namespace
+
 void InitializeColorQuadrics(const HalfEdgeMesh& mesh, const float* positions, int positionStride,
                              double positionScale, const float* colors, int colorStride,
                              double colorScale, double boundaryWeight,
@@ -204,42 +243,9 @@ void InitializeColorQuadrics(const HalfEdgeMesh& mesh, const float* positions, i
     {
       quadrics[tri[c]].Add(q);
     }
-
-    if (!(boundaryWeight > 0.0))
+    if (boundaryWeight > 0.0)
     {
-      continue;
-    }
-    // Boundary edges of this face: the plane through the edge, perpendicular to the face.
-    for (int c = 0; c < 3; ++c)
-    {
-      const int32_t h = 3 * f + c;
-      if (mesh.Twin(h) >= 0)
-      {
-        continue;
-      }
-      const double* a = x[c];
-      const double* b = x[(c + 1) % 3];
-      const double e[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-      double m[N] = { e[1] * n[2] - e[2] * n[1],
-                      e[2] * n[0] - e[0] * n[2],
-                      e[0] * n[1] - e[1] * n[0],
-                      0.0,
-                      0.0,
-                      0.0 };
-      const double length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-      if (!(length > 0.0))
-      {
-        continue;
-      }
-      for (int k = 0; k < 3; ++k)
-      {
-        m[k] /= length;
-      }
-      ColorQuadric constraint;
-      constraint.AddHyperplaneThroughCentre(
-        m, boundaryWeight * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]));
-      quadrics[tri[c]].Add(constraint);
-      quadrics[tri[(c + 1) % 3]].Add(constraint);
+      AddBoundaryPlanes(mesh, f, tri, x, n, boundaryWeight, quadrics);
     }
   }
 }

@@ -111,6 +111,105 @@ inline void SortByKey(Candidate* begin, Candidate* end, Buffer<Candidate>& scrat
   }
 }
 
+namespace detail
+{
+/// The thresholds of SelectCheapest's step 1.
+struct Thresholds
+{
+  double Lower = -std::numeric_limits<double>::infinity();
+  double Upper = std::numeric_limits<double>::infinity();
+  double UpperShare = 1.0; ///< about the share of the candidates up to Upper
+};
+
+/**
+ * Two thresholds from a sample (the keys of every SampleStride-th listed vertex): a little
+ * below and a little above the sample's share of wanted keys, so that nearly always the keys
+ * below the lower one are all wanted and those up to the upper one include all wanted.
+ */
+template <typename VertexAt, typename KeyOf, typename HowMany>
+Thresholds SampleThresholds(size_t count, const VertexAt& vertexAt, const KeyOf& keyOf,
+                            const HowMany& howMany)
+{
+  constexpr size_t SampleStride = 16;
+  std::vector<double> sample;
+  sample.reserve(count / SampleStride + 1);
+  for (size_t i = 0; i < count; i += SampleStride)
+  {
+    double key;
+    if (keyOf(vertexAt(i), key))
+    {
+      sample.push_back(key);
+    }
+  }
+  Thresholds thresholds;
+  if (sample.empty())
+  {
+    return thresholds;
+  }
+  const double estimate = static_cast<double>(sample.size() * SampleStride);
+  const double share =
+    std::min(1.0, static_cast<double>(howMany(static_cast<size_t>(estimate))) / estimate);
+  const double size = static_cast<double>(sample.size());
+  const double margin = 0.02 * size + 4.0 * std::sqrt(share * size) + 2.0;
+  const auto index = static_cast<size_t>(std::ceil(share * size + margin));
+  auto end = sample.end();
+  if (index < sample.size())
+  {
+    std::nth_element(sample.begin(), sample.begin() + index, sample.end());
+    thresholds.Upper = sample[index];
+    thresholds.UpperShare = static_cast<double>(index + 1) / size;
+    end = sample.begin() + index;
+  }
+  const double lowPosition = std::floor(share * size - margin);
+  if (lowPosition > 0)
+  {
+    const auto lowIndex = static_cast<size_t>(lowPosition);
+    std::nth_element(sample.begin(), sample.begin() + lowIndex, end);
+    thresholds.Lower = sample[lowIndex];
+  }
+  return thresholds;
+}
+
+/**
+ * Keep in out[first, end) only the `wanted` smallest (in vertex order): all those below
+ * `lower` (`below` of them) and the smallest of the others (`uncertain`), found among those
+ * alone; or, should the lower threshold mislead (too many below it), among all.
+ */
+inline void KeepSmallest(std::vector<Candidate>& out, size_t first,
+                         std::vector<Candidate>& uncertain, size_t below, size_t wanted,
+                         double lower)
+{
+  if (wanted == 0)
+  {
+    out.resize(first);
+    return;
+  }
+  Candidate last;
+  if (below == wanted)
+  {
+    const double cut = lower;
+    out.erase(std::remove_if(out.begin() + first, out.end(),
+                             [cut](const Candidate& c) { return !(c.Key < cut); }),
+              out.end());
+    return;
+  }
+  if (below < wanted)
+  {
+    std::nth_element(uncertain.begin(), uncertain.begin() + (wanted - below - 1), uncertain.end());
+    last = uncertain[wanted - below - 1];
+  }
+  else
+  {
+    std::vector<Candidate> ranked(out.begin() + first, out.end());
+    std::nth_element(ranked.begin(), ranked.begin() + (wanted - 1), ranked.end());
+    last = ranked[wanted - 1];
+  }
+  out.erase(
+    std::remove_if(out.begin() + first, out.end(), [last](const Candidate& c) { return last < c; }),
+    out.end());
+}
+} // namespace detail
+
 /**
  * Append to `out`, in vertex order, the `howMany(m)` smallest candidates by (key, vertex), m
  * being the number of candidates among the vertices vertices[0 .. count - 1] (in increasing
@@ -123,54 +222,15 @@ size_t SelectCheapest(size_t count, const int32_t* vertices, const KeyOf& keyOf,
                       const HowMany& howMany, int threads, std::vector<Candidate>& out)
 {
   threads = std::max(threads, 1);
-  constexpr double Infinity = std::numeric_limits<double>::infinity();
   const auto vertexAt = [vertices](size_t i)
   { return vertices ? vertices[i] : static_cast<int32_t>(i); };
+  // 1. Two thresholds from a sample.
+  const detail::Thresholds thresholds = detail::SampleThresholds(count, vertexAt, keyOf, howMany);
+  const double lower = thresholds.Lower;
 
-  // 1. Two thresholds from a sample (the keys of every SampleStride-th listed vertex): a little
-  // below and a little above the sample's share of wanted keys, so that nearly always the keys
-  // below the lower one are all wanted and those up to the upper one include all wanted.
-  constexpr size_t SampleStride = 16;
-  std::vector<double> sample;
-  sample.reserve(count / SampleStride + 1);
-  for (size_t i = 0; i < count; i += SampleStride)
-  {
-    double key;
-    if (keyOf(vertexAt(i), key))
-    {
-      sample.push_back(key);
-    }
-  }
-  double lower = -Infinity, upper = Infinity;
-  double upperShare = 1.0; // about the share of the candidates up to `upper`
-  if (!sample.empty())
-  {
-    const double estimate = static_cast<double>(sample.size() * SampleStride);
-    const double share =
-      std::min(1.0, static_cast<double>(howMany(static_cast<size_t>(estimate))) / estimate);
-    const double size = static_cast<double>(sample.size());
-    const double margin = 0.02 * size + 4.0 * std::sqrt(share * size) + 2.0;
-    const auto index = static_cast<size_t>(std::ceil(share * size + margin));
-    auto end = sample.end();
-    if (index < sample.size())
-    {
-      std::nth_element(sample.begin(), sample.begin() + index, sample.end());
-      upper = sample[index];
-      upperShare = static_cast<double>(index + 1) / size;
-      end = sample.begin() + index;
-    }
-    const double lowPosition = std::floor(share * size - margin);
-    if (lowPosition > 0)
-    {
-      const auto lowIndex = static_cast<size_t>(lowPosition);
-      std::nth_element(sample.begin(), sample.begin() + lowIndex, end);
-      lower = sample[lowIndex];
-    }
-  }
-
-  // 2. The candidates up to `upper`, in vertex order (each thread its range, appended in range
-  // order), those of them from `lower` on apart, and how many candidates there are in all and
-  // below `lower`.
+  // 2. The candidates up to the upper threshold, in vertex order (each thread its range,
+  // appended in range order), those of them from `lower` on apart, and how many candidates
+  // there are in all and below `lower`.
   const size_t first = out.size();
   size_t total = 0, below = 0;
   std::vector<Candidate> uncertain;
@@ -191,48 +251,17 @@ size_t SelectCheapest(size_t count, const int32_t* vertices, const KeyOf& keyOf,
       out, uncertain, share);
     below = out.size() - first - uncertain.size();
   };
-  collect(upper, std::min(1.0, 1.05 * upperShare) + 1e-3);
+  collect(thresholds.Upper, std::min(1.0, 1.05 * thresholds.UpperShare) + 1e-3);
   const size_t wanted = std::min(total, static_cast<size_t>(howMany(total)));
   if (out.size() - first < wanted)
   {
-    collect(Infinity, 1.0); // the sample misled: all of them
+    collect(std::numeric_limits<double>::infinity(), 1.0); // the sample misled: all of them
   }
-  if (out.size() - first == wanted)
+  // 3. Of those, only the wanted smallest stay.
+  if (out.size() - first != wanted)
   {
-    return total;
+    detail::KeepSmallest(out, first, uncertain, below, wanted, lower);
   }
-
-  // 3. Of those, only the wanted smallest stay (in vertex order): all those below `lower` and
-  // the smallest of the others, found among those alone; or, should the lower threshold
-  // mislead (too many below it), among all.
-  if (wanted == 0)
-  {
-    out.resize(first);
-    return total;
-  }
-  Candidate last;
-  if (below == wanted)
-  {
-    const double cut = lower;
-    out.erase(std::remove_if(out.begin() + first, out.end(),
-                             [cut](const Candidate& c) { return !(c.Key < cut); }),
-              out.end());
-    return total;
-  }
-  if (below < wanted)
-  {
-    std::nth_element(uncertain.begin(), uncertain.begin() + (wanted - below - 1), uncertain.end());
-    last = uncertain[wanted - below - 1];
-  }
-  else
-  {
-    std::vector<Candidate> ranked(out.begin() + first, out.end());
-    std::nth_element(ranked.begin(), ranked.begin() + (wanted - 1), ranked.end());
-    last = ranked[wanted - 1];
-  }
-  out.erase(
-    std::remove_if(out.begin() + first, out.end(), [last](const Candidate& c) { return last < c; }),
-    out.end());
   return total;
 }
 
