@@ -1,0 +1,466 @@
+#include "Adapter/InputMesh.h"
+
+#include "Core/util/Parallel.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolygon.h"
+#include "vtkSmartPointer.h"
+#include "vtkTriangleStrip.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkTypeInt64Array.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace colordecimation
+{
+namespace adapter
+{
+
+void TriangleSoup::Add(const vtkIdType* ids, vtkIdType cell, vtkIdType numPoints)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    if (ids[k] < 0 || ids[k] >= numPoints)
+    {
+      this->IdsOutOfRange = true;
+      return;
+    }
+  }
+  if (ids[0] == ids[1] || ids[1] == ids[2] || ids[0] == ids[2])
+  {
+    ++this->Degenerate;
+    return;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Triangles.push_back(static_cast<int32_t>(ids[k]));
+  }
+  this->SourceCell.push_back(cell);
+}
+
+DecimatorInput InputMesh::CoreInput() const
+{
+  DecimatorInput in;
+  in.NumberOfPoints = static_cast<int32_t>(this->Points.size() / 3);
+  in.Points = this->Points.data();
+  in.Colors = this->Colors.empty() ? nullptr : this->Colors.data();
+  in.NumberOfTriangles = static_cast<int32_t>(this->Soup.SourceCell.size());
+  in.Triangles = this->Soup.Triangles.data();
+  in.Fixed = this->Soup.HasFixed ? this->Soup.Fixed.data() : nullptr;
+  return in;
+}
+
+namespace
+{
+/**
+ * Ghost cells belong to a neighbouring piece (distributed data): they are left out, and the
+ * points they share with this piece are fixed, as are ghost (duplicate) points, so that the
+ * decimated pieces still meet without cracks.
+ */
+bool SkipGhostCell(vtkUnsignedCharArray* ghosts, vtkIdType cell, vtkIdType npts,
+                   const vtkIdType* pts, vtkIdType numPoints, TriangleSoup& soup)
+{
+  if (!ghosts ||
+      !(ghosts->GetValue(cell) &
+        (vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL)))
+  {
+    return false;
+  }
+  ++soup.GhostCells;
+  for (vtkIdType k = 0; k < npts; ++k)
+  {
+    if (pts[k] >= 0 && pts[k] < numPoints)
+    {
+      soup.Fixed[pts[k]] = 1;
+      soup.HasFixed = true;
+    }
+  }
+  return true;
+}
+
+/**
+ * The common case in bulk: polygons that are all triangles, with ids in range and none
+ * repeating a point, no strips and no ghost cells. Copies them on `threads` threads and returns
+ * true; false (nothing added) for any other input, which takes the cell-by-cell way.
+ */
+template <typename Id>
+bool CopyPlainTriangles(const Id* connectivity, vtkIdType numTriangles, vtkIdType numPoints,
+                        vtkIdType firstCell, int threads, TriangleSoup& soup)
+{
+  const size_t nt = static_cast<size_t>(numTriangles);
+  threads = ThreadsFor(nt, threads, 65536);
+  const bool plain = ParallelAll(nt, threads,
+                                 [connectivity, numPoints](size_t begin, size_t end)
+                                 {
+                                   bool ok = true;
+                                   for (size_t f = begin; f < end; ++f)
+                                   {
+                                     const Id a = connectivity[3 * f], b = connectivity[3 * f + 1],
+                                              c = connectivity[3 * f + 2];
+                                     ok &= a >= 0 && a < numPoints && b >= 0 && b < numPoints &&
+                                       c >= 0 && c < numPoints && a != b && b != c && a != c;
+                                   }
+                                   return ok;
+                                 });
+  if (!plain)
+  {
+    return false;
+  }
+  soup.Triangles.resize(3 * nt);
+  soup.SourceCell.resize(nt);
+  int32_t* triangles = soup.Triangles.data();
+  vtkIdType* sources = soup.SourceCell.data();
+  ParallelFor(nt, threads,
+              [connectivity, triangles, sources, firstCell](size_t begin, size_t end, int)
+              {
+                for (size_t i = 3 * begin; i < 3 * end; ++i)
+                {
+                  triangles[i] = static_cast<int32_t>(connectivity[i]);
+                }
+                for (size_t f = begin; f < end; ++f)
+                {
+                  sources[f] = firstCell + static_cast<vtkIdType>(f);
+                }
+              });
+  return true;
+}
+
+/// Ghost (duplicate) points are fixed.
+void FixGhostPoints(vtkPolyData* input, TriangleSoup& soup)
+{
+  vtkUnsignedCharArray* pointGhosts = input->GetPointGhostArray();
+  if (!pointGhosts)
+  {
+    return;
+  }
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < numPoints && i < pointGhosts->GetNumberOfValues(); ++i)
+  {
+    if (pointGhosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT)
+    {
+      soup.Fixed[i] = 1;
+      soup.HasFixed = true;
+      ++soup.GhostPoints;
+    }
+  }
+}
+
+/// The bulk path of CopyPlainTriangles, when the polygons are all triangles and there are no
+/// strips nor ghost cells; false when it does not apply.
+bool TryPlainTriangles(vtkPolyData* input, vtkIdType firstCell, int threads, TriangleSoup& soup)
+{
+  vtkCellArray* polyCells = input->GetPolys();
+  if (input->GetCellGhostArray() || input->GetNumberOfStrips() != 0 ||
+      polyCells->GetNumberOfCells() == 0 || polyCells->IsHomogeneous() != 3)
+  {
+    return false;
+  }
+  const vtkIdType nt = polyCells->GetNumberOfCells();
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  return polyCells->IsStorage64Bit()
+    ? CopyPlainTriangles(polyCells->GetConnectivityArray64()->GetPointer(0), nt, numPoints,
+                         firstCell, threads, soup)
+    : CopyPlainTriangles(polyCells->GetConnectivityArray32()->GetPointer(0), nt, numPoints,
+                         firstCell, threads, soup);
+}
+
+/// A polygon of more than 3 points, by ear cutting (a fan when ear cutting gives up).
+void AddPolygon(vtkPolyData* input, vtkIdType cell, vtkIdType npts, const vtkIdType* pts,
+                vtkPolygon* polygon, vtkIdList* local, TriangleSoup& soup)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  ++soup.Polygons;
+  for (vtkIdType k = 0; k < npts; ++k)
+  {
+    if (pts[k] < 0 || pts[k] >= numPoints)
+    {
+      soup.IdsOutOfRange = true;
+      return;
+    }
+  }
+  polygon->Initialize(static_cast<int>(npts), pts, input->GetPoints());
+  local->Reset();
+  if (polygon->Triangulate(local) && local->GetNumberOfIds() == 3 * (npts - 2))
+  {
+    for (vtkIdType t = 0; t < local->GetNumberOfIds(); t += 3)
+    {
+      const vtkIdType ids[3] = { pts[local->GetId(t)], pts[local->GetId(t + 1)],
+                                 pts[local->GetId(t + 2)] };
+      soup.Add(ids, cell, numPoints);
+    }
+    return;
+  }
+  for (vtkIdType k = 1; k + 1 < npts; ++k)
+  {
+    const vtkIdType ids[3] = { pts[0], pts[k], pts[k + 1] };
+    soup.Add(ids, cell, numPoints);
+  }
+}
+
+/// The polygon cells one by one (cell ids from firstCell on).
+void AddPolygons(vtkPolyData* input, vtkIdType firstCell, TriangleSoup& soup)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  vtkUnsignedCharArray* cellGhosts = input->GetCellGhostArray();
+  vtkNew<vtkPolygon> polygon;
+  vtkNew<vtkIdList> local;
+  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  vtkIdType cell = firstCell;
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell(), ++cell)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    polys->GetCurrentCell(npts, pts);
+    if (SkipGhostCell(cellGhosts, cell, npts, pts, numPoints, soup))
+    {
+      continue;
+    }
+    if (npts == 3)
+    {
+      soup.Add(pts, cell, numPoints);
+    }
+    else if (npts < 3)
+    {
+      ++soup.BadCells;
+    }
+    else
+    {
+      AddPolygon(input, cell, npts, pts, polygon, local, soup);
+    }
+  }
+}
+
+/// The strips, decomposed into triangles (cell ids from firstCell on).
+void AddStrips(vtkPolyData* input, vtkIdType firstCell, TriangleSoup& soup)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  vtkUnsignedCharArray* cellGhosts = input->GetCellGhostArray();
+  vtkNew<vtkCellArray> stripTriangles;
+  auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
+  vtkIdType cell = firstCell;
+  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell(), ++cell)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    strips->GetCurrentCell(npts, pts);
+    if (SkipGhostCell(cellGhosts, cell, npts, pts, numPoints, soup))
+    {
+      continue;
+    }
+    ++soup.Strips;
+    if (npts < 3)
+    {
+      ++soup.BadCells;
+      continue;
+    }
+    stripTriangles->Reset();
+    vtkTriangleStrip::DecomposeStrip(static_cast<int>(npts), pts, stripTriangles);
+    auto tris = vtk::TakeSmartPointer(stripTriangles->NewIterator());
+    for (tris->GoToFirstCell(); !tris->IsDoneWithTraversal(); tris->GoToNextCell())
+    {
+      vtkIdType n3;
+      const vtkIdType* ids;
+      tris->GetCurrentCell(n3, ids);
+      soup.Add(ids, cell, numPoints);
+    }
+  }
+}
+} // namespace
+
+void ExtractTriangles(vtkPolyData* input, TriangleSoup& soup, int threads)
+{
+  soup.Fixed.assign(input->GetNumberOfPoints(), 0);
+  FixGhostPoints(input, soup);
+  const vtkIdType polyOffset = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  if (TryPlainTriangles(input, polyOffset, threads, soup))
+  {
+    return;
+  }
+  soup.Triangles.reserve(3 * static_cast<size_t>(input->GetNumberOfPolys()));
+  soup.SourceCell.reserve(static_cast<size_t>(input->GetNumberOfPolys()));
+  AddPolygons(input, polyOffset, soup);
+  AddStrips(input, polyOffset + input->GetNumberOfPolys(), soup);
+}
+
+vtkIdType FixOpenBoundary(TriangleSoup& soup)
+{
+  std::vector<uint64_t> edges;
+  edges.reserve(soup.Triangles.size());
+  for (size_t t = 0; t + 2 < soup.Triangles.size(); t += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const auto a = static_cast<uint32_t>(soup.Triangles[t + k]);
+      const auto b = static_cast<uint32_t>(soup.Triangles[t + (k + 1) % 3]);
+      edges.push_back((uint64_t(std::min(a, b)) << 32) | std::max(a, b));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  vtkIdType fixed = 0;
+  for (size_t i = 0; i < edges.size();)
+  {
+    size_t j = i + 1;
+    while (j < edges.size() && edges[j] == edges[i])
+    {
+      ++j;
+    }
+    if (j - i == 1)
+    {
+      for (const uint32_t v : { uint32_t(edges[i] >> 32), uint32_t(edges[i] & 0xffffffffu) })
+      {
+        fixed += soup.Fixed[v] ? 0 : 1;
+        soup.Fixed[v] = 1;
+      }
+      soup.HasFixed = true;
+    }
+    i = j;
+  }
+  return fixed;
+}
+
+bool GatherPoints(vtkPoints* points, Buffer<double>& xyz, int threads)
+{
+  const vtkIdType n = points->GetNumberOfPoints();
+  const size_t values = 3 * static_cast<size_t>(n);
+  xyz.resize(values);
+  double* out = xyz.data();
+  vtkDataArray* data = points->GetData();
+  const void* source = nullptr;
+  bool isFloat = false;
+  if (auto* f = vtkFloatArray::FastDownCast(data))
+  {
+    source = f->GetPointer(0);
+    isFloat = true;
+  }
+  else if (auto* d = vtkDoubleArray::FastDownCast(data))
+  {
+    source = d->GetPointer(0);
+  }
+  else
+  {
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      points->GetPoint(i, out + 3 * i);
+    }
+  }
+  return ParallelAll(values, ThreadsFor(values, threads, 1 << 18),
+                     [source, isFloat, out](size_t begin, size_t end)
+                     {
+                       if (source && isFloat)
+                       {
+                         std::copy(static_cast<const float*>(source) + begin,
+                                   static_cast<const float*>(source) + end, out + begin);
+                       }
+                       else if (source)
+                       {
+                         std::copy(static_cast<const double*>(source) + begin,
+                                   static_cast<const double*>(source) + end, out + begin);
+                       }
+                       return std::all_of(out + begin, out + end,
+                                          [](double x) { return std::isfinite(x); });
+                     });
+}
+
+vtkIdType ConvertColors(vtkDataArray* array, std::vector<float>& rgb, double mapping[2])
+{
+  const vtkIdType n = array->GetNumberOfTuples();
+  const int comps = array->GetNumberOfComponents();
+  const int used = comps >= 3 ? 3 : 1; // RGB(A...) or a grey value
+  rgb.assign(3 * static_cast<size_t>(n), 0.0f);
+  vtkIdType nonFinite = 0;
+
+  mapping[0] = 0.0;
+  mapping[1] = 1.0 / 255.0;
+  if (auto* uc = vtkUnsignedCharArray::FastDownCast(array))
+  {
+    const unsigned char* src = uc->GetPointer(0);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        rgb[3 * i + k] = src[comps * i + (used == 3 ? k : 0)] / 255.0f;
+      }
+    }
+    return 0;
+  }
+
+  // Range of the components used, finite values only.
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < used; ++k)
+    {
+      const double x = array->GetComponent(i, k);
+      if (std::isfinite(x))
+      {
+        lo = std::min(lo, x);
+        hi = std::max(hi, x);
+      }
+    }
+  }
+  const bool unit = lo >= 0.0 && hi <= 1.0;
+  const double offset = unit ? 0.0 : lo;
+  const double scale = unit ? 1.0 : (hi > lo ? 1.0 / (hi - lo) : 0.0);
+  mapping[0] = offset;
+  mapping[1] = scale;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    bool finite = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double x = array->GetComponent(i, used == 3 ? k : 0);
+      finite = finite && std::isfinite(x);
+      rgb[3 * i + k] = std::isfinite(x) ? static_cast<float>((x - offset) * scale) : 0.0f;
+    }
+    nonFinite += finite ? 0 : 1;
+  }
+  return nonFinite;
+}
+
+void WriteColor(vtkDataArray* array, vtkIdType i, const double rgb[3], const double mapping[2])
+{
+  if (!(mapping[1] > 0.0))
+  {
+    return;
+  }
+  const int comps = array->GetNumberOfComponents();
+  const bool integral = array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE;
+  const double lo = array->GetDataTypeMin();
+  const double hi = array->GetDataTypeMax();
+  auto value = [&](double c)
+  {
+    double x = mapping[0] + c / mapping[1];
+    if (integral)
+    {
+      x = std::min(std::max(std::round(x), lo), hi);
+    }
+    return x;
+  };
+  if (comps >= 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      array->SetComponent(i, k, value(rgb[k]));
+    }
+  }
+  else if (comps >= 1)
+  {
+    array->SetComponent(i, 0, value((rgb[0] + rgb[1] + rgb[2]) / 3.0));
+  }
+}
+
+} // namespace adapter
+} // namespace colordecimation

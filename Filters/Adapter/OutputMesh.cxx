@@ -1,0 +1,229 @@
+#include "Adapter/OutputMesh.h"
+
+#include "Adapter/InputMesh.h"
+#include "Core/Decimator.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkObject.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSetGet.h"
+
+#include <string>
+#include <vector>
+
+namespace colordecimation
+{
+namespace adapter
+{
+namespace
+{
+/// The points the surviving triangles use: input id -> output id (-1 if unused), and the
+/// lists of both for copying the point data.
+struct UsedPoints
+{
+  std::vector<vtkIdType> NewId;
+  vtkNew<vtkIdList> Source; ///< output point i is input point Source[i]
+  vtkNew<vtkIdList> Target; ///< 0, 1, 2, ...
+  vtkIdType Triangles = 0;  ///< the surviving triangles
+};
+
+void FindUsedPoints(const HalfEdgeMesh& mesh, vtkIdType numPoints, UsedPoints& used)
+{
+  used.NewId.assign(numPoints, -1);
+  for (int32_t f = 0; f < mesh.GetNumberOfFaceSlots(); ++f)
+  {
+    if (mesh.IsFaceAlive(f))
+    {
+      ++used.Triangles;
+      int32_t tri[3];
+      mesh.GetFace(f, tri);
+      used.NewId[tri[0]] = used.NewId[tri[1]] = used.NewId[tri[2]] = 0;
+    }
+  }
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    if (used.NewId[i] == 0)
+    {
+      used.NewId[i] = used.Source->GetNumberOfIds();
+      used.Target->InsertNextId(used.NewId[i]);
+      used.Source->InsertNextId(i);
+    }
+  }
+}
+
+/// The used points, copied from the input (in its own type), moved ones at their new place.
+void WritePoints(vtkPolyData* input, const Decimator& decimator, const UsedPoints& used,
+                 vtkPolyData* output)
+{
+  const vtkIdType numOutPoints = used.Source->GetNumberOfIds();
+  vtkNew<vtkPoints> outPoints;
+  outPoints->SetDataType(input->GetPoints()->GetDataType());
+  outPoints->SetNumberOfPoints(numOutPoints);
+  input->GetPoints()->GetData()->GetTuples(used.Source, outPoints->GetData());
+  if (decimator.HasMovedVertices())
+  {
+    // Full collapses (ColorQuadric with OptimalPlacement) moved some surviving vertices.
+    for (vtkIdType i = 0; i < numOutPoints; ++i)
+    {
+      const auto source = static_cast<int32_t>(used.Source->GetId(i));
+      if (decimator.IsMoved(source))
+      {
+        double p[3];
+        decimator.GetOutputPosition(source, p);
+        outPoints->SetPoint(i, p);
+      }
+    }
+  }
+  output->SetPoints(outPoints);
+}
+
+/// The surviving triangles, in input order, and the input cell of each (sourceCells).
+void WriteTriangles(const HalfEdgeMesh& mesh, const TriangleSoup& soup, const UsedPoints& used,
+                    vtkIdList* sourceCells, vtkIdList* targetCells, vtkPolyData* output)
+{
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(3 * used.Triangles);
+  sourceCells->SetNumberOfIds(used.Triangles);
+  targetCells->SetNumberOfIds(used.Triangles);
+  vtkIdType t = 0;
+  for (int32_t f = 0; f < mesh.GetNumberOfFaceSlots(); ++f)
+  {
+    if (mesh.IsFaceAlive(f))
+    {
+      int32_t tri[3];
+      mesh.GetFace(f, tri);
+      for (int k = 0; k < 3; ++k)
+      {
+        connectivity->SetValue(3 * t + k, used.NewId[tri[k]]);
+      }
+      sourceCells->SetId(t, soup.SourceCell[f]);
+      targetCells->SetId(t, t);
+      ++t;
+    }
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(3, connectivity);
+  output->SetPolys(polys);
+}
+
+/// The moved vertices' new colours, in the colour array's own type and range (the other arrays
+/// keep the surviving input vertex's values).
+void WriteMovedColors(const InputMesh& mesh, const Decimator& decimator, const UsedPoints& used,
+                      vtkPointData* outPD)
+{
+  vtkDataArray* colorArray = mesh.ColorArray;
+  vtkDataArray* outColors = colorArray->GetName() && *colorArray->GetName()
+    ? outPD->GetArray(colorArray->GetName())
+    : outPD->GetScalars();
+  if (!outColors || outColors->GetNumberOfComponents() != colorArray->GetNumberOfComponents())
+  {
+    return;
+  }
+  for (vtkIdType i = 0; i < used.Source->GetNumberOfIds(); ++i)
+  {
+    const auto source = static_cast<int32_t>(used.Source->GetId(i));
+    if (decimator.IsMoved(source))
+    {
+      double c[3];
+      decimator.GetOutputColor(source, c);
+      WriteColor(outColors, i, c, mesh.ColorMapping);
+    }
+  }
+}
+
+/// Each output point's id in the input, as a vtkIdTypeArray named `name` (replacing an input
+/// array of that name, with a warning).
+void WriteOriginalIds(vtkObject* self, vtkPolyData* input, const char* name, const UsedPoints& used,
+                      vtkPointData* outPD)
+{
+  if (input->GetPointData()->HasArray(name))
+  {
+    vtkWarningWithObjectMacro(self, << "The input already has a point array named '" << name
+                                    << "': it is replaced by this filter's.");
+    outPD->RemoveArray(name);
+  }
+  const vtkIdType numOutPoints = used.Source->GetNumberOfIds();
+  vtkNew<vtkIdTypeArray> original;
+  original->SetName(name);
+  original->SetNumberOfValues(numOutPoints);
+  for (vtkIdType i = 0; i < numOutPoints; ++i)
+  {
+    original->SetValue(i, used.Source->GetId(i));
+  }
+  outPD->AddArray(original);
+}
+
+/**
+ * The arrays of `data` that have `tuples` tuples, in `consistent` (a shallow copy that keeps
+ * the attribute roles); the names of the others, which cannot be carried, in `dropped`.
+ */
+void KeepConsistentArrays(vtkDataSetAttributes* data, vtkIdType tuples,
+                          vtkDataSetAttributes* consistent, std::string& dropped)
+{
+  consistent->ShallowCopy(data);
+  for (int a = consistent->GetNumberOfArrays() - 1; a >= 0; --a)
+  {
+    vtkAbstractArray* array = consistent->GetAbstractArray(a);
+    if (array && array->GetNumberOfTuples() != tuples)
+    {
+      dropped += std::string(dropped.empty() ? "" : ", ") + "'" +
+        (array->GetName() ? array->GetName() : "(unnamed)") + "' (" +
+        std::to_string(array->GetNumberOfTuples()) + " tuples)";
+      consistent->RemoveArray(a);
+    }
+  }
+}
+
+} // namespace
+
+vtkIdType WriteOutput(vtkObject* self, vtkPolyData* input, const InputMesh& mesh,
+                      const Decimator& decimator, const char* originalIdsName, vtkPolyData* output)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  UsedPoints used;
+  FindUsedPoints(decimator.GetMesh(), numPoints, used);
+  WritePoints(input, decimator, used, output);
+  vtkNew<vtkIdList> sourceCells;
+  vtkNew<vtkIdList> targetCells;
+  WriteTriangles(decimator.GetMesh(), mesh.Soup, used, sourceCells, targetCells, output);
+
+  // Arrays whose tuple count does not match their points or cells cannot be carried.
+  vtkNew<vtkPointData> inPD;
+  vtkNew<vtkCellData> inCD;
+  std::string droppedPointArrays, droppedCellArrays;
+  KeepConsistentArrays(input->GetPointData(), numPoints, inPD, droppedPointArrays);
+  KeepConsistentArrays(input->GetCellData(), input->GetNumberOfCells(), inCD, droppedCellArrays);
+  if (!droppedPointArrays.empty() || !droppedCellArrays.empty())
+  {
+    vtkWarningWithObjectMacro(
+      self, << "Arrays whose size does not match the mesh are left out of the output: "
+            << (droppedPointArrays.empty() ? "" : "point data ") << droppedPointArrays
+            << (droppedCellArrays.empty() ? "" : " cell data ") << droppedCellArrays << " ("
+            << numPoints << " points, " << input->GetNumberOfCells() << " cells).");
+  }
+  vtkPointData* outPD = output->GetPointData();
+  outPD->CopyAllocate(inPD, used.Source->GetNumberOfIds());
+  outPD->CopyData(inPD, used.Source, used.Target);
+  if (decimator.HasMovedVertices() && !mesh.Colors.empty())
+  {
+    WriteMovedColors(mesh, decimator, used, outPD);
+  }
+  if (originalIdsName && *originalIdsName)
+  {
+    WriteOriginalIds(self, input, originalIdsName, used, outPD);
+  }
+  vtkCellData* outCD = output->GetCellData();
+  outCD->CopyAllocate(inCD, used.Triangles);
+  outCD->CopyData(inCD, sourceCells, targetCells);
+  return used.Triangles;
+}
+
+} // namespace adapter
+} // namespace colordecimation

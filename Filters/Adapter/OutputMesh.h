@@ -1,0 +1,35 @@
+/**
+ * @file OutputMesh.h
+ * @brief The decimated mesh as VTK output: the surviving triangles on the points they use, in
+ * input order, with every point-data array of those points and the cell data of those
+ * triangles copied (docs/ALGORITHM.md, section 1).
+ */
+#ifndef colordecimation_OutputMesh_h
+#define colordecimation_OutputMesh_h
+
+#include "vtkType.h"
+
+class vtkObject;
+class vtkPolyData;
+
+namespace colordecimation
+{
+class Decimator;
+
+namespace adapter
+{
+struct InputMesh;
+
+/**
+ * Fill `output` from the decimated mesh: points (moved ones at their new position), triangles,
+ * point data (moved ones with their new colour), an array of original point ids named
+ * `originalIdsName` (none if null or empty), and cell data. Arrays whose size does not match
+ * the input are left out, with a warning on `self`. Returns the number of output triangles.
+ */
+vtkIdType WriteOutput(vtkObject* self, vtkPolyData* input, const InputMesh& mesh,
+                      const Decimator& decimator, const char* originalIdsName, vtkPolyData* output);
+
+} // namespace adapter
+} // namespace colordecimation
+
+#endif
