@@ -162,12 +162,18 @@ void HalfEdgeMesh::PairTwins(int32_t numVertices, int threads, const OutgoingRow
   this->ReportUnpaired(numHalfEdges, threads, pair, results);
   for (const PairingResult& result : found)
   {
-    report.BoundaryEdges += result.BoundaryEdges;
-    report.NonManifoldEdges += result.NonManifoldEdges;
-    for (const int32_t v : result.ToLock)
-    {
-      this->Flags[v] |= Locked;
-    }
+    this->Gather(result, report);
+  }
+}
+
+template <typename Result>
+void HalfEdgeMesh::Gather(const Result& result, MeshBuildReport& report)
+{
+  report.BoundaryEdges += result.BoundaryEdges;
+  report.NonManifoldEdges += result.NonManifoldEdges;
+  for (const int32_t v : result.ToLock)
+  {
+    this->Flags[v] |= Locked;
   }
 }
 

@@ -222,6 +222,9 @@ private:
   /// The unpaired half-edges a -> b with a >= b, looked at by `pair` (PairTwins).
   template <typename Pair, typename Result>
   void ReportUnpaired(int32_t numHalfEdges, int threads, const Pair& pair, Result* results) const;
+  /// One thread's pairing result: its counts added, its vertices locked.
+  template <typename Result>
+  void Gather(const Result& result, MeshBuildReport& report);
   /// Each vertex's outgoing half-edge; bow-ties (more than one fan) locked.
   void FindFans(int32_t numVertices, int threads, const OutgoingRows& rows,
                 MeshBuildReport& report);
