@@ -25,7 +25,6 @@
 #include "vtkPolyData.h"
 #include "vtkQuadricDecimation.h"
 #include "vtkSmartPointer.h"
-#include "vtkTriangleFilter.h"
 #include "vtkVersion.h"
 
 #ifndef COLORDECIMATION_WITH_MESHOPTIMIZER
@@ -595,27 +594,6 @@ void MeasureOnce(int method, vtkPolyData* given, const Options& options, const s
   }
 }
 
-/// The same triangles for every method: polygons and strips are triangulated once here.
-vtkSmartPointer<vtkPolyData> Triangulated(vtkPolyData* mesh)
-{
-  vtkCellArray* polys = mesh->GetPolys();
-  const bool pure = mesh->GetNumberOfStrips() == 0 && mesh->GetNumberOfVerts() == 0 &&
-    mesh->GetNumberOfLines() == 0 &&
-    (polys->GetNumberOfCells() == 0 || polys->IsHomogeneous() == 3);
-  if (pure)
-  {
-    return mesh;
-  }
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(mesh);
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
-  triangles->Update();
-  vtkSmartPointer<vtkPolyData> result = vtkSmartPointer<vtkPolyData>::New();
-  result->ShallowCopy(triangles->GetOutput());
-  return result;
-}
-
 CaseResult RunCase(const std::string& name, const std::string& description, vtkPolyData* mesh,
                    const Options& options, bool runQuadric)
 {
@@ -1053,6 +1031,7 @@ int main(int argc, char* argv[])
       }
       mesh->GetPointData()->SetActiveScalars(options.Array.c_str());
     }
+    // The same triangles for every method: polygons and strips are triangulated once here.
     mesh = Triangulated(mesh);
     if (CountTriangles(mesh) == 0)
     {

@@ -1,5 +1,6 @@
 #include "ColorDecimationFidelity.h"
 
+#include "MeshIO.h"
 #include "QuadricPeer.h"
 
 #include "vtkActor.h"
@@ -8,29 +9,19 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
-#include "vtkDataSetReader.h"
-#include "vtkGeometryFilter.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
-#include "vtkPLYReader.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
-#include "vtkPointLocator.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkQuadricDecimation.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSTLReader.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
-#include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtkUnstructuredGrid.h"
 #include "vtkWindowToImageFilter.h"
-#include "vtkXMLPolyDataReader.h"
-#include "vtkXMLUnstructuredGridReader.h"
 
 #include <algorithm>
 #include <array>
@@ -60,14 +51,12 @@ std::string Lower(std::string s)
   return s;
 }
 
-/// Where the colours are and how to bring them to 0..255 (chosen on the original).
-struct ColorMapping
+/// Where the colours are and how they map to RGB (chosen on the original).
+struct RenderColors
 {
   std::string Name; ///< empty: no colours
   bool OnCells = false;
-  bool Identity = true; ///< unsigned char: used as they are
-  double Offset = 0.0;
-  double Scale = 1.0;
+  tools::ColorMapping Mapping;
 };
 
 bool IsColorLike(vtkDataArray* array)
@@ -103,9 +92,9 @@ vtkDataArray* FindColorArray(vtkDataSetAttributes* data, const std::string& name
   return nullptr;
 }
 
-ColorMapping ChooseMapping(vtkPolyData* original, const std::string& requested)
+RenderColors ChooseColors(vtkPolyData* original, const std::string& requested)
 {
-  ColorMapping mapping;
+  RenderColors colors;
   vtkDataArray* array = FindColorArray(original->GetPointData(), requested);
   bool onCells = false;
   if (!array)
@@ -115,85 +104,37 @@ ColorMapping ChooseMapping(vtkPolyData* original, const std::string& requested)
   }
   if (!array || !array->GetName())
   {
-    return mapping;
+    return colors;
   }
-  mapping.Name = array->GetName();
-  mapping.OnCells = onCells;
-  if (array->GetDataType() == VTK_UNSIGNED_CHAR)
-  {
-    return mapping;
-  }
-  mapping.Identity = false;
-  const int nc = std::min(array->GetNumberOfComponents(), 3);
-  double lo = std::numeric_limits<double>::max();
-  double hi = std::numeric_limits<double>::lowest();
-  for (int c = 0; c < nc; ++c)
-  {
-    double range[2];
-    array->GetRange(range, c);
-    lo = std::min(lo, range[0]);
-    hi = std::max(hi, range[1]);
-  }
-  if (array->GetNumberOfTuples() == 0 || !(lo <= hi))
-  {
-    lo = hi = 0.0;
-  }
-  if (lo >= 0.0 && hi <= 1.0)
-  {
-    mapping.Scale = 255.0;
-  }
-  else if (lo >= 0.0 && hi <= 255.0)
-  {
-    mapping.Scale = 1.0;
-  }
-  else
-  {
-    mapping.Offset = lo;
-    mapping.Scale = hi > lo ? 255.0 / (hi - lo) : 1.0;
-  }
-  return mapping;
+  colors.Name = array->GetName();
+  colors.OnCells = onCells;
+  colors.Mapping = tools::ColorMapping::Of(array);
+  return colors;
 }
 
 /// Only the triangles and an unsigned char RGB copy of the colours (no normals).
-vtkSmartPointer<vtkPolyData> Renderable(vtkPolyData* mesh, const ColorMapping& mapping)
+vtkSmartPointer<vtkPolyData> Renderable(vtkPolyData* mesh, const RenderColors& colors)
 {
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->SetPoints(mesh->GetPoints());
   out->SetPolys(mesh->GetPolys());
   out->SetStrips(mesh->GetStrips());
-  if (mapping.Name.empty())
+  if (colors.Name.empty())
   {
     return out;
   }
-  vtkDataSetAttributes* data = mapping.OnCells
+  vtkDataSetAttributes* data = colors.OnCells
     ? static_cast<vtkDataSetAttributes*>(mesh->GetCellData())
     : static_cast<vtkDataSetAttributes*>(mesh->GetPointData());
-  vtkDataArray* array = data->GetArray(mapping.Name.c_str());
-  const vtkIdType expected = mapping.OnCells ? mesh->GetNumberOfCells() : mesh->GetNumberOfPoints();
+  vtkDataArray* array = data->GetArray(colors.Name.c_str());
+  const vtkIdType expected = colors.OnCells ? mesh->GetNumberOfCells() : mesh->GetNumberOfPoints();
   if (!array || array->GetNumberOfTuples() != expected)
   {
     return out; // the simplified mesh lost its colours: it renders white
   }
-  vtkNew<vtkUnsignedCharArray> rgb;
+  vtkSmartPointer<vtkUnsignedCharArray> rgb = tools::ToUnsignedChar(array, colors.Mapping, false);
   rgb->SetName("FidelityRGB");
-  rgb->SetNumberOfComponents(3);
-  rgb->SetNumberOfTuples(array->GetNumberOfTuples());
-  const int nc = array->GetNumberOfComponents();
-  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const int source = nc >= 3 ? c : 0;
-      double v = array->GetComponent(i, source);
-      if (!mapping.Identity)
-      {
-        v = std::round((v - mapping.Offset) * mapping.Scale);
-      }
-      v = std::min(255.0, std::max(0.0, v));
-      rgb->SetValue(3 * i + c, static_cast<unsigned char>(v));
-    }
-  }
-  if (mapping.OnCells)
+  if (colors.OnCells)
   {
     out->GetCellData()->SetScalars(rgb);
   }
@@ -594,15 +535,15 @@ Result CompareRenders(vtkPolyData* original, vtkPolyData* simplified, const Opti
   result.SimplifiedPoints = simplified->GetNumberOfPoints();
   result.SimplifiedTriangles = simplified->GetNumberOfPolys() + simplified->GetNumberOfStrips();
 
-  const ColorMapping mapping = ChooseMapping(original, options.ColorArray);
-  result.ColorArray = mapping.Name;
-  if (!options.ColorArray.empty() && mapping.Name.empty())
+  const RenderColors colors = ChooseColors(original, options.ColorArray);
+  result.ColorArray = colors.Name;
+  if (!options.ColorArray.empty() && colors.Name.empty())
   {
     result.Error = "no colour array named '" + options.ColorArray + "' in the original";
     return result;
   }
-  auto a = Renderable(original, mapping);
-  auto b = Renderable(simplified, mapping);
+  auto a = Renderable(original, colors);
+  auto b = Renderable(simplified, colors);
   double bounds[6];
   original->GetBounds(bounds);
 
@@ -713,9 +654,9 @@ bool WriteSnapshot(vtkPolyData* original, vtkPolyData* simplified, const std::st
   {
     return fail(why);
   }
-  const ColorMapping mapping = ChooseMapping(original, options.ColorArray);
-  vtkSmartPointer<vtkPolyData> meshes[2] = { Renderable(original, mapping),
-                                             Renderable(simplified, mapping) };
+  const RenderColors colors = ChooseColors(original, options.ColorArray);
+  vtkSmartPointer<vtkPolyData> meshes[2] = { Renderable(original, colors),
+                                             Renderable(simplified, colors) };
   double bounds[6];
   original->GetBounds(bounds);
   vtkNew<vtkCamera> camera;
@@ -828,147 +769,20 @@ vtkSmartPointer<vtkPolyData> SimplifyWithQuadric(vtkPolyData* input, double redu
   return output;
 }
 
-bool TransferNearestColors(vtkPolyData* source, vtkPolyData* target, const std::string& colorArray)
-{
-  if (!source || !target)
-  {
-    return false;
-  }
-  vtkDataArray* colors = FindColorArray(source->GetPointData(), colorArray);
-  if (!colors || source->GetNumberOfPoints() == 0)
-  {
-    return false;
-  }
-  const ColorMapping mapping = ChooseMapping(source, colors->GetName() ? colors->GetName() : "");
-  vtkNew<vtkPointLocator> locator;
-  locator->SetDataSet(source);
-  locator->BuildLocator();
-  vtkNew<vtkUnsignedCharArray> out;
-  out->SetName(colors->GetName() ? colors->GetName() : "RGB");
-  out->SetNumberOfComponents(3);
-  out->SetNumberOfTuples(target->GetNumberOfPoints());
-  const int nc = colors->GetNumberOfComponents();
-  for (vtkIdType i = 0; i < target->GetNumberOfPoints(); ++i)
-  {
-    const vtkIdType nearest = locator->FindClosestPoint(target->GetPoint(i));
-    for (int c = 0; c < 3; ++c)
-    {
-      double v = colors->GetComponent(nearest, nc >= 3 ? c : 0);
-      if (!mapping.Identity)
-      {
-        v = std::round((v - mapping.Offset) * mapping.Scale);
-      }
-      out->SetValue(3 * i + c, static_cast<unsigned char>(std::min(255.0, std::max(0.0, v))));
-    }
-  }
-  if (target->GetPointData()->GetArray(out->GetName()))
-  {
-    target->GetPointData()->RemoveArray(out->GetName());
-  }
-  target->GetPointData()->SetScalars(out);
-  return true;
-}
-
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string* error)
 {
-  auto fail = [error](const std::string& why) -> vtkSmartPointer<vtkPolyData>
+  std::string description, why;
+  vtkSmartPointer<vtkPolyData> mesh = tools::ReadMesh(path, description, why);
+  if (mesh && tools::CountTriangles(mesh) == 0)
   {
-    if (error)
-    {
-      *error = why;
-    }
-    return nullptr;
-  };
-  const size_t dot = path.find_last_of('.');
-  const std::string ext = dot == std::string::npos ? std::string() : Lower(path.substr(dot));
-  {
-    FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f)
-    {
-      return fail("cannot open " + path);
-    }
-    std::fclose(f);
+    why = "no triangles in " + path;
+    mesh = nullptr;
   }
-  vtkSmartPointer<vtkDataSet> data;
-  if (ext == ".ply")
+  if (!mesh && error)
   {
-    vtkNew<vtkPLYReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    data = reader->GetOutput();
+    *error = why;
   }
-  else if (ext == ".vtp")
-  {
-    vtkNew<vtkXMLPolyDataReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    data = reader->GetOutput();
-  }
-  else if (ext == ".vtu")
-  {
-    vtkNew<vtkXMLUnstructuredGridReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    data = reader->GetOutput();
-  }
-  else if (ext == ".vtk")
-  {
-    vtkNew<vtkDataSetReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    data = reader->GetOutput();
-  }
-  else if (ext == ".obj")
-  {
-    vtkNew<vtkOBJReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    data = reader->GetOutput();
-  }
-  else if (ext == ".stl")
-  {
-    vtkNew<vtkSTLReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    data = reader->GetOutput();
-  }
-  else
-  {
-    return fail("unknown mesh format '" + ext + "' (use .ply, .vtp, .vtu, .vtk, .obj or .stl)");
-  }
-  if (!data || data->GetNumberOfPoints() == 0)
-  {
-    return fail("no points read from " + path);
-  }
-  vtkSmartPointer<vtkPolyData> poly = vtkPolyData::SafeDownCast(data);
-  if (!poly)
-  {
-    vtkNew<vtkGeometryFilter> surface;
-    surface->SetInputData(data);
-    surface->Update();
-    poly = surface->GetOutput();
-  }
-  bool allTriangles = poly->GetNumberOfStrips() == 0 && poly->GetNumberOfVerts() == 0 &&
-    poly->GetNumberOfLines() == 0;
-  if (allTriangles)
-  {
-    vtkCellArray* polys = poly->GetPolys();
-    allTriangles = polys->IsHomogeneous() == 3;
-  }
-  if (!allTriangles)
-  {
-    vtkNew<vtkTriangleFilter> triangles;
-    triangles->SetInputData(poly);
-    triangles->PassVertsOff();
-    triangles->PassLinesOff();
-    triangles->Update();
-    poly = triangles->GetOutput();
-  }
-  if (poly->GetNumberOfPolys() == 0)
-  {
-    return fail("no triangles in " + path);
-  }
-  return poly;
+  return mesh ? tools::Triangulated(mesh) : nullptr;
 }
 
 bool CanRender(std::string* why)

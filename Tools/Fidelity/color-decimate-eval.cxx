@@ -2,14 +2,12 @@
 // original (RMS of the per-pixel RGB distance and PSNR over six axis views, unlit and lit),
 // printed as JSON; optionally a side-by-side snapshot PNG. See docs/FIDELITY.md.
 #include "ColorDecimationFidelity.h"
+#include "MeshIO.h"
 
 #include "vtkColorHalfEdgeDecimation.h"
 #include "vtkNew.h"
-#include "vtkPLYWriter.h"
-#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkTimerLog.h"
-#include "vtkXMLPolyDataWriter.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -73,33 +71,6 @@ bool ParseDouble(const char* text, double& value)
   char* end = nullptr;
   value = std::strtod(text, &end);
   return end && !*end && end != text;
-}
-
-bool EndsWith(const std::string& s, const std::string& tail)
-{
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
-bool WriteMesh(vtkPolyData* mesh, const std::string& path)
-{
-  if (EndsWith(path, ".ply") || EndsWith(path, ".PLY"))
-  {
-    vtkNew<vtkPLYWriter> writer;
-    writer->SetFileName(path.c_str());
-    writer->SetInputData(mesh);
-    writer->SetFileTypeToBinary();
-    if (mesh->GetPointData()->GetScalars() && mesh->GetPointData()->GetScalars()->GetName())
-    {
-      writer->SetArrayName(mesh->GetPointData()->GetScalars()->GetName());
-      writer->SetColorModeToDefault();
-    }
-    return writer->Write() == 1;
-  }
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetFileName(path.c_str());
-  writer->SetDataModeToBinary(); // not appended: see Tools/MeshIO.cxx
-  writer->SetInputData(mesh);
-  return writer->Write() == 1;
 }
 
 } // namespace
@@ -281,9 +252,9 @@ int main(int argc, char* argv[])
                << "\", \"target_reduction\": " << reduction
                << ", \"actual_reduction\": " << (in > 0 ? 1.0 - out / in : 0.0)
                << ", \"seconds\": " << timer->GetElapsedTime() << "},\n";
-    if (!savePath.empty() && !WriteMesh(simplified, savePath))
+    if (!savePath.empty() && !colordecimation::tools::WriteMesh(simplified, savePath, "", error))
     {
-      std::cerr << "color-decimate-eval: could not write " << savePath << "\n";
+      std::cerr << "color-decimate-eval: " << error << "\n";
       return 1;
     }
   }

@@ -3,6 +3,7 @@
 // options, vtkQuadricDecimation (attribute error metric on or off) or meshoptimizer's
 // meshopt_simplify; writes the result and, as JSON, the time, the peak memory and the
 // metric's bytes per vertex.
+#include "MeshColors.h"
 #include "MeshIO.h"
 #include "ProcessMemory.h"
 #include "QuadricPeer.h"
@@ -19,8 +20,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkQuadricDecimation.h"
-#include "vtkStaticPointLocator.h"
-#include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 
 #ifndef COLORDECIMATION_WITH_MESHOPTIMIZER
@@ -81,41 +80,6 @@ struct Figures
   std::string MetricBytesNote;
   long long InputPoints = 0, InputTriangles = 0, OutputPoints = 0, OutputTriangles = 0;
 };
-
-vtkSmartPointer<vtkPolyData> Triangulated(vtkPolyData* mesh)
-{
-  vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputData(mesh);
-  triangulate->PassVertsOff();
-  triangulate->PassLinesOff();
-  triangulate->Update();
-  return triangulate->GetOutput();
-}
-
-/// Colours of the nearest input vertex (for a simplifier that drops them).
-void TransferColors(vtkPolyData* source, vtkPolyData* target)
-{
-  vtkDataArray* colors = source->GetPointData()->GetScalars();
-  if (!colors || target->GetNumberOfPoints() == 0)
-  {
-    return;
-  }
-  vtkNew<vtkStaticPointLocator> locator;
-  locator->SetDataSet(source);
-  locator->BuildLocator();
-  vtkSmartPointer<vtkDataArray> out;
-  out.TakeReference(colors->NewInstance());
-  out->SetName(colors->GetName());
-  out->SetNumberOfComponents(colors->GetNumberOfComponents());
-  out->SetNumberOfTuples(target->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < target->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    target->GetPoint(i, p);
-    out->SetTuple(i, locator->FindClosestPoint(p), colors);
-  }
-  target->GetPointData()->SetScalars(out);
-}
 
 std::string Json(const Figures& f)
 {
@@ -337,7 +301,7 @@ int main(int argc, char* argv[])
   }
   if (method == "vtk-quadric" && !attributes)
   {
-    TransferColors(input, output);
+    TransferNearestColors(input, output);
   }
   figures.OutputPoints = output->GetNumberOfPoints();
   figures.OutputTriangles = output->GetNumberOfPolys();
