@@ -35,8 +35,9 @@ private:
 
 /**
  * The arguments as App::parse() wants them (in reverse order, without the program). A long
- * option that takes one value is joined to the next argument ("--view=-Y"), so that a value
- * may start with '-', as it always could; such an option at the end is an error.
+ * option that takes one value is joined to a next argument that starts with '-'
+ * ("--view=-Y"), which CLI11 would take for an option, so that a value may start with '-'
+ * as it always could; such an option at the end is an error.
  */
 std::vector<std::string> Arguments(const CLI::App& app, int argc, char* argv[])
 {
@@ -53,7 +54,10 @@ std::vector<std::string> Arguments(const CLI::App& app, int argc, char* argv[])
       {
         throw UsageError("option " + arg + " needs a value");
       }
-      arg += "=" + std::string(argv[++i]);
+      if (argv[i + 1][0] == '-')
+      {
+        arg += "=" + std::string(argv[++i]);
+      }
     }
     args.push_back(arg);
   }
