@@ -39,6 +39,7 @@
 #ifndef ColorDecimationFidelity_h
 #define ColorDecimationFidelity_h
 
+#include "JsonOutput.h"
 #include "MeshColors.h"
 
 #include "vtkPolyData.h"
@@ -132,7 +133,10 @@ struct Result
  */
 Result CompareRenders(vtkPolyData* original, vtkPolyData* simplified, const Options& options = {});
 
-/// The result as a JSON object (`indent` spaces per level; PSNR +inf is written as null).
+/// The result as a JSON object (PSNR +inf is written as null).
+tools::Json ResultJson(const Result& result);
+
+/// ResultJson() as text, `indent` spaces per level.
 std::string ToJson(const Result& result, int indent = 2);
 
 /// Options of WriteSnapshot().
