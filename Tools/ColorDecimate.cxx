@@ -6,6 +6,8 @@
  * Run `color-decimate --help` for the options. Exit status: 0 on success, 1 when a file
  * cannot be read or written or the filter fails, 2 on bad options.
  */
+#include "CommandLine.h"
+#include "JsonOutput.h"
 #include "MeshIO.h"
 #include "ProcessMemory.h"
 
@@ -17,17 +19,15 @@
 #include "vtkDataArray.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"
-#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <iostream>
-#include <sstream>
+#include <limits>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -42,6 +42,7 @@ struct Options
 {
   std::string Input;
   std::string Output;
+  bool Demo = false;
   double Reduction = 0.9;
   int Metric = vtkColorHalfEdgeDecimation::HalfEdgeColor;
   std::string Array;
@@ -55,377 +56,206 @@ struct Options
   int SnapshotSize = 512;
   std::string WriteInput;
   bool Quiet = false;
-  bool Help = false;
 };
 
-void PrintHelp(std::ostream& os)
+const char* MetricName(int metric)
 {
-  os
-    << "Usage: color-decimate INPUT OUTPUT [options]\n"
-       "       color-decimate INPUT --write-demo FILE [options]\n"
-       "\n"
-       "Decimates a triangle mesh with vertex colours by half-edge collapses ordered by the\n"
-       "colour-aware cost of Kim, Choi and Lee (vtkColorHalfEdgeDecimation). Surviving\n"
-       "vertices keep their position and colour exactly.\n"
-       "\n"
-       "INPUT   a .ply, .vtp, .vtu, .vtk (legacy; non-polygonal data sets are reduced to\n"
-       "        their surface), .obj or .stl file, or a mesh generated in code:\n"
-    << DemoHelp()
-    << "OUTPUT  a .ply (binary, colours as uchar red/green/blue[/alpha]), .vtp (binary, with\n"
-       "        every point array, including vtkOriginalPointIds) or .vtk (legacy binary) file.\n"
-       "\n"
-       "Options:\n"
-       "  --reduction R           fraction of the triangles to remove, 0 to 1 (default 0.9,\n"
-       "                          which keeps 10 %)\n"
-       "  --metric M              half-edge-color (default: the paper's colour-aware cost),\n"
-       "                          geometry (quadric error only, colours ignored) or\n"
-       "                          color-quadric (Garland-Heckbert's 6-D colour quadric, as a\n"
-       "                          half-edge collapse)\n"
-       "  --array NAME            point array holding the colours (default: the active\n"
-       "                          scalars, e.g. the RGB array read from a PLY file)\n"
-       "  --preserve-boundary     never remove vertices on open boundaries\n"
-       "  --max-normal-angle DEG  largest turn of a triangle normal a collapse may cause,\n"
-       "                          0 to 180 (default 90)\n"
-       "  --geometry-weight W     weight of the geometric term, >= 0 (default 1; larger keeps\n"
-       "                          shape better, smaller keeps colour better)\n"
-       "  --schedule S            greedy (default: one collapse at a time, cheapest first,\n"
-       "                          as in the paper) or batched (passes of independent\n"
-       "                          collapses, cheapest first within each: faster on large\n"
-       "                          meshes, close to greedy's result but not the same)\n"
-       "  --threads N             threads that cost vertices (default 0: all cores); the\n"
-       "                          result does not depend on it\n"
-       "  --stats FILE.json       write the figures as JSON (filter_seconds, input/output\n"
-       "                          points and triangles, reduction, metric, state and peak memory)\n"
-       "  --snapshot FILE.png     write a picture of the input (left) and the result (right),\n"
-       "                          lit shape above, unlit colour below, offscreen (needs an X\n"
-       "                          display: run under xvfb-run -a on a headless machine)\n"
-       "  --snapshot-size N       pixels of each of the picture's four panels (default 512)\n"
-       "  --write-demo FILE       also write the input mesh (e.g. the demo) to FILE (.ply, .vtp\n"
-       "                          or .vtk); with no OUTPUT, only that is done\n"
-       "                          (--write-input is the same option)\n"
-       "  --quiet                 print nothing but errors (no figures, no progress bar)\n"
-       "  -h, --help              show this help\n"
-       "\n"
-       "Example (no data file needed):\n"
-       "  color-decimate --demo demo_decimated.ply --write-demo demo_input.ply\n"
-       "\n"
-       "Exit status: 0 success, 1 unreadable/unsupported input or failed output, 2 bad options.\n";
+  return metric == vtkColorHalfEdgeDecimation::HalfEdgeColor ? "half-edge-color"
+    : metric == vtkColorHalfEdgeDecimation::Geometry         ? "geometry"
+                                                             : "color-quadric";
 }
 
-bool ParseNumber(const std::string& text, double& value)
+const char* ScheduleName(int schedule)
 {
-  if (text.empty())
-  {
-    return false;
-  }
-  char* end = nullptr;
-  value = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size() && std::isfinite(value);
+  return schedule == vtkColorHalfEdgeDecimation::Batched ? "batched" : "greedy";
 }
 
-/// Parses the command line; on error returns false with a message.
-bool ParseOptions(int argc, char* argv[], Options& options, std::string& error)
+/// INPUT, OUTPUT and --demo.
+void AddInputOptions(CLI::App& app, Options& options)
+{
+  app
+    .add_option("INPUT", options.Input,
+                "a .ply, .vtp, .vtu, .vtk (legacy; non-polygonal data sets are\n"
+                "reduced to their surface), .obj or .stl file, or a mesh generated\n"
+                "in code: --demo, demo: or demo:SHAPE[:PATTERN] (see below)")
+    ->type_name("");
+  app
+    .add_option("OUTPUT", options.Output,
+                "a .ply (binary, colours as uchar red/green/blue[/alpha]), .vtp\n"
+                "(binary, with every point array, including vtkOriginalPointIds) or\n"
+                ".vtk (legacy binary) file")
+    ->type_name("");
+  app.add_flag("--demo", options.Demo, "INPUT is the built-in demo mesh (the same as demo:)");
+}
+
+/// The filter's settings.
+void AddFilterOptions(CLI::App& app, Options& options)
+{
+  AddNumber(app, "--reduction", options.Reduction, 0, 1,
+            RuleComplaint("--reduction must be a number from 0 to 1"),
+            "fraction of the triangles to remove, 0 to 1 (default 0.9, which\n"
+            "keeps 10 %)")
+    ->type_name("R");
+  AddChoice(app, "--metric", options.Metric,
+            { { "half-edge-color", vtkColorHalfEdgeDecimation::HalfEdgeColor },
+              { "half-edge-colour", vtkColorHalfEdgeDecimation::HalfEdgeColor },
+              { "halfedgecolor", vtkColorHalfEdgeDecimation::HalfEdgeColor },
+              { "color", vtkColorHalfEdgeDecimation::HalfEdgeColor },
+              { "colour", vtkColorHalfEdgeDecimation::HalfEdgeColor },
+              { "geometry", vtkColorHalfEdgeDecimation::Geometry },
+              { "color-quadric", vtkColorHalfEdgeDecimation::ColorQuadric },
+              { "colour-quadric", vtkColorHalfEdgeDecimation::ColorQuadric },
+              { "colorquadric", vtkColorHalfEdgeDecimation::ColorQuadric } },
+            RuleComplaint("--metric must be half-edge-color, geometry or color-quadric"),
+            "half-edge-color (default: the paper's colour-aware cost),\n"
+            "geometry (quadric error only, colours ignored) or color-quadric\n"
+            "(Garland-Heckbert's 6-D colour quadric, as a half-edge collapse)")
+    ->type_name("M");
+  AddValue(
+    app, "--array",
+    [&options](const std::string& name)
+    {
+      options.Array = name;
+      return !name.empty();
+    },
+    FixedComplaint("--array needs a non-empty array name"),
+    "point array holding the colours (default: the active scalars,\n"
+    "e.g. the RGB array read from a PLY file)")
+    ->type_name("NAME");
+  app.add_flag("--preserve-boundary", options.PreserveBoundary,
+               "never remove vertices on open boundaries");
+  AddNumber(app, "--max-normal-angle", options.MaxNormalAngle, 0, 180,
+            RuleComplaint("--max-normal-angle must be a number of degrees from 0 to 180"),
+            "largest turn of a triangle normal a collapse may cause, 0 to 180\n"
+            "(default 90)")
+    ->type_name("DEG");
+  AddNumber(app, "--geometry-weight", options.GeometryWeight, 0,
+            std::numeric_limits<double>::infinity(),
+            RuleComplaint("--geometry-weight must be a number >= 0"),
+            "weight of the geometric term, >= 0 (default 1; larger keeps shape\n"
+            "better, smaller keeps colour better)")
+    ->type_name("W");
+}
+
+/// How the collapses are scheduled, on how many threads.
+void AddScheduleOptions(CLI::App& app, Options& options)
+{
+  AddChoice(app, "--schedule", options.Schedule,
+            { { "greedy", vtkColorHalfEdgeDecimation::Greedy },
+              { "batched", vtkColorHalfEdgeDecimation::Batched } },
+            RuleComplaint("--schedule must be greedy or batched"),
+            "greedy (default: one collapse at a time, cheapest first, as in\n"
+            "the paper) or batched (passes of independent collapses, cheapest\n"
+            "first within each: faster on large meshes, close to greedy's\n"
+            "result but not the same)")
+    ->type_name("S");
+  AddValue(
+    app, "--threads",
+    [&options](const std::string& text)
+    {
+      double count = 0;
+      const bool ok =
+        ParseNumber(text, count) && count >= 0 && count <= 1024 && count == std::floor(count);
+      options.Threads = ok ? static_cast<int>(count) : options.Threads;
+      return ok;
+    },
+    RuleComplaint("--threads must be a whole number from 0 (all cores) to 1024"),
+    "threads that cost vertices (default 0: as many as vtkSMPTools\n"
+    "runs, i.e. all cores unless VTK_SMP_MAX_THREADS says fewer); the\n"
+    "result does not depend on it")
+    ->type_name("N");
+}
+
+/// The files written besides OUTPUT, and what is printed.
+void AddOutputOptions(CLI::App& app, Options& options)
+{
+  app
+    .add_option("--stats", options.Stats,
+                "write the figures as JSON (filter_seconds, input/output points\n"
+                "and triangles, reduction, metric, schedule, threads, state and\n"
+                "peak memory)")
+    ->type_name("FILE.json");
+  app
+    .add_option("--snapshot", options.Snapshot,
+                "write a picture of the input (left) and the result (right), lit\n"
+                "shape above, unlit colour below, offscreen (needs an X display:\n"
+                "run under xvfb-run -a on a headless machine)")
+    ->type_name("FILE.png");
+  AddValue(
+    app, "--snapshot-size",
+    [&options](const std::string& text)
+    {
+      double pixels = 0;
+      const bool ok = ParseNumber(text, pixels) && pixels >= 16 && pixels <= 8192;
+      options.SnapshotSize = ok ? static_cast<int>(pixels) : options.SnapshotSize;
+      return ok;
+    },
+    RuleComplaint("--snapshot-size must be a number of pixels from 16 to 8192"),
+    "pixels of each of the picture's four panels (default 512)")
+    ->type_name("N");
+  app
+    .add_option("--write-demo,--write-input", options.WriteInput,
+                "also write the input mesh (e.g. the demo) to FILE (.ply, .vtp or\n"
+                ".vtk); with no OUTPUT, only that is done")
+    ->type_name("FILE");
+  app.add_flag("-q,--quiet", options.Quiet,
+               "print nothing but errors (no figures, no progress bar)");
+}
+
+/// What --help prints after the options.
+std::string Footer()
+{
+  return "Meshes generated in code (INPUT):\n" + DemoHelp() +
+    "\n"
+    "Example (no data file needed):\n"
+    "  color-decimate --demo demo_decimated.ply --write-demo demo_input.ply\n"
+    "\n"
+    "Exit status: 0 success, 1 unreadable/unsupported input or failed output, 2 bad options.";
+}
+
+/// INPUT and OUTPUT after the parse; "" when they are right, otherwise what is wrong.
+std::string CheckFiles(Options& options)
 {
   std::vector<std::string> positional;
-  for (int i = 1; i < argc; ++i)
+  for (const std::string* given : { &options.Input, &options.Output })
   {
-    std::string arg = argv[i];
-    std::string value;
-    bool hasInlineValue = false;
-    if (arg.compare(0, 2, "--") == 0)
+    if (!given->empty())
     {
-      const size_t eq = arg.find('=');
-      if (eq != std::string::npos)
-      {
-        value = arg.substr(eq + 1);
-        arg = arg.substr(0, eq);
-        hasInlineValue = true;
-      }
-    }
-    auto takeValue = [&](std::string& out) -> bool
-    {
-      if (hasInlineValue)
-      {
-        out = value;
-        return true;
-      }
-      if (i + 1 >= argc)
-      {
-        error = "option " + arg + " needs a value";
-        return false;
-      }
-      out = argv[++i];
-      return true;
-    };
-    auto noValue = [&]() -> bool
-    {
-      if (hasInlineValue)
-      {
-        error = "option " + arg + " takes no value";
-        return false;
-      }
-      return true;
-    };
-    std::string text;
-    double number = 0;
-    if (arg == "-h" || arg == "--help")
-    {
-      options.Help = true;
-    }
-    else if (arg == "--demo")
-    {
-      if (!noValue())
-      {
-        return false;
-      }
-      positional.push_back("--demo");
-    }
-    else if (arg == "--reduction")
-    {
-      if (!takeValue(text))
-      {
-        return false;
-      }
-      if (!ParseNumber(text, number) || number < 0 || number > 1)
-      {
-        error = "--reduction must be a number from 0 to 1 (got '" + text + "')";
-        return false;
-      }
-      options.Reduction = number;
-    }
-    else if (arg == "--metric")
-    {
-      if (!takeValue(text))
-      {
-        return false;
-      }
-      if (text == "half-edge-color" || text == "half-edge-colour" || text == "halfedgecolor" ||
-          text == "color" || text == "colour")
-      {
-        options.Metric = vtkColorHalfEdgeDecimation::HalfEdgeColor;
-      }
-      else if (text == "geometry")
-      {
-        options.Metric = vtkColorHalfEdgeDecimation::Geometry;
-      }
-      else if (text == "color-quadric" || text == "colour-quadric" || text == "colorquadric")
-      {
-        options.Metric = vtkColorHalfEdgeDecimation::ColorQuadric;
-      }
-      else
-      {
-        error = "--metric must be half-edge-color, geometry or color-quadric (got '" + text + "')";
-        return false;
-      }
-    }
-    else if (arg == "--array")
-    {
-      if (!takeValue(options.Array))
-      {
-        return false;
-      }
-      if (options.Array.empty())
-      {
-        error = "--array needs a non-empty array name";
-        return false;
-      }
-    }
-    else if (arg == "--preserve-boundary")
-    {
-      if (!noValue())
-      {
-        return false;
-      }
-      options.PreserveBoundary = true;
-    }
-    else if (arg == "--max-normal-angle")
-    {
-      if (!takeValue(text))
-      {
-        return false;
-      }
-      if (!ParseNumber(text, number) || number < 0 || number > 180)
-      {
-        error = "--max-normal-angle must be a number of degrees from 0 to 180 (got '" + text + "')";
-        return false;
-      }
-      options.MaxNormalAngle = number;
-    }
-    else if (arg == "--geometry-weight")
-    {
-      if (!takeValue(text))
-      {
-        return false;
-      }
-      if (!ParseNumber(text, number) || number < 0)
-      {
-        error = "--geometry-weight must be a number >= 0 (got '" + text + "')";
-        return false;
-      }
-      options.GeometryWeight = number;
-    }
-    else if (arg == "--schedule")
-    {
-      if (!takeValue(text))
-      {
-        return false;
-      }
-      if (text == "greedy")
-      {
-        options.Schedule = vtkColorHalfEdgeDecimation::Greedy;
-      }
-      else if (text == "batched")
-      {
-        options.Schedule = vtkColorHalfEdgeDecimation::Batched;
-      }
-      else
-      {
-        error = "--schedule must be greedy or batched (got '" + text + "')";
-        return false;
-      }
-    }
-    else if (arg == "--threads")
-    {
-      if (!takeValue(text))
-      {
-        return false;
-      }
-      if (!ParseNumber(text, number) || number < 0 || number > 1024 || number != std::floor(number))
-      {
-        error = "--threads must be a whole number from 0 (all cores) to 1024 (got '" + text + "')";
-        return false;
-      }
-      options.Threads = static_cast<int>(number);
-    }
-    else if (arg == "--stats")
-    {
-      if (!takeValue(options.Stats))
-      {
-        return false;
-      }
-    }
-    else if (arg == "--snapshot")
-    {
-      if (!takeValue(options.Snapshot))
-      {
-        return false;
-      }
-    }
-    else if (arg == "--snapshot-size")
-    {
-      std::string text;
-      double number = 0;
-      if (!takeValue(text))
-      {
-        return false;
-      }
-      if (!ParseNumber(text, number) || number < 16 || number > 8192)
-      {
-        error = "--snapshot-size must be a number of pixels from 16 to 8192 (got '" + text + "')";
-        return false;
-      }
-      options.SnapshotSize = static_cast<int>(number);
-    }
-    else if (arg == "--write-demo" || arg == "--write-input")
-    {
-      if (!takeValue(options.WriteInput))
-      {
-        return false;
-      }
-    }
-    else if (arg == "--quiet" || arg == "-q")
-    {
-      if (!noValue())
-      {
-        return false;
-      }
-      options.Quiet = true;
-    }
-    else if (arg.size() > 1 && arg[0] == '-')
-    {
-      error = "unknown option '" + arg + "'";
-      return false;
-    }
-    else
-    {
-      positional.push_back(arg);
+      positional.push_back(*given);
     }
   }
-  if (options.Help)
+  if (options.Demo)
   {
-    return true;
+    positional.insert(positional.begin(), "demo:");
   }
   if (positional.empty())
   {
-    error = "missing INPUT (a mesh file, or --demo)";
-    return false;
+    return "missing INPUT (a mesh file, or --demo)";
   }
   if (positional.size() > 2)
   {
-    error = "too many arguments: '" + positional[2] + "' (expected INPUT OUTPUT)";
-    return false;
+    return "too many arguments: '" + positional[2] + "' (expected INPUT OUTPUT)";
   }
   options.Input = positional[0];
-  if (positional.size() == 2)
+  options.Output = positional.size() == 2 ? positional[1] : std::string();
+  if (options.Output.empty() && options.WriteInput.empty())
   {
-    options.Output = positional[1];
-  }
-  else if (options.WriteInput.empty())
-  {
-    error = "missing OUTPUT (a .ply, .vtp or .vtk file name)";
-    return false;
+    return "missing OUTPUT (a .ply, .vtp or .vtk file name)";
   }
   for (const std::string* path : { &options.Output, &options.WriteInput })
   {
     if (!path->empty() && !IsWritableExtension(*path))
     {
       const std::string ext = Extension(*path);
-      error = "unsupported output type '" + (ext.empty() ? std::string("(no extension)") : ext) +
+      return "unsupported output type '" + (ext.empty() ? std::string("(no extension)") : ext) +
         "' for '" + *path + "' (expected .ply, .vtp or .vtk)";
-      return false;
     }
   }
   if (!options.Stats.empty() && options.Stats == options.Output)
   {
-    error = "--stats file and OUTPUT are the same file";
-    return false;
+    return "--stats file and OUTPUT are the same file";
   }
-  return true;
-}
-
-std::string JsonString(const std::string& text)
-{
-  std::string out = "\"";
-  for (const char c : text)
-  {
-    switch (c)
-    {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20)
-        {
-          char buffer[8];
-          std::snprintf(buffer, sizeof(buffer), "\\u%04x", c);
-          out += buffer;
-        }
-        else
-        {
-          out += c;
-        }
-    }
-  }
-  return out + "\"";
+  return "";
 }
 
 std::string Mib(long long bytes)
@@ -490,77 +320,82 @@ double Seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_cloc
 {
   return std::chrono::duration<double>(b - a).count();
 }
-} // namespace
 
-int main(int argc, char* argv[])
+/// Goes on (-1) or stops with an exit status.
+constexpr int Continue = -1;
+
+/// The input mesh and what reading it measured.
+struct Input
 {
-  // VTK's messages are caught and reported in one line (MessageCatcher); its logger would
-  // print them to stderr a second time, with timestamps.
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  Options options;
-  std::string error;
-  if (!ParseOptions(argc, argv, options, error))
-  {
-    std::cerr << Program << ": " << error << "\n"
-              << "Try 'color-decimate --help'." << std::endl;
-    return 2;
-  }
-  if (options.Help)
-  {
-    PrintHelp(std::cout);
-    return 0;
-  }
-  const bool verbose = !options.Quiet;
+  vtkSmartPointer<vtkPolyData> Mesh;
+  std::string Name; ///< as the figures call it (the default demo by its full specification)
+  double ReadSeconds = 0;
+  long long Points = 0;
+  long long Triangles = 0;
+};
 
-  // Read (or generate) the input.
-  auto t0 = std::chrono::steady_clock::now();
-  std::string description;
-  vtkSmartPointer<vtkPolyData> input = ReadMesh(options.Input, description, error);
-  if (!input)
+/// What the decimation and the writing measured.
+struct Figures
+{
+  double FilterSeconds = 0;
+  double WriteSeconds = 0;
+  long long FilterPeak = -1;
+  long long PeakRss = -1;
+  long long OutputPoints = 0;
+  long long OutputTriangles = 0;
+};
+
+/// Reads (or generates) the input, checks it has triangles and the colour array asked for.
+int ReadInput(const Options& options, Input& input)
+{
+  const auto start = std::chrono::steady_clock::now();
+  std::string description, error;
+  input.Mesh = ReadMesh(options.Input, description, error);
+  if (!input.Mesh)
   {
     return Fail(error);
   }
-  const double readSeconds = Seconds(t0, std::chrono::steady_clock::now());
-  const long long inputTriangles = CountTriangles(input);
-  const long long inputPoints = input->GetNumberOfPoints();
+  input.ReadSeconds = Seconds(start, std::chrono::steady_clock::now());
+  input.Triangles = CountTriangles(input.Mesh);
+  input.Points = input.Mesh->GetNumberOfPoints();
   const bool defaultDemo =
     options.Input == "--demo" || options.Input == "demo" || options.Input == "demo:";
-  const std::string inputName = defaultDemo ? std::string(DefaultDemoSpec()) : options.Input;
-  if (inputTriangles == 0)
+  input.Name = defaultDemo ? std::string(DefaultDemoSpec()) : options.Input;
+  if (input.Triangles == 0)
   {
-    return Fail("'" + options.Input + "' has no triangles (" + std::to_string(inputPoints) +
-                " points, " + std::to_string(input->GetNumberOfCells()) +
+    return Fail("'" + options.Input + "' has no triangles (" + std::to_string(input.Points) +
+                " points, " + std::to_string(input.Mesh->GetNumberOfCells()) +
                 " cells that are vertices or lines): nothing to decimate");
   }
-  vtkDataArray* colors = FindColorArray(input, options.Array);
-  if (!options.Array.empty() && !colors)
+  if (!options.Array.empty() && !FindColorArray(input.Mesh, options.Array))
   {
     return Fail("'" + options.Input + "' has no point array named '" + options.Array +
-                "' (point arrays: " + PointArrayNames(input) + ")");
+                "' (point arrays: " + PointArrayNames(input.Mesh) + ")");
   }
-  if (verbose)
+  if (!options.Quiet)
   {
-    std::cout << "input   " << inputName << ": " << description << "\n";
+    std::cout << "input   " << input.Name << ": " << description << "\n";
   }
+  return Continue;
+}
 
-  if (!options.WriteInput.empty())
+/// --write-demo: the input as it was read; ends the run when there is no OUTPUT.
+int WriteInputCopy(const Options& options, vtkPolyData* input)
+{
+  std::string error;
+  if (!WriteMesh(input, options.WriteInput, options.Array, error))
   {
-    if (!WriteMesh(input, options.WriteInput, options.Array, error))
-    {
-      return Fail(error);
-    }
-    if (verbose)
-    {
-      std::cout << "wrote   " << options.WriteInput << " (the input mesh)\n";
-    }
-    if (options.Output.empty())
-    {
-      return 0;
-    }
+    return Fail(error);
   }
+  if (!options.Quiet)
+  {
+    std::cout << "wrote   " << options.WriteInput << " (the input mesh)\n";
+  }
+  return options.Output.empty() ? 0 : Continue;
+}
 
-  // Decimate.
-  vtkNew<vtkColorHalfEdgeDecimation> filter;
+void Configure(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkPolyData* input)
+{
   filter->SetInputData(input);
   filter->SetTargetReduction(options.Reduction);
   filter->SetErrorMetric(options.Metric);
@@ -574,131 +409,181 @@ int main(int argc, char* argv[])
     filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
                                    options.Array.c_str());
   }
+}
+
+/// Runs the filter (with a progress bar on a terminal); its warnings are printed unless
+/// --quiet, its first error ends the run.
+int Decimate(vtkColorHalfEdgeDecimation* filter, const Options& options, Figures& figures)
+{
   ProgressBar bar;
   vtkNew<vtkCallbackCommand> progress;
   progress->SetCallback(&ProgressBar::Callback);
   progress->SetClientData(&bar);
-  if (verbose && isatty(fileno(stderr)))
+  if (!options.Quiet && isatty(fileno(stderr)))
   {
     filter->AddObserver(vtkCommand::ProgressEvent, progress);
   }
-  std::vector<std::string> filterWarnings, filterErrors;
-  double filterSeconds = 0;
-  long long filterPeak = -1;
+  std::vector<std::string> warnings, errors;
   {
     MessageCatcher::Scope scope;
     PeakMemoryProbe probe;
     const auto start = std::chrono::steady_clock::now();
     filter->Update();
-    filterSeconds = Seconds(start, std::chrono::steady_clock::now());
-    filterPeak = probe.PeakAboveBaseline();
-    filterWarnings = scope.Get()->Warnings;
-    filterErrors = scope.Get()->Errors;
+    figures.FilterSeconds = Seconds(start, std::chrono::steady_clock::now());
+    figures.FilterPeak = probe.PeakAboveBaseline();
+    warnings = scope.Get()->Warnings;
+    errors = scope.Get()->Errors;
   }
   bar.Finish();
-  if (verbose)
+  for (const std::string& warning : options.Quiet ? std::vector<std::string>() : warnings)
   {
-    for (const std::string& warning : filterWarnings)
-    {
-      std::cerr << Program << ": warning: " << MessageCatcher::Clean(warning) << std::endl;
-    }
+    std::cerr << Program << ": warning: " << MessageCatcher::Clean(warning) << std::endl;
   }
-  if (!filterErrors.empty())
+  if (!errors.empty())
   {
-    return Fail("decimation failed: " + MessageCatcher::Clean(filterErrors.front()));
+    return Fail("decimation failed: " + MessageCatcher::Clean(errors.front()));
   }
-  vtkPolyData* output = filter->GetOutput();
-  const long long outputTriangles = CountTriangles(output);
-  const long long outputPoints = output->GetNumberOfPoints();
+  figures.OutputTriangles = CountTriangles(filter->GetOutput());
+  figures.OutputPoints = filter->GetOutput()->GetNumberOfPoints();
+  return Continue;
+}
 
-  // Write.
-  t0 = std::chrono::steady_clock::now();
-  if (!WriteMesh(output, options.Output, options.Array, error))
+int WriteOutput(vtkColorHalfEdgeDecimation* filter, const Options& options, Figures& figures)
+{
+  const auto start = std::chrono::steady_clock::now();
+  std::string error;
+  if (!WriteMesh(filter->GetOutput(), options.Output, options.Array, error))
   {
     return Fail(error);
   }
-  const double writeSeconds = Seconds(t0, std::chrono::steady_clock::now());
-  const long long peakRss = PeakRSS();
-  const char* metric = options.Metric == vtkColorHalfEdgeDecimation::HalfEdgeColor
-    ? "half-edge-color"
-    : options.Metric == vtkColorHalfEdgeDecimation::Geometry ? "geometry"
-                                                             : "color-quadric";
+  figures.WriteSeconds = Seconds(start, std::chrono::steady_clock::now());
+  figures.PeakRss = PeakRSS();
+  return Continue;
+}
 
-  if (verbose)
-  {
-    char line[512];
-    std::snprintf(line, sizeof(line),
-                  "output  %s: %lld points, %lld triangles\n"
-                  "        reduction %.4f (target %.4f), %lld collapses, metric %s\n"
-                  "        filter %.3f s (read %.3f s, write %.3f s), decimation state %s, "
-                  "peak RSS %s\n",
-                  options.Output.c_str(), outputPoints, outputTriangles,
-                  filter->GetActualReduction(), options.Reduction,
-                  static_cast<long long>(filter->GetNumberOfCollapses()), metric, filterSeconds,
-                  readSeconds, writeSeconds, Mib(filter->GetStateMemory()).c_str(),
-                  Mib(peakRss).c_str());
-    std::cout << line << std::flush;
-  }
+void PrintFigures(vtkColorHalfEdgeDecimation* filter, const Options& options, const Input& input,
+                  const Figures& figures)
+{
+  char line[512];
+  std::snprintf(line, sizeof(line),
+                "output  %s: %lld points, %lld triangles\n"
+                "        reduction %.4f (target %.4f), %lld collapses, metric %s\n"
+                "        filter %.3f s (read %.3f s, write %.3f s), decimation state %s, "
+                "peak RSS %s\n",
+                options.Output.c_str(), figures.OutputPoints, figures.OutputTriangles,
+                filter->GetActualReduction(), options.Reduction,
+                static_cast<long long>(filter->GetNumberOfCollapses()), MetricName(options.Metric),
+                figures.FilterSeconds, input.ReadSeconds, figures.WriteSeconds,
+                Mib(filter->GetStateMemory()).c_str(), Mib(figures.PeakRss).c_str());
+  std::cout << line << std::flush;
+}
 
-  if (!options.Stats.empty())
-  {
-    std::ofstream json(options.Stats);
-    if (!json)
-    {
-      return Fail("cannot write the statistics to '" + options.Stats + "'");
-    }
-    char buffer[2048];
-    std::snprintf(buffer, sizeof(buffer),
-                  "{\n"
-                  "  \"input\": %s,\n"
-                  "  \"output\": %s,\n"
-                  "  \"metric\": \"%s\",\n"
-                  "  \"schedule\": \"%s\",\n"
-                  "  \"target_reduction\": %.6f,\n"
-                  "  \"reduction\": %.6f,\n"
-                  "  \"input_points\": %lld,\n"
-                  "  \"input_triangles\": %lld,\n"
-                  "  \"output_points\": %lld,\n"
-                  "  \"output_triangles\": %lld,\n"
-                  "  \"collapses\": %lld,\n"
-                  "  \"filter_seconds\": %.6f,\n"
-                  "  \"read_seconds\": %.6f,\n"
-                  "  \"write_seconds\": %.6f,\n"
-                  "  \"state_memory_bytes\": %lld,\n"
-                  "  \"filter_peak_memory_bytes\": %lld,\n"
-                  "  \"peak_rss_bytes\": %lld\n"
-                  "}\n",
-                  JsonString(inputName).c_str(), JsonString(options.Output).c_str(), metric,
-                  options.Schedule == vtkColorHalfEdgeDecimation::Batched ? "batched" : "greedy",
-                  options.Reduction, filter->GetActualReduction(), inputPoints, inputTriangles,
-                  outputPoints, outputTriangles,
-                  static_cast<long long>(filter->GetNumberOfCollapses()), filterSeconds,
-                  readSeconds, writeSeconds, static_cast<long long>(filter->GetStateMemory()),
-                  filterPeak, peakRss);
-    json << buffer;
-    json.close();
-    if (!json)
-    {
-      return Fail("cannot write the statistics to '" + options.Stats + "'");
-    }
-  }
+/// --stats: the figures as JSON.
+Json Statistics(vtkColorHalfEdgeDecimation* filter, const Options& options, const Input& input,
+                const Figures& figures)
+{
+  Json stats;
+  stats["input"] = input.Name;
+  stats["output"] = options.Output;
+  stats["metric"] = MetricName(options.Metric);
+  stats["schedule"] = ScheduleName(options.Schedule);
+  stats["threads"] = filter->GetNumberOfThreadsUsed();
+  stats["target_reduction"] = options.Reduction;
+  stats["reduction"] = filter->GetActualReduction();
+  stats["input_points"] = input.Points;
+  stats["input_triangles"] = input.Triangles;
+  stats["output_points"] = figures.OutputPoints;
+  stats["output_triangles"] = figures.OutputTriangles;
+  stats["collapses"] = static_cast<long long>(filter->GetNumberOfCollapses());
+  stats["filter_seconds"] = figures.FilterSeconds;
+  stats["read_seconds"] = input.ReadSeconds;
+  stats["write_seconds"] = figures.WriteSeconds;
+  stats["state_memory_bytes"] = static_cast<long long>(filter->GetStateMemory());
+  stats["filter_peak_memory_bytes"] = figures.FilterPeak;
+  stats["peak_rss_bytes"] = figures.PeakRss;
+  return stats;
+}
 
-  if (!options.Snapshot.empty())
+/// --snapshot: input and result side by side.
+int Snapshot(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkPolyData* input)
+{
+  colordecimation::fidelity::SnapshotOptions snapshot;
+  snapshot.ColorArray = options.Array;
+  snapshot.SimplifiedLabel = "color-decimate " +
+    std::to_string(static_cast<int>(std::lround(100.0 * filter->GetActualReduction()))) + " %";
+  std::string why;
+  if (!colordecimation::fidelity::WriteSnapshot(input, filter->GetOutput(), options.Snapshot,
+                                                options.SnapshotSize, snapshot, &why))
   {
-    colordecimation::fidelity::SnapshotOptions snapshot;
-    snapshot.ColorArray = options.Array;
-    snapshot.SimplifiedLabel = "color-decimate " +
-      std::to_string(static_cast<int>(std::lround(100.0 * filter->GetActualReduction()))) + " %";
-    std::string why;
-    if (!colordecimation::fidelity::WriteSnapshot(input, output, options.Snapshot,
-                                                  options.SnapshotSize, snapshot, &why))
-    {
-      return Fail("cannot write the snapshot '" + options.Snapshot + "': " + why);
-    }
-    if (verbose)
-    {
-      std::cout << "wrote   " << options.Snapshot << " (input left, result right)\n";
-    }
+    return Fail("cannot write the snapshot '" + options.Snapshot + "': " + why);
   }
-  return 0;
+  if (!options.Quiet)
+  {
+    std::cout << "wrote   " << options.Snapshot << " (input left, result right)\n";
+  }
+  return Continue;
+}
+
+/// Everything after the command line, step by step; the exit status.
+int Run(const Options& options)
+{
+  Input input;
+  int status = ReadInput(options, input);
+  if (status == Continue && !options.WriteInput.empty())
+  {
+    status = WriteInputCopy(options, input.Mesh);
+  }
+  if (status != Continue)
+  {
+    return status;
+  }
+  vtkNew<vtkColorHalfEdgeDecimation> filter;
+  Configure(filter, options, input.Mesh);
+  Figures figures;
+  status = Decimate(filter, options, figures);
+  status = status == Continue ? WriteOutput(filter, options, figures) : status;
+  if (status != Continue)
+  {
+    return status;
+  }
+  if (!options.Quiet)
+  {
+    PrintFigures(filter, options, input, figures);
+  }
+  std::string error;
+  if (!options.Stats.empty() &&
+      !WriteJsonFile(Statistics(filter, options, input, figures), options.Stats, error))
+  {
+    return Fail("cannot write the statistics to '" + options.Stats + "'");
+  }
+  status = options.Snapshot.empty() ? Continue : Snapshot(filter, options, input.Mesh);
+  return status == Continue ? 0 : status;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  // VTK's messages are caught and reported in one line (MessageCatcher); its logger would
+  // print them to stderr a second time, with timestamps.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  CLI::App app("Decimates a triangle mesh with vertex colours by half-edge collapses ordered by "
+               "the\ncolour-aware cost of Kim, Choi and Lee (vtkColorHalfEdgeDecimation). "
+               "Surviving\nvertices keep their position and colour exactly.",
+               Program);
+  SetUpCommandLine(app,
+                   "Usage: color-decimate INPUT OUTPUT [options]\n"
+                   "       color-decimate INPUT --write-demo FILE [options]");
+  Options options;
+  AddInputOptions(app, options);
+  AddFilterOptions(app, options);
+  AddScheduleOptions(app, options);
+  AddOutputOptions(app, options);
+  app.footer(Footer());
+  const int status = ParseCommandLine(app, argc, argv);
+  if (status >= 0)
+  {
+    return status;
+  }
+  const std::string error = CheckFiles(options);
+  return error.empty() ? Run(options) : ReportUsageError(app, error);
 }

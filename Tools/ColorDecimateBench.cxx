@@ -8,6 +8,7 @@
  * whole report (docs/BENCHMARK.md) so that the figures can be regenerated in one command.
  */
 #include "ColorDecimationMeshes.h"
+#include "CommandLine.h"
 #include "MeshIO.h"
 #include "ProcessMemory.h"
 #include "QuadricPeer.h"
@@ -25,7 +26,6 @@
 #include "vtkPolyData.h"
 #include "vtkQuadricDecimation.h"
 #include "vtkSmartPointer.h"
-#include "vtkTriangleFilter.h"
 #include "vtkVersion.h"
 
 #ifndef COLORDECIMATION_WITH_MESHOPTIMIZER
@@ -161,216 +161,105 @@ struct CaseResult
   RunResult Runs[NumberOfMethods];
 };
 
-void PrintHelp(std::ostream& os)
+/// What --help says before the options.
+std::string Description()
 {
-  os << "Usage: color-decimate-bench [MESH ...] [options]\n"
-        "\n"
-        "Times vtkColorHalfEdgeDecimation (HalfEdgeColor and Geometry metrics with the\n"
-        "Greedy schedule, HalfEdgeColor with the Batched schedule on all cores) against\n"
-        "vtkQuadricDecimation with AttributeErrorMetric on (the colour array as scalars) and\n"
-        "off"
+  return "Times vtkColorHalfEdgeDecimation (HalfEdgeColor and Geometry metrics with the\n"
+         "Greedy schedule, HalfEdgeColor with the Batched schedule on all cores) against\n"
+         "vtkQuadricDecimation with AttributeErrorMetric on (the colour array as scalars) and\n"
+         "off"
 #if COLORDECIMATION_WITH_MESHOPTIMIZER
-        ", and meshoptimizer's meshopt_simplify (geometry only, for reference)"
+         ", and meshoptimizer's meshopt_simplify (geometry only, for reference)"
 #endif
-        ",\n"
-        "in one process on the same input. For each run it prints the filter's own time\n"
-        "(wall clock and CPU), the output triangles, vtkQuadricDecimation's time divided by\n"
-        "the run's time, and the peak resident memory of the run above the memory before it\n"
-        "(VmHWM after resetting it through /proc/self/clear_refs).\n"
-        "\n"
-        "MESH    mesh files (.ply, .vtp, .vtu, .vtk, .obj, .stl) or demo: specifications (see\n"
-        "        color-decimate --help). Without MESH: ../shared/data/redkitchen_tsdf_7mm.ply\n"
-        "        beside the source tree or the working directory (when present) and the\n"
-        "        977,200-triangle coloured UV sphere (UVSphere(700), SharpRegions), then the\n"
-        "        scale sweep.\n"
-        "\n"
-        "Options:\n"
-        "  --reduction R        fraction of triangles to remove (default 0.9)\n"
-        "  --sizes LIST         triangle counts of the scale sweep of generated UV spheres,\n"
-        "                       e.g. 100k,250k,1M,4M (the default); the sweep runs by default\n"
-        "                       only when no MESH is given\n"
-        "  --no-sweep           no scale sweep\n"
-        "  --no-default-meshes  without MESH, skip the real mesh and the 977k sphere\n"
-        "  --repeat N           runs per method and mesh, in rounds (each method once per\n"
-        "                       round); the median time is reported (default 1)\n"
-        "  --quadric-max N      in the sweep, run vtkQuadricDecimation only up to N input\n"
-        "                       triangles (default 1M; 0 = no limit). Given meshes always run it.\n"
-        "  --no-quadric         skip vtkQuadricDecimation everywhere\n"
-        "  --array NAME         colour point array (default: the active scalars)\n"
-        "  --markdown FILE      also write the report as Markdown (e.g. docs/BENCHMARK.md)\n"
-        "  -h, --help           show this help\n";
+         ",\n"
+         "in one process on the same input. For each run it prints the filter's own time\n"
+         "(wall clock and CPU), the output triangles, vtkQuadricDecimation's time divided by\n"
+         "the run's time, and the peak resident memory of the run above the memory before it\n"
+         "(VmHWM after resetting it through /proc/self/clear_refs).";
 }
 
-bool ParseCount(const std::string& text, long long& value)
+/// --sizes LIST: comma-separated triangle counts of at least 8.
+void ParseSizes(const std::string& list, Options& options)
 {
-  std::string t = text;
-  double scale = 1;
-  if (!t.empty() && (t.back() == 'k' || t.back() == 'K'))
+  options.Sizes.clear();
+  options.SizesGiven = true;
+  std::stringstream items(list);
+  std::string item;
+  while (std::getline(items, item, ','))
   {
-    scale = 1e3;
-    t.pop_back();
+    long long n = 0;
+    if (!ParseCount(item, n) || n < 8)
+    {
+      throw UsageError("--sizes wants triangle counts such as 100k,1M (got '" + item + "')");
+    }
+    options.Sizes.push_back(n);
   }
-  else if (!t.empty() && (t.back() == 'm' || t.back() == 'M'))
+  if (options.Sizes.empty())
   {
-    scale = 1e6;
-    t.pop_back();
+    throw UsageError("--sizes needs at least one size (or use --no-sweep)");
   }
-  if (t.empty())
-  {
-    return false;
-  }
-  char* end = nullptr;
-  const double v = std::strtod(t.c_str(), &end);
-  if (end != t.c_str() + t.size() || !(v >= 0) || v * scale > 1e10)
-  {
-    return false;
-  }
-  value = static_cast<long long>(std::llround(v * scale));
-  return true;
 }
 
-bool ParseOptions(int argc, char* argv[], Options& options, std::string& error, bool& help)
+/// MESH, --demo, and what is measured on them.
+void AddMeshOptions(CLI::App& app, Options& options)
 {
-  for (int i = 0; i < argc; ++i)
-  {
-    options.CommandLine += (i ? " " : "") + std::string(argv[i]);
-  }
-  for (int i = 1; i < argc; ++i)
-  {
-    std::string arg = argv[i];
-    std::string value;
-    bool inlineValue = false;
-    if (arg.compare(0, 2, "--") == 0 && arg.find('=') != std::string::npos)
+  app
+    .add_option("MESH", options.Meshes,
+                "mesh files (.ply, .vtp, .vtu, .vtk, .obj, .stl) or demo: specifications\n"
+                "(see color-decimate --help). Without MESH: ../shared/data/\n"
+                "redkitchen_tsdf_7mm.ply beside the source tree or the working directory\n"
+                "(when present) and the 977,200-triangle coloured UV sphere\n"
+                "(UVSphere(700), SharpRegions), then the scale sweep")
+    ->type_name("");
+  app.add_flag_callback(
+    "--demo", [&options] { options.Meshes.push_back("--demo"); },
+    "the built-in demo mesh (demo:) as one more MESH");
+  AddNumber(app, "--reduction", options.Reduction, 0, 1,
+            RuleComplaint("--reduction must be a number from 0 to 1"),
+            "fraction of triangles to remove (default 0.9)")
+    ->type_name("R");
+  app.add_option("--array", options.Array, "colour point array (default: the active scalars)")
+    ->type_name("NAME");
+  app.add_flag("--no-default-meshes", options.NoDefaultMeshes,
+               "without MESH, skip the real mesh and the 977k sphere");
+}
+
+/// The sweep, the repeats, the peers and the report.
+void AddRunOptions(CLI::App& app, Options& options)
+{
+  app
+    .add_option_function<std::string>(
+      "--sizes", [&options](const std::string& list) { ParseSizes(list, options); },
+      "triangle counts of the scale sweep of generated UV spheres, e.g.\n"
+      "100k,250k,1M,4M (the default); the sweep runs by default only when no\n"
+      "MESH is given")
+    ->type_name("LIST");
+  app.add_flag("--no-sweep", options.NoSweep, "no scale sweep");
+  AddValue(
+    app, "--repeat",
+    [&options](const std::string& text)
     {
-      value = arg.substr(arg.find('=') + 1);
-      arg = arg.substr(0, arg.find('='));
-      inlineValue = true;
-    }
-    auto take = [&]() -> bool
-    {
-      if (inlineValue)
-      {
-        return true;
-      }
-      if (i + 1 >= argc)
-      {
-        error = "option " + arg + " needs a value";
-        return false;
-      }
-      value = argv[++i];
-      return true;
-    };
-    if (arg == "-h" || arg == "--help")
-    {
-      help = true;
-      return true;
-    }
-    else if (arg == "--reduction")
-    {
-      if (!take())
-      {
-        return false;
-      }
-      char* end = nullptr;
-      options.Reduction = std::strtod(value.c_str(), &end);
-      if (value.empty() || end != value.c_str() + value.size() || !(options.Reduction >= 0) ||
-          options.Reduction > 1)
-      {
-        error = "--reduction must be a number from 0 to 1 (got '" + value + "')";
-        return false;
-      }
-    }
-    else if (arg == "--sizes")
-    {
-      if (!take())
-      {
-        return false;
-      }
-      options.Sizes.clear();
-      options.SizesGiven = true;
-      std::stringstream list(value);
-      std::string item;
-      while (std::getline(list, item, ','))
-      {
-        long long n = 0;
-        if (!ParseCount(item, n) || n < 8)
-        {
-          error = "--sizes wants triangle counts such as 100k,1M (got '" + item + "')";
-          return false;
-        }
-        options.Sizes.push_back(n);
-      }
-      if (options.Sizes.empty())
-      {
-        error = "--sizes needs at least one size (or use --no-sweep)";
-        return false;
-      }
-    }
-    else if (arg == "--no-sweep")
-    {
-      options.NoSweep = true;
-    }
-    else if (arg == "--no-default-meshes")
-    {
-      options.NoDefaultMeshes = true;
-    }
-    else if (arg == "--repeat")
-    {
-      if (!take())
-      {
-        return false;
-      }
       long long n = 0;
-      if (!ParseCount(value, n) || n < 1 || n > 1000)
-      {
-        error = "--repeat must be a whole number from 1 to 1000 (got '" + value + "')";
-        return false;
-      }
-      options.Repeat = static_cast<int>(n);
-    }
-    else if (arg == "--quadric-max")
-    {
-      if (!take())
-      {
-        return false;
-      }
-      if (!ParseCount(value, options.QuadricMax))
-      {
-        error = "--quadric-max must be a triangle count such as 1M (got '" + value + "')";
-        return false;
-      }
-    }
-    else if (arg == "--no-quadric")
-    {
-      options.NoQuadric = true;
-    }
-    else if (arg == "--markdown")
-    {
-      if (!take())
-      {
-        return false;
-      }
-      options.Markdown = value;
-    }
-    else if (arg == "--array")
-    {
-      if (!take())
-      {
-        return false;
-      }
-      options.Array = value;
-    }
-    else if (arg.size() > 1 && arg[0] == '-' && arg != "--demo")
-    {
-      error = "unknown option '" + arg + "'";
-      return false;
-    }
-    else
-    {
-      options.Meshes.push_back(arg);
-    }
-  }
-  return true;
+      const bool ok = ParseCount(text, n) && n >= 1 && n <= 1000;
+      options.Repeat = ok ? static_cast<int>(n) : options.Repeat;
+      return ok;
+    },
+    RuleComplaint("--repeat must be a whole number from 1 to 1000"),
+    "runs per method and mesh, in rounds (each method once per round); the\n"
+    "median time is reported (default 1)")
+    ->type_name("N");
+  AddValue(
+    app, "--quadric-max",
+    [&options](const std::string& text) { return ParseCount(text, options.QuadricMax); },
+    RuleComplaint("--quadric-max must be a triangle count such as 1M"),
+    "in the sweep, run vtkQuadricDecimation only up to N input triangles\n"
+    "(default 1M; 0 = no limit). Given meshes always run it.")
+    ->type_name("N");
+  app.add_flag("--no-quadric", options.NoQuadric, "skip vtkQuadricDecimation everywhere");
+  app
+    .add_option("--markdown", options.Markdown,
+                "also write the report as Markdown (e.g. docs/BENCHMARK.md)")
+    ->type_name("FILE");
 }
 
 bool FileExists(const std::string& path)
@@ -593,27 +482,6 @@ void MeasureOnce(int method, vtkPolyData* given, const Options& options, const s
     result.CpuSeconds = Median(m.CpuTimes);
     return;
   }
-}
-
-/// The same triangles for every method: polygons and strips are triangulated once here.
-vtkSmartPointer<vtkPolyData> Triangulated(vtkPolyData* mesh)
-{
-  vtkCellArray* polys = mesh->GetPolys();
-  const bool pure = mesh->GetNumberOfStrips() == 0 && mesh->GetNumberOfVerts() == 0 &&
-    mesh->GetNumberOfLines() == 0 &&
-    (polys->GetNumberOfCells() == 0 || polys->IsHomogeneous() == 3);
-  if (pure)
-  {
-    return mesh;
-  }
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(mesh);
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
-  triangles->Update();
-  vtkSmartPointer<vtkPolyData> result = vtkSmartPointer<vtkPolyData>::New();
-  result->ShallowCopy(triangles->GetOutput());
-  return result;
 }
 
 CaseResult RunCase(const std::string& name, const std::string& description, vtkPolyData* mesh,
@@ -951,113 +819,96 @@ std::string Now()
   std::strftime(buffer, sizeof(buffer), "%Y-%m-%d %H:%M %Z", std::localtime(&t));
   return buffer;
 }
-} // namespace
 
-int main(int argc, char* argv[])
+/// A mesh to measure.
+struct Input
 {
-  // VTK's messages are caught and reported in one line (MessageCatcher); its logger would
-  // print them to stderr a second time, with timestamps.
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  Options options;
-  std::string error;
-  bool help = false;
-  if (!ParseOptions(argc, argv, options, error, help))
-  {
-    std::cerr << Program << ": " << error << "\nTry 'color-decimate-bench --help'." << std::endl;
-    return 2;
-  }
-  if (help)
-  {
-    PrintHelp(std::cout);
-    return 0;
-  }
-  if (!options.Markdown.empty())
-  {
-    std::ofstream probe(options.Markdown, std::ios::app);
-    if (!probe)
-    {
-      std::cerr << Program << ": cannot write '" << options.Markdown << "'" << std::endl;
-      return 1;
-    }
-  }
-  const auto start = std::chrono::steady_clock::now();
-  const std::string date = Now();
-  const std::string loadBefore = LoadAverage();
+  std::string Name;   // shown in the table title
+  std::string Source; // path or demo spec, or "" for the default sphere
+};
 
-  // The meshes: given ones, or the defaults.
-  struct Input
-  {
-    std::string Name;   // shown in the table title
-    std::string Source; // path or demo spec, or "" for the default sphere
-  };
+/// The given meshes, or the defaults (the real mesh when it is there, the 977k sphere).
+std::vector<Input> Inputs(const Options& options)
+{
   std::vector<Input> inputs;
-  if (!options.Meshes.empty())
+  for (const std::string& m : options.Meshes)
   {
-    for (const std::string& m : options.Meshes)
+    inputs.push_back({ m, m });
+  }
+  if (!options.Meshes.empty() || options.NoDefaultMeshes)
+  {
+    return inputs;
+  }
+  const std::string candidates[] = { std::string(COLORDECIMATION_SOURCE_DIR) + "/../" +
+                                       DefaultRealMesh,
+                                     std::string("../") + DefaultRealMesh };
+  for (const std::string& path : candidates)
+  {
+    if (FileExists(path))
     {
-      inputs.push_back({ m, m });
+      inputs.push_back({ "redkitchen_tsdf_7mm.ply", path });
+      break;
     }
   }
-  else if (!options.NoDefaultMeshes)
+  if (inputs.empty())
   {
-    const std::string candidates[] = { std::string(COLORDECIMATION_SOURCE_DIR) + "/../" +
-                                         DefaultRealMesh,
-                                       std::string("../") + DefaultRealMesh };
-    for (const std::string& path : candidates)
-    {
-      if (FileExists(path))
-      {
-        inputs.push_back({ "redkitchen_tsdf_7mm.ply", path });
-        break;
-      }
-    }
-    if (inputs.empty())
-    {
-      std::fprintf(stderr, "[bench] ../%s not found: skipped\n", DefaultRealMesh);
-    }
-    inputs.push_back({ "Coloured UV sphere", "" });
+    std::fprintf(stderr, "[bench] ../%s not found: skipped\n", DefaultRealMesh);
   }
-  const bool sweepOn = !options.NoSweep && (options.Meshes.empty() || options.SizesGiven);
+  inputs.push_back({ "Coloured UV sphere", "" });
+  return inputs;
+}
 
-  std::vector<CaseResult> cases;
-  for (const Input& input : inputs)
+/// The mesh of `input`, triangulated, with the colour array made the active scalars; null
+/// (and the message printed) when it cannot be used.
+vtkSmartPointer<vtkPolyData> LoadInput(const Input& input, const Options& options,
+                                       std::string& description)
+{
+  if (input.Source.empty())
+  {
+    description = "UVSphere(700), SharpRegions colours";
+    return meshes::UVSphere(DefaultSphereResolution, meshes::Pattern::SharpRegions);
+  }
+  std::string error;
+  vtkSmartPointer<vtkPolyData> mesh = ReadMesh(input.Source, description, error);
+  if (!mesh)
+  {
+    std::cerr << Program << ": " << error << std::endl;
+    return nullptr;
+  }
+  // "icosphere level 4, SharpRegions colours (2,562 points, ...)": the counts are in the
+  // table's title line already.
+  description = IsDemoSpec(input.Source) ? description.substr(0, description.rfind(" ("))
+                                         : "`" + input.Source + "`";
+  if (!options.Array.empty() && !mesh->GetPointData()->GetArray(options.Array.c_str()))
+  {
+    std::cerr << Program << ": '" << input.Source << "' has no point array named '" << options.Array
+              << "' (point arrays: " << PointArrayNames(mesh) << ")" << std::endl;
+    return nullptr;
+  }
+  if (!options.Array.empty())
+  {
+    mesh->GetPointData()->SetActiveScalars(options.Array.c_str());
+  }
+  // The same triangles for every method: polygons and strips are triangulated once here.
+  mesh = Triangulated(mesh);
+  if (CountTriangles(mesh) == 0)
+  {
+    std::cerr << Program << ": '" << input.Source << "' has no triangles" << std::endl;
+    return nullptr;
+  }
+  return mesh;
+}
+
+/// Every method on every input, each table printed as it is done; false on a bad input.
+bool RunCases(const Options& options, std::vector<CaseResult>& cases)
+{
+  for (const Input& input : Inputs(options))
   {
     std::string description;
-    vtkSmartPointer<vtkPolyData> mesh;
-    if (input.Source.empty())
+    vtkSmartPointer<vtkPolyData> mesh = LoadInput(input, options, description);
+    if (!mesh)
     {
-      mesh = meshes::UVSphere(DefaultSphereResolution, meshes::Pattern::SharpRegions);
-      description = "UVSphere(700), SharpRegions colours";
-    }
-    else
-    {
-      mesh = ReadMesh(input.Source, description, error);
-      if (!mesh)
-      {
-        std::cerr << Program << ": " << error << std::endl;
-        return 1;
-      }
-      // "icosphere level 4, SharpRegions colours (2,562 points, ...)": the counts are in the
-      // table's title line already.
-      description = IsDemoSpec(input.Source) ? description.substr(0, description.rfind(" ("))
-                                             : "`" + input.Source + "`";
-    }
-    if (!options.Array.empty())
-    {
-      if (!mesh->GetPointData()->GetArray(options.Array.c_str()))
-      {
-        std::cerr << Program << ": '" << input.Source << "' has no point array named '"
-                  << options.Array << "' (point arrays: " << PointArrayNames(mesh) << ")"
-                  << std::endl;
-        return 1;
-      }
-      mesh->GetPointData()->SetActiveScalars(options.Array.c_str());
-    }
-    mesh = Triangulated(mesh);
-    if (CountTriangles(mesh) == 0)
-    {
-      std::cerr << Program << ": '" << input.Source << "' has no triangles" << std::endl;
-      return 1;
+      return false;
     }
     if (!mesh->GetPointData()->GetScalars())
     {
@@ -1069,36 +920,85 @@ int main(int argc, char* argv[])
     cases.push_back(RunCase(input.Name, description, mesh, options, !options.NoQuadric));
     std::cout << "\n" << CaseTable(cases.back(), options.Reduction) << std::endl;
   }
+  return true;
+}
 
+/// The scale sweep of generated spheres (when it is on).
+std::vector<CaseResult> RunSweep(const Options& options)
+{
   std::vector<CaseResult> sweep;
-  if (sweepOn)
+  if (options.NoSweep || (!options.Meshes.empty() && !options.SizesGiven))
   {
-    for (long long size : options.Sizes)
-    {
-      vtkSmartPointer<vtkPolyData> mesh =
-        meshes::UVSphereWithTriangles(size, meshes::Pattern::SharpRegions);
-      const bool quadric = !options.NoQuadric &&
-        (options.QuadricMax <= 0 || CountTriangles(mesh) <= options.QuadricMax);
-      sweep.push_back(RunCase("sphere " + SizeLabel(size), "UV sphere", mesh, options, quadric));
-    }
-    std::cout << "\n## Scale sweep (coloured UV spheres, SharpRegions)\n\n"
-              << SweepTable(sweep) << std::endl;
+    return sweep;
   }
+  for (long long size : options.Sizes)
+  {
+    vtkSmartPointer<vtkPolyData> mesh =
+      meshes::UVSphereWithTriangles(size, meshes::Pattern::SharpRegions);
+    const bool quadric =
+      !options.NoQuadric && (options.QuadricMax <= 0 || CountTriangles(mesh) <= options.QuadricMax);
+    sweep.push_back(RunCase("sphere " + SizeLabel(size), "UV sphere", mesh, options, quadric));
+  }
+  std::cout << "\n## Scale sweep (coloured UV spheres, SharpRegions)\n\n"
+            << SweepTable(sweep) << std::endl;
+  return sweep;
+}
 
+/// The whole benchmark, then --markdown; the exit status.
+int RunBenchmark(const Options& options)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const std::string date = Now();
+  const std::string loadBefore = LoadAverage();
+  std::vector<CaseResult> cases;
+  if (!RunCases(options, cases))
+  {
+    return 1;
+  }
+  const std::vector<CaseResult> sweep = RunSweep(options);
   const double total =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::fprintf(stderr, "[bench] done in %.0f s\n", total);
-  if (!options.Markdown.empty())
+  if (options.Markdown.empty())
   {
-    std::ofstream out(options.Markdown);
-    out << Report(options, cases, sweep, date, total, loadBefore, LoadAverage());
-    out.close();
-    if (!out)
-    {
-      std::cerr << Program << ": cannot write '" << options.Markdown << "'" << std::endl;
-      return 1;
-    }
-    std::fprintf(stderr, "[bench] wrote %s\n", options.Markdown.c_str());
+    return 0;
   }
+  std::ofstream out(options.Markdown);
+  out << Report(options, cases, sweep, date, total, loadBefore, LoadAverage());
+  out.close();
+  if (!out)
+  {
+    std::cerr << Program << ": cannot write '" << options.Markdown << "'" << std::endl;
+    return 1;
+  }
+  std::fprintf(stderr, "[bench] wrote %s\n", options.Markdown.c_str());
   return 0;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  // VTK's messages are caught and reported in one line (MessageCatcher); its logger would
+  // print them to stderr a second time, with timestamps.
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  CLI::App app(Description(), Program);
+  SetUpCommandLine(app, "Usage: color-decimate-bench [MESH ...] [options]");
+  Options options;
+  AddMeshOptions(app, options);
+  AddRunOptions(app, options);
+  for (int i = 0; i < argc; ++i)
+  {
+    options.CommandLine += (i ? " " : "") + std::string(argv[i]);
+  }
+  const int status = ParseCommandLine(app, argc, argv);
+  if (status >= 0)
+  {
+    return status;
+  }
+  if (!options.Markdown.empty() && !std::ofstream(options.Markdown, std::ios::app))
+  {
+    std::cerr << Program << ": cannot write '" << options.Markdown << "'" << std::endl;
+    return 1;
+  }
+  return RunBenchmark(options);
 }

@@ -1,6 +1,7 @@
 #include "MeshIO.h"
 
 #include "ColorDecimationMeshes.h"
+#include "MeshColors.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -15,7 +16,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyDataWriter.h"
 #include "vtkSTLReader.h"
-#include "vtkUnsignedCharArray.h"
+#include "vtkTriangleFilter.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
 #include "vtkXMLUnstructuredGridReader.h"
@@ -120,58 +121,6 @@ std::string Describe(vtkPolyData* mesh)
 {
   return WithThousands(mesh->GetNumberOfPoints()) + " points, " +
     WithThousands(CountTriangles(mesh)) + " triangles";
-}
-
-/// A uchar copy of a colour array (3 or 4 components) for the PLY writer.
-vtkSmartPointer<vtkUnsignedCharArray> ToUnsignedChar(vtkDataArray* colors)
-{
-  const int in = colors->GetNumberOfComponents();
-  const int out = (in == 4) ? 4 : 3;
-  double lo = 0, hi = 1;
-  bool unit = true;
-  for (int c = 0; c < std::min(in, 3); ++c)
-  {
-    double range[2];
-    colors->GetRange(range, c);
-    unit = unit && range[0] >= 0 && range[1] <= 1;
-    lo = (c == 0) ? range[0] : std::min(lo, range[0]);
-    hi = (c == 0) ? range[1] : std::max(hi, range[1]);
-  }
-  if (unit)
-  {
-    lo = 0;
-    hi = 1;
-  }
-  const bool isChar = colors->GetDataType() == VTK_UNSIGNED_CHAR;
-  auto result = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  result->SetName(out == 4 ? "RGBA" : "RGB");
-  result->SetNumberOfComponents(out);
-  result->SetNumberOfTuples(colors->GetNumberOfTuples());
-  auto toByte = [&](double v)
-  {
-    if (isChar)
-    {
-      return static_cast<unsigned char>(v);
-    }
-    const double t = (hi > lo) ? (v - lo) / (hi - lo) : 0.0;
-    return static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, t))));
-  };
-  for (vtkIdType i = 0; i < colors->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      result->SetTypedComponent(i, c, toByte(colors->GetComponent(i, in >= 3 ? c : 0)));
-    }
-    if (out == 4)
-    {
-      const double a = colors->GetComponent(i, 3);
-      result->SetTypedComponent(
-        i, 3,
-        isChar ? static_cast<unsigned char>(a)
-               : static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, a)))));
-    }
-  }
-  return result;
 }
 
 /// The polydata of a reader's output, or the surface of another data set.
@@ -496,7 +445,7 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& co
       if (colors->GetDataType() != VTK_UNSIGNED_CHAR || (comps != 3 && comps != 4) ||
           !colors->GetName() || !*colors->GetName())
       {
-        auto converted = ToUnsignedChar(colors);
+        auto converted = ToUnsignedChar(colors, ColorMapping::Of(colors), true);
         out = vtkSmartPointer<vtkPolyData>::New();
         out->ShallowCopy(mesh);
         out->GetPointData()->AddArray(converted);
@@ -571,6 +520,26 @@ long long CountTriangles(vtkPolyData* mesh)
     }
   }
   return count;
+}
+
+vtkSmartPointer<vtkPolyData> Triangulated(vtkPolyData* mesh)
+{
+  vtkCellArray* polys = mesh->GetPolys();
+  const bool pure = mesh->GetNumberOfStrips() == 0 && mesh->GetNumberOfVerts() == 0 &&
+    mesh->GetNumberOfLines() == 0 &&
+    (polys->GetNumberOfCells() == 0 || polys->IsHomogeneous() == 3);
+  if (pure)
+  {
+    return mesh;
+  }
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(mesh);
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  triangles->Update();
+  vtkSmartPointer<vtkPolyData> result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(triangles->GetOutput());
+  return result;
 }
 
 std::string PointArrayNames(vtkPolyData* mesh)

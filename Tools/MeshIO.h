@@ -64,14 +64,21 @@ bool IsWritableExtension(const std::string& path);
 
 /**
  * Writes `mesh` to .ply, .vtp or .vtk. For .ply, `colorArrayName` (a point array; may be
- * empty: the active scalars) is written as uchar colours; non-uchar colour arrays are
- * converted (values in [0,1] times 255, otherwise scaled by the array's range).
+ * empty: the active scalars) is written as uchar colours; other colour arrays are converted
+ * by the tools' colour mapping (MeshColors.h), alpha kept.
  */
 bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& colorArrayName,
                std::string& error);
 
 /// Number of triangles of the mesh's polygons and strips, counted as after triangulation.
 long long CountTriangles(vtkPolyData* mesh);
+
+/**
+ * The triangles of `mesh`: `mesh` itself when its cells are triangles only, otherwise a copy
+ * with polygons and strips triangulated and vertex and line cells left out (every point-data
+ * array kept).
+ */
+vtkSmartPointer<vtkPolyData> Triangulated(vtkPolyData* mesh);
 
 /// Names of the point-data arrays, comma separated (for messages).
 std::string PointArrayNames(vtkPolyData* mesh);

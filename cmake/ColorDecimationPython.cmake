@@ -48,6 +48,9 @@ set(COLORDECIMATION_PYTHON_DESTINATION "${_colordecimation_python_default_destin
   CACHE STRING "Where the colordecimation Python package is installed (relative to the prefix)")
 mark_as_advanced(COLORDECIMATION_PYTHON_DESTINATION)
 
+# With LIBRARY_DESTINATION, vtk_module_wrap_python gives the extension an install RPATH
+# relative to its own folder ($ORIGIN/<package folder to libdir>): the installed package loads
+# the installed library from any prefix, with no LD_LIBRARY_PATH (Testing/Install checks it).
 vtk_module_wrap_python(
   MODULES             ${colordecimation_modules}
   TARGET              ColorDecimation::ColorDecimationPython

@@ -5,7 +5,7 @@
 # which libvtk9-dev needs); installing one removes the other.
 
 COMMON_PACKAGES="cmake g++ make pkg-config git xvfb xauth libmeshoptimizer-dev python3
-  python3-numpy valgrind"
+  python3-numpy valgrind libcli11-dev nlohmann-json3-dev"
 VTK_PACKAGES="libvtk9-dev python3-vtk9"
 # find_package(ParaView) loads ParaView's VTK, whose package looks for all of VTK's third-party
 # libraries: their -dev packages are not dependencies of paraview-dev, hence the long list.

@@ -1,5 +1,8 @@
-# Installs the build tree into a fresh prefix, then configures, builds and runs the
-# consumer project against it (and the Python package from the prefix, when wrapped).
+# Installs the build tree into a fresh prefix, runs the installed programs from there (the
+# CLI decimates a small demo mesh), then configures, builds and runs the consumer project
+# against the prefix (and the Python package from the prefix, when wrapped). Nothing runs
+# with LD_LIBRARY_PATH: the installed programs and the Python extension find the installed
+# library through their RPATH, relative to the prefix.
 #   cmake -DBUILD_DIR=<build> -DWORK_DIR=<scratch> -DCONSUMER_DIR=<consumer source>
 #         -DPYTHON_SCRIPT=<TestColorDecimationPython.py> -P TestInstall.cmake
 cmake_minimum_required(VERSION 3.16)
@@ -31,6 +34,30 @@ set(installed_config "${prefix}/${COLORDECIMATION_CMAKE_DESTINATION}/ColorDecima
 if (NOT EXISTS "${installed_config}")
   message(FATAL_ERROR "The install has no ${installed_config}")
 endif ()
+
+# The installed programs, from the prefix alone.
+unset(ENV{LD_LIBRARY_PATH})
+foreach (program IN ITEMS color-decimate color-decimate-bench color-decimate-eval
+    color-decimate-metro color-decimate-run)
+  if (NOT EXISTS "${prefix}/bin/${program}")
+    message(FATAL_ERROR "The install has no ${prefix}/bin/${program}")
+  endif ()
+  execute_process(COMMAND "${prefix}/bin/${program}" --help
+    RESULT_VARIABLE result OUTPUT_QUIET ERROR_VARIABLE errors)
+  if (NOT result EQUAL 0)
+    message(FATAL_ERROR "The installed ${program} does not run (${result}): ${errors}")
+  endif ()
+endforeach ()
+set(decimated "${WORK_DIR}/installed-cli-demo.ply")
+run("The installed CLI on a demo mesh"
+  "${prefix}/bin/color-decimate" demo:ico4:sharp "${decimated}" --reduction 0.75 --quiet)
+if (EXISTS "${decimated}")
+  file(SIZE "${decimated}" decimated_bytes)
+endif ()
+if (NOT decimated_bytes GREATER 0)
+  message(FATAL_ERROR "The installed CLI wrote no ${decimated}, or an empty one")
+endif ()
+message(STATUS "The installed CLI wrote ${decimated} (${decimated_bytes} bytes)")
 
 # Only the prefix (and the VTK/ParaView the build used) may be searched: no build tree,
 # no package registry.

@@ -1,5 +1,6 @@
 #include "ColorDecimationFidelity.h"
 
+#include "MeshIO.h"
 #include "QuadricPeer.h"
 
 #include "vtkActor.h"
@@ -8,29 +9,19 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
-#include "vtkDataSetReader.h"
-#include "vtkGeometryFilter.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
-#include "vtkPLYReader.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
-#include "vtkPointLocator.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkQuadricDecimation.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSTLReader.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
-#include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtkUnstructuredGrid.h"
 #include "vtkWindowToImageFilter.h"
-#include "vtkXMLPolyDataReader.h"
-#include "vtkXMLUnstructuredGridReader.h"
 
 #include <algorithm>
 #include <array>
@@ -38,7 +29,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -60,14 +50,12 @@ std::string Lower(std::string s)
   return s;
 }
 
-/// Where the colours are and how to bring them to 0..255 (chosen on the original).
-struct ColorMapping
+/// Where the colours are and how they map to RGB (chosen on the original).
+struct RenderColors
 {
   std::string Name; ///< empty: no colours
   bool OnCells = false;
-  bool Identity = true; ///< unsigned char: used as they are
-  double Offset = 0.0;
-  double Scale = 1.0;
+  tools::ColorMapping Mapping;
 };
 
 bool IsColorLike(vtkDataArray* array)
@@ -103,9 +91,9 @@ vtkDataArray* FindColorArray(vtkDataSetAttributes* data, const std::string& name
   return nullptr;
 }
 
-ColorMapping ChooseMapping(vtkPolyData* original, const std::string& requested)
+RenderColors ChooseColors(vtkPolyData* original, const std::string& requested)
 {
-  ColorMapping mapping;
+  RenderColors colors;
   vtkDataArray* array = FindColorArray(original->GetPointData(), requested);
   bool onCells = false;
   if (!array)
@@ -115,85 +103,37 @@ ColorMapping ChooseMapping(vtkPolyData* original, const std::string& requested)
   }
   if (!array || !array->GetName())
   {
-    return mapping;
+    return colors;
   }
-  mapping.Name = array->GetName();
-  mapping.OnCells = onCells;
-  if (array->GetDataType() == VTK_UNSIGNED_CHAR)
-  {
-    return mapping;
-  }
-  mapping.Identity = false;
-  const int nc = std::min(array->GetNumberOfComponents(), 3);
-  double lo = std::numeric_limits<double>::max();
-  double hi = std::numeric_limits<double>::lowest();
-  for (int c = 0; c < nc; ++c)
-  {
-    double range[2];
-    array->GetRange(range, c);
-    lo = std::min(lo, range[0]);
-    hi = std::max(hi, range[1]);
-  }
-  if (array->GetNumberOfTuples() == 0 || !(lo <= hi))
-  {
-    lo = hi = 0.0;
-  }
-  if (lo >= 0.0 && hi <= 1.0)
-  {
-    mapping.Scale = 255.0;
-  }
-  else if (lo >= 0.0 && hi <= 255.0)
-  {
-    mapping.Scale = 1.0;
-  }
-  else
-  {
-    mapping.Offset = lo;
-    mapping.Scale = hi > lo ? 255.0 / (hi - lo) : 1.0;
-  }
-  return mapping;
+  colors.Name = array->GetName();
+  colors.OnCells = onCells;
+  colors.Mapping = tools::ColorMapping::Of(array);
+  return colors;
 }
 
 /// Only the triangles and an unsigned char RGB copy of the colours (no normals).
-vtkSmartPointer<vtkPolyData> Renderable(vtkPolyData* mesh, const ColorMapping& mapping)
+vtkSmartPointer<vtkPolyData> Renderable(vtkPolyData* mesh, const RenderColors& colors)
 {
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->SetPoints(mesh->GetPoints());
   out->SetPolys(mesh->GetPolys());
   out->SetStrips(mesh->GetStrips());
-  if (mapping.Name.empty())
+  if (colors.Name.empty())
   {
     return out;
   }
-  vtkDataSetAttributes* data = mapping.OnCells
+  vtkDataSetAttributes* data = colors.OnCells
     ? static_cast<vtkDataSetAttributes*>(mesh->GetCellData())
     : static_cast<vtkDataSetAttributes*>(mesh->GetPointData());
-  vtkDataArray* array = data->GetArray(mapping.Name.c_str());
-  const vtkIdType expected = mapping.OnCells ? mesh->GetNumberOfCells() : mesh->GetNumberOfPoints();
+  vtkDataArray* array = data->GetArray(colors.Name.c_str());
+  const vtkIdType expected = colors.OnCells ? mesh->GetNumberOfCells() : mesh->GetNumberOfPoints();
   if (!array || array->GetNumberOfTuples() != expected)
   {
     return out; // the simplified mesh lost its colours: it renders white
   }
-  vtkNew<vtkUnsignedCharArray> rgb;
+  vtkSmartPointer<vtkUnsignedCharArray> rgb = tools::ToUnsignedChar(array, colors.Mapping, false);
   rgb->SetName("FidelityRGB");
-  rgb->SetNumberOfComponents(3);
-  rgb->SetNumberOfTuples(array->GetNumberOfTuples());
-  const int nc = array->GetNumberOfComponents();
-  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const int source = nc >= 3 ? c : 0;
-      double v = array->GetComponent(i, source);
-      if (!mapping.Identity)
-      {
-        v = std::round((v - mapping.Offset) * mapping.Scale);
-      }
-      v = std::min(255.0, std::max(0.0, v));
-      rgb->SetValue(3 * i + c, static_cast<unsigned char>(v));
-    }
-  }
-  if (mapping.OnCells)
+  if (colors.OnCells)
   {
     out->GetCellData()->SetScalars(rgb);
   }
@@ -396,51 +336,36 @@ void WriteViewImages(const std::string& directory, const char* pass, View view, 
   WritePixels(difference, size, stem + "difference.png");
 }
 
-void WriteNumber(std::ostream& os, double v)
+tools::Json MeasureJson(const Measure& m)
 {
-  if (std::isfinite(v))
-  {
-    os << v;
-  }
-  else
-  {
-    os << "null";
-  }
+  tools::Json json;
+  json["view"] = m.View;
+  json["covered_pixels"] = m.CoveredPixels;
+  json["rms"] = m.Rms;
+  json["psnr"] = m.Psnr; // +inf (identical renders) is written as null
+  json["common_pixels"] = m.CommonPixels;
+  json["common_rms"] = m.CommonRms;
+  return json;
 }
 
-void WriteMeasure(std::ostream& os, const Measure& m)
+tools::Json PassJson(const PassResult& pass)
 {
-  os << "{\"view\": \"" << m.View << "\", \"covered_pixels\": " << m.CoveredPixels << ", \"rms\": ";
-  WriteNumber(os, m.Rms);
-  os << ", \"psnr\": ";
-  WriteNumber(os, m.Psnr);
-  os << ", \"common_pixels\": " << m.CommonPixels << ", \"common_rms\": " << m.CommonRms << "}";
-}
-
-void WritePass(std::ostream& os, const char* name, const PassResult& pass, const std::string& pad,
-               const std::string& pad2)
-{
-  os << pad << "\"" << name << "\": ";
   if (!pass.Computed)
   {
-    os << "null";
-    return;
+    return nullptr;
   }
-  os << "{\n" << pad2 << "\"rms\": ";
-  WriteNumber(os, pass.All.Rms);
-  os << ",\n" << pad2 << "\"psnr\": ";
-  WriteNumber(os, pass.All.Psnr);
-  os << ",\n"
-     << pad2 << "\"covered_pixels\": " << pass.All.CoveredPixels << ",\n"
-     << pad2 << "\"common_rms\": " << pass.All.CommonRms << ",\n"
-     << pad2 << "\"common_pixels\": " << pass.All.CommonPixels << ",\n"
-     << pad2 << "\"views\": [";
-  for (size_t i = 0; i < pass.Views.size(); ++i)
+  tools::Json json;
+  json["rms"] = pass.All.Rms;
+  json["psnr"] = pass.All.Psnr;
+  json["covered_pixels"] = pass.All.CoveredPixels;
+  json["common_rms"] = pass.All.CommonRms;
+  json["common_pixels"] = pass.All.CommonPixels;
+  json["views"] = tools::Json::array();
+  for (const Measure& view : pass.Views)
   {
-    os << (i ? ",\n" : "\n") << pad2 << pad;
-    WriteMeasure(os, pass.Views[i]);
+    json["views"].push_back(MeasureJson(view));
   }
-  os << "\n" << pad2 << "]\n" << pad << "}";
+  return json;
 }
 
 void ProjectBounds(const double bounds[6], const double dir[3], const double up[3],
@@ -594,15 +519,15 @@ Result CompareRenders(vtkPolyData* original, vtkPolyData* simplified, const Opti
   result.SimplifiedPoints = simplified->GetNumberOfPoints();
   result.SimplifiedTriangles = simplified->GetNumberOfPolys() + simplified->GetNumberOfStrips();
 
-  const ColorMapping mapping = ChooseMapping(original, options.ColorArray);
-  result.ColorArray = mapping.Name;
-  if (!options.ColorArray.empty() && mapping.Name.empty())
+  const RenderColors colors = ChooseColors(original, options.ColorArray);
+  result.ColorArray = colors.Name;
+  if (!options.ColorArray.empty() && colors.Name.empty())
   {
     result.Error = "no colour array named '" + options.ColorArray + "' in the original";
     return result;
   }
-  auto a = Renderable(original, mapping);
-  auto b = Renderable(simplified, mapping);
+  auto a = Renderable(original, colors);
+  auto b = Renderable(simplified, colors);
   double bounds[6];
   original->GetBounds(bounds);
 
@@ -645,49 +570,112 @@ Result CompareRenders(vtkPolyData* original, vtkPolyData* simplified, const Opti
   return result;
 }
 
-std::string ToJson(const Result& result, int indent)
+tools::Json ResultJson(const Result& result)
 {
-  const std::string pad(static_cast<size_t>(std::max(0, indent)), ' ');
-  const std::string pad2 = pad + pad;
-  std::ostringstream os;
-  os << std::setprecision(6);
-  os << "{\n";
-  os << pad << "\"ok\": " << (result.Ok ? "true" : "false") << ",\n";
+  tools::Json json;
+  json["ok"] = result.Ok;
   if (!result.Ok)
   {
-    std::string escaped;
-    for (char ch : result.Error)
-    {
-      if (ch == '"' || ch == '\\')
-      {
-        escaped += '\\';
-      }
-      escaped += (ch == '\n' ? ' ' : ch);
-    }
-    os << pad << "\"error\": \"" << escaped << "\"\n}";
-    return os.str();
+    json["error"] = result.Error;
+    return json;
   }
-  os << pad << "\"size\": " << result.Size << ",\n";
-  os << pad << "\"views\": 6,\n";
-  os << pad << "\"color_array\": ";
-  if (result.ColorArray.empty())
-  {
-    os << "null,\n";
-  }
-  else
-  {
-    os << "\"" << result.ColorArray << "\",\n";
-  }
-  os << pad << "\"original\": {\"points\": " << result.OriginalPoints
-     << ", \"triangles\": " << result.OriginalTriangles << "},\n";
-  os << pad << "\"simplified\": {\"points\": " << result.SimplifiedPoints
-     << ", \"triangles\": " << result.SimplifiedTriangles << "},\n";
-  WritePass(os, "unlit", result.Unlit, pad, pad2);
-  os << ",\n";
-  WritePass(os, "lit", result.Lit, pad, pad2);
-  os << "\n}";
-  return os.str();
+  json["size"] = result.Size;
+  json["views"] = 6;
+  json["color_array"] = result.ColorArray.empty() ? tools::Json() : tools::Json(result.ColorArray);
+  json["original"] = { { "points", result.OriginalPoints },
+                       { "triangles", result.OriginalTriangles } };
+  json["simplified"] = { { "points", result.SimplifiedPoints },
+                         { "triangles", result.SimplifiedTriangles } };
+  json["unlit"] = PassJson(result.Unlit);
+  json["lit"] = PassJson(result.Lit);
+  return json;
 }
+
+std::string ToJson(const Result& result, int indent)
+{
+  return tools::JsonText(ResultJson(result), indent);
+}
+
+namespace
+{
+/// Moves the focal point (and the camera) to the snapshot's centre, then zooms.
+void CloseUp(vtkCamera* camera, const SnapshotOptions& options)
+{
+  const double scale = camera->GetParallelScale();
+  double up[3], dir[3], right[3], fp[3], pos[3];
+  camera->GetViewUp(up);
+  camera->GetDirectionOfProjection(dir); // from the camera to the focal point
+  right[0] = dir[1] * up[2] - dir[2] * up[1];
+  right[1] = dir[2] * up[0] - dir[0] * up[2];
+  right[2] = dir[0] * up[1] - dir[1] * up[0];
+  camera->GetFocalPoint(fp);
+  camera->GetPosition(pos);
+  const double sx = (options.Center[0] - 0.5) * 2.0 * scale;
+  const double sy = (options.Center[1] - 0.5) * 2.0 * scale;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double shift = sx * right[k] + sy * up[k];
+    fp[k] += shift;
+    pos[k] += shift;
+  }
+  camera->SetFocalPoint(fp);
+  camera->SetPosition(pos);
+  camera->SetParallelScale(scale / options.Zoom);
+}
+
+/// "NAME: N triangles" and the pass, in the panel's top left corner.
+vtkSmartPointer<vtkTextActor> PanelLabel(const std::string& name, vtkPolyData* mesh, bool lit,
+                                         int size)
+{
+  std::ostringstream label;
+  label << name << ": " << mesh->GetNumberOfPolys() << " triangles\n"
+        << (lit ? "shape (lit, grey)" : "colour (unlit)");
+  auto text = vtkSmartPointer<vtkTextActor>::New();
+  text->SetInput(label.str().c_str());
+  text->GetTextProperty()->SetFontSize(std::max(10, size / 28));
+  text->GetTextProperty()->SetColor(1.0, 1.0, 0.6);
+  text->GetTextProperty()->SetVerticalJustificationToTop();
+  text->GetTextProperty()->ShadowOn();
+  text->SetPosition(size / 64.0, size - size / 64.0);
+  return text;
+}
+
+/// One of the four panels of `size` pixels (row 0: lit, top; column 0: original, left),
+/// `gap` pixels apart, all seen by `camera`.
+vtkSmartPointer<vtkRenderer> Panel(vtkPolyData* renderable, vtkCamera* camera, int row, int column,
+                                   int size, int gap)
+{
+  const double w = 2.0 * size + gap;
+  const double x0 = column == 0 ? 0.0 : (size + gap) / w;
+  const double y0 = row == 0 ? (size + gap) / w : 0.0;
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  renderer->SetViewport(x0, y0, x0 + size / w, y0 + size / w);
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  renderer->SetActiveCamera(camera);
+  vtkNew<vtkPolyDataMapper> mapper;
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  ConfigureActor(actor, mapper, renderable, row == 0 ? Mode::Lit : Mode::Unlit);
+  renderer->AddActor(actor);
+  return renderer;
+}
+
+/// Renders `window` and writes it as a PNG; false when it cannot be written.
+bool SavePng(vtkRenderWindow* window, const std::string& path)
+{
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grabber;
+  grabber->SetInput(window);
+  grabber->SetInputBufferTypeToRGB();
+  grabber->ReadFrontBufferOff();
+  grabber->Update();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputConnection(grabber->GetOutputPort());
+  writer->Write();
+  return writer->GetErrorCode() == 0;
+}
+} // namespace
 
 bool WriteSnapshot(vtkPolyData* original, vtkPolyData* simplified, const std::string& path,
                    int size, const SnapshotOptions& options, std::string* error)
@@ -713,36 +701,17 @@ bool WriteSnapshot(vtkPolyData* original, vtkPolyData* simplified, const std::st
   {
     return fail(why);
   }
-  const ColorMapping mapping = ChooseMapping(original, options.ColorArray);
-  vtkSmartPointer<vtkPolyData> meshes[2] = { Renderable(original, mapping),
-                                             Renderable(simplified, mapping) };
+  const RenderColors colors = ChooseColors(original, options.ColorArray);
+  vtkPolyData* given[2] = { original, simplified };
+  vtkSmartPointer<vtkPolyData> meshes[2] = { Renderable(original, colors),
+                                             Renderable(simplified, colors) };
   double bounds[6];
   original->GetBounds(bounds);
   vtkNew<vtkCamera> camera;
   FitCamera(camera, bounds, options.ViewDirection);
   if (options.Zoom > 0.0 && options.Zoom != 1.0)
   {
-    // Move the focal point (and the camera) to the requested centre, then zoom.
-    const double scale = camera->GetParallelScale();
-    double up[3], dir[3], right[3], fp[3], pos[3];
-    camera->GetViewUp(up);
-    camera->GetDirectionOfProjection(dir); // from the camera to the focal point
-    right[0] = dir[1] * up[2] - dir[2] * up[1];
-    right[1] = dir[2] * up[0] - dir[0] * up[2];
-    right[2] = dir[0] * up[1] - dir[1] * up[0];
-    camera->GetFocalPoint(fp);
-    camera->GetPosition(pos);
-    const double sx = (options.Center[0] - 0.5) * 2.0 * scale;
-    const double sy = (options.Center[1] - 0.5) * 2.0 * scale;
-    for (int k = 0; k < 3; ++k)
-    {
-      const double shift = sx * right[k] + sy * up[k];
-      fp[k] += shift;
-      pos[k] += shift;
-    }
-    camera->SetFocalPoint(fp);
-    camera->SetPosition(pos);
-    camera->SetParallelScale(scale / options.Zoom);
+    CloseUp(camera, options);
   }
 
   HoldDisplay();
@@ -754,61 +723,22 @@ bool WriteSnapshot(vtkPolyData* original, vtkPolyData* simplified, const std::st
   vtkNew<vtkRenderer> frame; // the white gaps between the panels
   frame->SetBackground(1.0, 1.0, 1.0);
   window->AddRenderer(frame);
-  const double w = 2.0 * size + gap;
-  const double s = size / w;
-  const double g = (size + gap) / w;
-  const char* columnNames[2] = {
-    "original", options.SimplifiedLabel.empty() ? "simplified" : options.SimplifiedLabel.c_str()
-  };
-  std::vector<vtkSmartPointer<vtkObjectBase>> keep;
+  const std::string columnNames[2] = { "original",
+                                       options.SimplifiedLabel.empty() ? "simplified"
+                                                                       : options.SimplifiedLabel };
   for (int row = 0; row < 2; ++row) // 0: lit (top), 1: unlit (bottom)
   {
     for (int column = 0; column < 2; ++column)
     {
-      vtkNew<vtkRenderer> renderer;
-      const double x0 = column == 0 ? 0.0 : g;
-      const double y0 = row == 0 ? g : 0.0;
-      renderer->SetViewport(x0, y0, x0 + s, y0 + s);
-      renderer->SetBackground(0.0, 0.0, 0.0);
-      renderer->SetActiveCamera(camera);
-      vtkNew<vtkPolyDataMapper> mapper;
-      vtkNew<vtkActor> actor;
-      actor->SetMapper(mapper);
-      ConfigureActor(actor, mapper, meshes[column], row == 0 ? Mode::Lit : Mode::Unlit);
-      renderer->AddActor(actor);
+      auto renderer = Panel(meshes[column], camera, row, column, size, gap);
       if (options.Labels)
       {
-        vtkPolyData* mesh = column == 0 ? original : simplified;
-        std::ostringstream label;
-        label << columnNames[column] << ": " << mesh->GetNumberOfPolys() << " triangles\n"
-              << (row == 0 ? "shape (lit, grey)" : "colour (unlit)");
-        vtkNew<vtkTextActor> text;
-        text->SetInput(label.str().c_str());
-        text->GetTextProperty()->SetFontSize(std::max(10, size / 28));
-        text->GetTextProperty()->SetColor(1.0, 1.0, 0.6);
-        text->GetTextProperty()->SetVerticalJustificationToTop();
-        text->GetTextProperty()->ShadowOn();
-        text->SetPosition(size / 64.0, size - size / 64.0);
-        renderer->AddActor2D(text);
+        renderer->AddActor2D(PanelLabel(columnNames[column], given[column], row == 0, size));
       }
       window->AddRenderer(renderer);
     }
   }
-  window->Render();
-  vtkNew<vtkWindowToImageFilter> grabber;
-  grabber->SetInput(window);
-  grabber->SetInputBufferTypeToRGB();
-  grabber->ReadFrontBufferOff();
-  grabber->Update();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(path.c_str());
-  writer->SetInputConnection(grabber->GetOutputPort());
-  writer->Write();
-  if (writer->GetErrorCode() != 0)
-  {
-    return fail("could not write " + path);
-  }
-  return true;
+  return SavePng(window, path) || fail("could not write " + path);
 }
 
 //------------------------------------------------------------------------------
@@ -828,147 +758,20 @@ vtkSmartPointer<vtkPolyData> SimplifyWithQuadric(vtkPolyData* input, double redu
   return output;
 }
 
-bool TransferNearestColors(vtkPolyData* source, vtkPolyData* target, const std::string& colorArray)
-{
-  if (!source || !target)
-  {
-    return false;
-  }
-  vtkDataArray* colors = FindColorArray(source->GetPointData(), colorArray);
-  if (!colors || source->GetNumberOfPoints() == 0)
-  {
-    return false;
-  }
-  const ColorMapping mapping = ChooseMapping(source, colors->GetName() ? colors->GetName() : "");
-  vtkNew<vtkPointLocator> locator;
-  locator->SetDataSet(source);
-  locator->BuildLocator();
-  vtkNew<vtkUnsignedCharArray> out;
-  out->SetName(colors->GetName() ? colors->GetName() : "RGB");
-  out->SetNumberOfComponents(3);
-  out->SetNumberOfTuples(target->GetNumberOfPoints());
-  const int nc = colors->GetNumberOfComponents();
-  for (vtkIdType i = 0; i < target->GetNumberOfPoints(); ++i)
-  {
-    const vtkIdType nearest = locator->FindClosestPoint(target->GetPoint(i));
-    for (int c = 0; c < 3; ++c)
-    {
-      double v = colors->GetComponent(nearest, nc >= 3 ? c : 0);
-      if (!mapping.Identity)
-      {
-        v = std::round((v - mapping.Offset) * mapping.Scale);
-      }
-      out->SetValue(3 * i + c, static_cast<unsigned char>(std::min(255.0, std::max(0.0, v))));
-    }
-  }
-  if (target->GetPointData()->GetArray(out->GetName()))
-  {
-    target->GetPointData()->RemoveArray(out->GetName());
-  }
-  target->GetPointData()->SetScalars(out);
-  return true;
-}
-
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string* error)
 {
-  auto fail = [error](const std::string& why) -> vtkSmartPointer<vtkPolyData>
+  std::string description, why;
+  vtkSmartPointer<vtkPolyData> mesh = tools::ReadMesh(path, description, why);
+  if (mesh && tools::CountTriangles(mesh) == 0)
   {
-    if (error)
-    {
-      *error = why;
-    }
-    return nullptr;
-  };
-  const size_t dot = path.find_last_of('.');
-  const std::string ext = dot == std::string::npos ? std::string() : Lower(path.substr(dot));
-  {
-    FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f)
-    {
-      return fail("cannot open " + path);
-    }
-    std::fclose(f);
+    why = "no triangles in " + path;
+    mesh = nullptr;
   }
-  vtkSmartPointer<vtkDataSet> data;
-  if (ext == ".ply")
+  if (!mesh && error)
   {
-    vtkNew<vtkPLYReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    data = reader->GetOutput();
+    *error = why;
   }
-  else if (ext == ".vtp")
-  {
-    vtkNew<vtkXMLPolyDataReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    data = reader->GetOutput();
-  }
-  else if (ext == ".vtu")
-  {
-    vtkNew<vtkXMLUnstructuredGridReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    data = reader->GetOutput();
-  }
-  else if (ext == ".vtk")
-  {
-    vtkNew<vtkDataSetReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    data = reader->GetOutput();
-  }
-  else if (ext == ".obj")
-  {
-    vtkNew<vtkOBJReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    data = reader->GetOutput();
-  }
-  else if (ext == ".stl")
-  {
-    vtkNew<vtkSTLReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    data = reader->GetOutput();
-  }
-  else
-  {
-    return fail("unknown mesh format '" + ext + "' (use .ply, .vtp, .vtu, .vtk, .obj or .stl)");
-  }
-  if (!data || data->GetNumberOfPoints() == 0)
-  {
-    return fail("no points read from " + path);
-  }
-  vtkSmartPointer<vtkPolyData> poly = vtkPolyData::SafeDownCast(data);
-  if (!poly)
-  {
-    vtkNew<vtkGeometryFilter> surface;
-    surface->SetInputData(data);
-    surface->Update();
-    poly = surface->GetOutput();
-  }
-  bool allTriangles = poly->GetNumberOfStrips() == 0 && poly->GetNumberOfVerts() == 0 &&
-    poly->GetNumberOfLines() == 0;
-  if (allTriangles)
-  {
-    vtkCellArray* polys = poly->GetPolys();
-    allTriangles = polys->IsHomogeneous() == 3;
-  }
-  if (!allTriangles)
-  {
-    vtkNew<vtkTriangleFilter> triangles;
-    triangles->SetInputData(poly);
-    triangles->PassVertsOff();
-    triangles->PassLinesOff();
-    triangles->Update();
-    poly = triangles->GetOutput();
-  }
-  if (poly->GetNumberOfPolys() == 0)
-  {
-    return fail("no triangles in " + path);
-  }
-  return poly;
+  return mesh ? tools::Triangulated(mesh) : nullptr;
 }
 
 bool CanRender(std::string* why)

@@ -27,17 +27,20 @@
  *
  * Colours: the array named in Options::ColorArray, or else the active point scalars, or
  * else the first 3/4-component point array (cell arrays are used when no point array
- * fits). unsigned char values are used as they are; other types are mapped to 0..255 by a
- * rule chosen on the ORIGINAL's array and applied to both meshes (values in [0,1] are
- * multiplied by 255; values within [0,255] are used as they are; otherwise the original's
- * range is stretched to 0..255), then clamped. A one-component array is grey. A mesh
- * without colours renders white in the unlit pass.
+ * fits). They are mapped to RGB by the tools' colour mapping (MeshColors.h, the filter's
+ * own rule: unsigned char / 255, values in [0,1] as they are, otherwise the range stretched
+ * to [0,1]), chosen on the ORIGINAL's array and applied to both meshes, then clamped and
+ * rendered as bytes (times 255). A one-component array is grey. A mesh without colours
+ * renders white in the unlit pass.
  *
  * Rendering needs an OpenGL context: on Linux a X display (run under `xvfb-run -a` on a
  * headless machine). CanRender() tells, without crashing, whether one is available.
  */
 #ifndef ColorDecimationFidelity_h
 #define ColorDecimationFidelity_h
+
+#include "JsonOutput.h"
+#include "MeshColors.h"
 
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
@@ -130,7 +133,10 @@ struct Result
  */
 Result CompareRenders(vtkPolyData* original, vtkPolyData* simplified, const Options& options = {});
 
-/// The result as a JSON object (`indent` spaces per level; PSNR +inf is written as null).
+/// The result as a JSON object (PSNR +inf is written as null).
+tools::Json ResultJson(const Result& result);
+
+/// ResultJson() as text, `indent` spaces per level.
 std::string ToJson(const Result& result, int indent = 2);
 
 /// Options of WriteSnapshot().
@@ -167,14 +173,9 @@ bool WriteSnapshot(vtkPolyData* original, vtkPolyData* simplified, const std::st
  */
 void FitCamera(vtkCamera* camera, const double bounds[6], View view);
 
-/**
- * Gives `target` the colours of the nearest point of `source` (vtkPointLocator), as an
- * unsigned char point array named like the source's colour array and set active. For
- * simplifiers that drop colour (vtkQuadricDecimation without attributes). Returns false
- * when `source` has no point colour array.
- */
-bool TransferNearestColors(vtkPolyData* source, vtkPolyData* target,
-                           const std::string& colorArray = std::string());
+/// The nearest source point's colour for each target point (MeshColors.h, shared by the
+/// tools).
+using tools::TransferNearestColors;
 
 /**
  * vtkQuadricDecimation as the peer of the comparisons, to `reduction`: with `attributes`, the
@@ -186,9 +187,9 @@ vtkSmartPointer<vtkPolyData> SimplifyWithQuadric(vtkPolyData* input, double redu
                                                  const std::string& colorArray = std::string());
 
 /**
- * Reads a mesh from .ply, .vtp, .vtk (legacy polydata or unstructured grid), .obj or .stl
- * (by extension, case-insensitive); the surface is triangulated. Returns null and says
- * why in `error` on failure.
+ * Reads a mesh with the tools' reader (MeshIO.h: .ply, .vtp, .vtu, .vtk, .obj, .stl or a
+ * demo: specification) and triangulates it. Returns null and says why in `error` on
+ * failure or when it has no triangles.
  */
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string* error = nullptr);
 

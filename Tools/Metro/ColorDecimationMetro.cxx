@@ -1,5 +1,7 @@
 #include "ColorDecimationMetro.h"
 
+#include "JsonOutput.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkGenericCell.h"
@@ -14,9 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <random>
-#include <sstream>
 #include <vector>
 
 namespace colordecimation
@@ -100,22 +100,15 @@ Sums Measure(const std::vector<double>& points, vtkStaticCellLocator* locator)
   return functor.Total;
 }
 
-std::string Number(double value)
+tools::Json ToJson(const OneSided& side)
 {
-  if (!std::isfinite(value))
-  {
-    return "null";
-  }
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.9g", value);
-  return text;
-}
-
-void Append(std::ostringstream& os, const char* name, const OneSided& side)
-{
-  os << "  \"" << name << "\": { \"samples\": " << side.Samples
-     << ", \"area\": " << Number(side.Area) << ", \"mean\": " << Number(side.Mean)
-     << ", \"rms\": " << Number(side.Rms) << ", \"max\": " << Number(side.Max) << " },\n";
+  tools::Json json;
+  json["samples"] = side.Samples;
+  json["area"] = side.Area;
+  json["mean"] = side.Mean;
+  json["rms"] = side.Rms;
+  json["max"] = side.Max;
+  return json;
 }
 
 } // namespace
@@ -271,25 +264,25 @@ Result Compare(vtkPolyData* original, vtkPolyData* simplified, const Options& op
 
 std::string ToJson(const Result& result)
 {
-  std::ostringstream os;
-  os << "{\n  \"ok\": " << (result.Ok ? "true" : "false") << ",\n";
+  tools::Json json;
+  json["ok"] = result.Ok;
   if (!result.Ok)
   {
-    os << "  \"error\": \"" << result.Error << "\"\n}\n";
-    return os.str();
+    json["error"] = result.Error;
+    return tools::JsonText(json);
   }
-  os << "  \"diagonal\": " << Number(result.Diagonal) << ",\n";
-  os << "  \"original_triangles\": " << result.OriginalTriangles << ",\n";
-  os << "  \"simplified_triangles\": " << result.SimplifiedTriangles << ",\n";
-  Append(os, "forward", result.Forward);
-  Append(os, "backward", result.Backward);
-  os << "  \"mean\": " << Number(result.Mean) << ",\n";
-  os << "  \"rms\": " << Number(result.Rms) << ",\n";
-  os << "  \"max\": " << Number(result.Max) << ",\n";
-  os << "  \"mean_percent\": " << Number(result.MeanPercent) << ",\n";
-  os << "  \"rms_percent\": " << Number(result.RmsPercent) << ",\n";
-  os << "  \"max_percent\": " << Number(result.MaxPercent) << "\n}\n";
-  return os.str();
+  json["diagonal"] = result.Diagonal;
+  json["original_triangles"] = result.OriginalTriangles;
+  json["simplified_triangles"] = result.SimplifiedTriangles;
+  json["forward"] = ToJson(result.Forward);
+  json["backward"] = ToJson(result.Backward);
+  json["mean"] = result.Mean;
+  json["rms"] = result.Rms;
+  json["max"] = result.Max;
+  json["mean_percent"] = result.MeanPercent;
+  json["rms_percent"] = result.RmsPercent;
+  json["max_percent"] = result.MaxPercent;
+  return tools::JsonText(json);
 }
 
 } // namespace metro

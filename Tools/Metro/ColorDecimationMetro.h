@@ -72,7 +72,7 @@ OneSided SampleDistance(vtkPolyData* from, vtkPolyData* to, const Options& optio
 /// Both sides and the two-sided figures.
 Result Compare(vtkPolyData* original, vtkPolyData* simplified, const Options& options = {});
 
-/// The result as a JSON object.
+/// The result as a JSON object (non-finite numbers as null), without a final newline.
 std::string ToJson(const Result& result);
 
 } // namespace metro

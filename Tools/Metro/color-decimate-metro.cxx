@@ -4,112 +4,107 @@
 // ColorDecimationMetro.h.
 #include "ColorDecimationMetro.h"
 
+#include "CommandLine.h"
 #include "MeshIO.h"
 
-#include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <string>
-#include <vector>
 
 namespace
 {
-const char* Usage =
-  "usage: color-decimate-metro ORIGINAL SIMPLIFIED [--samples N] [--json FILE] [--quiet]\n"
-  "\n"
-  "Two-sided surface distance (Metro's method): N points sampled uniformly by area on each\n"
-  "surface (default 200000), the distance of each to the closest point of the other\n"
-  "surface; mean, RMS and max per side and two-sided (the larger side), in the meshes'\n"
-  "units and as % of the ORIGINAL's bounding-box diagonal. The maximum also looks at every\n"
-  "vertex. Prints JSON on standard output (and writes it to FILE with --json).\n"
-  "Meshes: .ply .vtp .vtu .vtk .obj .stl, or demo: specifications (see color-decimate).\n";
+using namespace colordecimation::tools;
 
-bool ParseCount(const char* text, long long& value)
+const char* const Program = "color-decimate-metro";
+
+struct Settings
 {
-  char* end = nullptr;
-  value = std::strtoll(text, &end, 10);
-  return end && !*end && end != text && value > 0;
+  std::string Paths[2];
+  std::string JsonPath;
+  bool Quiet = false;
+  colordecimation::metro::Options Metro;
+};
+
+void AddOptions(CLI::App& app, Settings& settings)
+{
+  for (int k = 0; k < 2; ++k)
+  {
+    app
+      .add_option(k == 0 ? "ORIGINAL" : "SIMPLIFIED", settings.Paths[k],
+                  k == 0 ? "the original mesh" : "the simplified mesh")
+      ->required()
+      ->type_name("");
+  }
+  AddValue(
+    app, "--samples",
+    [&settings](const std::string& text)
+    {
+      long long samples = 0;
+      const bool ok = ParseWholeNumber(text, samples) && samples > 0;
+      settings.Metro.Samples = ok ? samples : settings.Metro.Samples;
+      return ok;
+    },
+    FixedComplaint("--samples wants a positive whole number"),
+    "points sampled uniformly by area on each surface (default 200000)")
+    ->type_name("N");
+  app.add_option("--json", settings.JsonPath, "also write the JSON to FILE")->type_name("FILE");
+  app.add_flag("--quiet", settings.Quiet, "print no JSON on standard output");
 }
-} // namespace
 
-int main(int argc, char* argv[])
+/// Reads both meshes, compares them, prints and writes the JSON; the exit status.
+int Run(const Settings& settings)
 {
-  std::vector<std::string> positional;
-  std::string jsonPath;
-  bool quiet = false;
-  colordecimation::metro::Options options;
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if (arg == "-h" || arg == "--help")
-    {
-      std::cout << Usage;
-      return 0;
-    }
-    else if (arg == "--samples" && i + 1 < argc)
-    {
-      if (!ParseCount(argv[++i], options.Samples))
-      {
-        std::cerr << "color-decimate-metro: --samples wants a positive whole number\n";
-        return 2;
-      }
-    }
-    else if (arg == "--json" && i + 1 < argc)
-    {
-      jsonPath = argv[++i];
-    }
-    else if (arg == "--quiet")
-    {
-      quiet = true;
-    }
-    else if (!arg.empty() && arg[0] == '-' && arg.compare(0, 5, "demo:") != 0)
-    {
-      std::cerr << "color-decimate-metro: unknown option '" << arg << "'\n" << Usage;
-      return 2;
-    }
-    else
-    {
-      positional.push_back(arg);
-    }
-  }
-  if (positional.size() != 2)
-  {
-    std::cerr << Usage;
-    return 2;
-  }
   vtkSmartPointer<vtkPolyData> meshes[2];
   for (int k = 0; k < 2; ++k)
   {
     std::string description, error;
-    meshes[k] = colordecimation::tools::ReadMesh(positional[k], description, error);
+    meshes[k] = ReadMesh(settings.Paths[k], description, error);
     if (!meshes[k])
     {
-      std::cerr << "color-decimate-metro: " << error << "\n";
+      std::cerr << Program << ": " << error << "\n";
       return 1;
     }
   }
   const colordecimation::metro::Result result =
-    colordecimation::metro::Compare(meshes[0], meshes[1], options);
-  const std::string json = colordecimation::metro::ToJson(result);
-  if (!quiet)
+    colordecimation::metro::Compare(meshes[0], meshes[1], settings.Metro);
+  const std::string json = colordecimation::metro::ToJson(result) + "\n";
+  if (!settings.Quiet)
   {
     std::cout << json;
   }
-  if (!jsonPath.empty())
+  if (!settings.JsonPath.empty())
   {
-    std::ofstream out(jsonPath);
+    std::ofstream out(settings.JsonPath);
     out << json;
     if (!out)
     {
-      std::cerr << "color-decimate-metro: cannot write '" << jsonPath << "'\n";
+      std::cerr << Program << ": cannot write '" << settings.JsonPath << "'\n";
       return 1;
     }
   }
   if (!result.Ok)
   {
-    std::cerr << "color-decimate-metro: " << result.Error << "\n";
+    std::cerr << Program << ": " << result.Error << "\n";
     return 1;
   }
   return 0;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  CLI::App app(
+    "Two-sided surface distance (Metro's method): N points sampled uniformly by area on each\n"
+    "surface, the distance of each to the closest point of the other surface; mean, RMS and\n"
+    "max per side and two-sided (the larger side), in the meshes' units and as % of the\n"
+    "ORIGINAL's bounding-box diagonal. The maximum also looks at every vertex. Prints JSON on\n"
+    "standard output (and writes it to FILE with --json).\n"
+    "Meshes: .ply .vtp .vtu .vtk .obj .stl, or demo: specifications (see color-decimate).",
+    Program);
+  SetUpCommandLine(
+    app, "Usage: color-decimate-metro ORIGINAL SIMPLIFIED [--samples N] [--json FILE] [--quiet]");
+  Settings settings;
+  AddOptions(app, settings);
+  const int status = ParseCommandLine(app, argc, argv);
+  return status >= 0 ? status : Run(settings);
 }

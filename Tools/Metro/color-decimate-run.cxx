@@ -3,25 +3,20 @@
 // options, vtkQuadricDecimation (attribute error metric on or off) or meshoptimizer's
 // meshopt_simplify; writes the result and, as JSON, the time, the peak memory and the
 // metric's bytes per vertex.
+#include "CommandLine.h"
+#include "JsonOutput.h"
+#include "MeshColors.h"
 #include "MeshIO.h"
 #include "ProcessMemory.h"
 #include "QuadricPeer.h"
 
-#include "vtkCellArray.h"
-#include "vtkCellArrayIterator.h"
 #include "vtkCleanPolyData.h"
 #include "vtkColorHalfEdgeDecimation.h"
 #include "vtkDataArray.h"
-#include "vtkIdList.h"
-#include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkQuadricDecimation.h"
-#include "vtkStaticPointLocator.h"
-#include "vtkTriangleFilter.h"
-#include "vtkUnsignedCharArray.h"
 
 #ifndef COLORDECIMATION_WITH_MESHOPTIMIZER
 #define COLORDECIMATION_WITH_MESHOPTIMIZER 0
@@ -31,23 +26,16 @@
 #endif
 
 #include <chrono>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
-#include <vector>
 
 using namespace colordecimation::tools;
 
 namespace
 {
-const char* Usage =
-  "usage: color-decimate-run INPUT OUTPUT --method M [options]\n"
-  "\n"
-  "Simplifies INPUT with one method and writes OUTPUT (.vtp keeps every array; .ply, .vtk).\n"
+const char* const Program = "color-decimate-run";
+
+const char* const Methods =
   "Methods:\n"
   "  half-edge-color   vtkColorHalfEdgeDecimation, the paper's metric (default)\n"
   "  geometry          vtkColorHalfEdgeDecimation, quadric error only\n"
@@ -56,19 +44,24 @@ const char* Usage =
   "                    with the colours as scalars; without, the output has no colour and\n"
   "                    gets the colour of the nearest input vertex, after the timing)\n"
   "  meshopt           meshoptimizer's meshopt_simplify (geometry only; the output keeps\n"
-  "                    input vertices, with all their point data)\n"
-  "Options:\n"
-  "  --reduction R         fraction of triangles to remove (default 0.9)\n"
-  "  --placement           color-quadric: optimal placement (full collapses)\n"
-  "  --cielab              measure colour in CIELab (the vtkColorHalfEdgeDecimation metrics)\n"
-  "  --geometry-weight W   GeometryWeight (half-edge-color)\n"
-  "  --color-weight W      ColorWeight (color-quadric)\n"
-  "  --boundary-weight W   BoundaryWeight (vtkColorHalfEdgeDecimation)\n"
-  "  --preserve-boundary   PreserveBoundary (vtkColorHalfEdgeDecimation)\n"
-  "  --attributes          vtk-quadric: AttributeErrorMetric on\n"
-  "  --clean               vtk-quadric: merge coincident points and drop the triangles\n"
-  "                        that become degenerate first (vtkCleanPolyData, not timed)\n"
-  "  --json FILE           write the figures as JSON\n";
+  "                    input vertices, with all their point data)";
+
+struct Settings
+{
+  std::string Input;
+  std::string Output;
+  std::string Method = "half-edge-color";
+  std::string JsonPath;
+  double Reduction = 0.9;
+  double GeometryWeight = 1.0;
+  double ColorWeight = 1.0;
+  double BoundaryWeight = 0.0;
+  bool Placement = false;
+  bool CieLab = false;
+  bool Attributes = false;
+  bool PreserveBoundary = false;
+  bool Clean = false;
+};
 
 struct Figures
 {
@@ -82,183 +75,73 @@ struct Figures
   long long InputPoints = 0, InputTriangles = 0, OutputPoints = 0, OutputTriangles = 0;
 };
 
-vtkSmartPointer<vtkPolyData> Triangulated(vtkPolyData* mesh)
+bool IsOurs(const std::string& method)
 {
-  vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputData(mesh);
-  triangulate->PassVertsOff();
-  triangulate->PassLinesOff();
-  triangulate->Update();
-  return triangulate->GetOutput();
+  return method == "half-edge-color" || method == "geometry" || method == "color-quadric";
 }
 
-/// Colours of the nearest input vertex (for a simplifier that drops them).
-void TransferColors(vtkPolyData* source, vtkPolyData* target)
+/// INPUT, OUTPUT, the method and the JSON.
+void AddRunOptions(CLI::App& app, Settings& settings)
 {
-  vtkDataArray* colors = source->GetPointData()->GetScalars();
-  if (!colors || target->GetNumberOfPoints() == 0)
-  {
-    return;
-  }
-  vtkNew<vtkStaticPointLocator> locator;
-  locator->SetDataSet(source);
-  locator->BuildLocator();
-  vtkSmartPointer<vtkDataArray> out;
-  out.TakeReference(colors->NewInstance());
-  out->SetName(colors->GetName());
-  out->SetNumberOfComponents(colors->GetNumberOfComponents());
-  out->SetNumberOfTuples(target->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < target->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    target->GetPoint(i, p);
-    out->SetTuple(i, locator->FindClosestPoint(p), colors);
-  }
-  target->GetPointData()->SetScalars(out);
+  app.add_option("INPUT", settings.Input, "the mesh to simplify (a mesh file or demo:)")
+    ->required()
+    ->type_name("");
+  app.add_option("OUTPUT", settings.Output, "the result: .vtp (keeps every array), .ply or .vtk")
+    ->required()
+    ->type_name("");
+  AddValue(
+    app, "--method",
+    [&settings](const std::string& method)
+    {
+      settings.Method = method;
+      return IsOurs(method) || method == "vtk-quadric" || method == "meshopt";
+    },
+    [](const std::string& method) { return "unknown method '" + method + "'"; },
+    "the simplifier (default half-edge-color; see Methods below)")
+    ->type_name("M");
+  AddNumber(app, "--reduction", settings.Reduction, 0.0, 1.0, BadValueComplaint("--reduction"),
+            "fraction of triangles to remove (default 0.9)")
+    ->type_name("R");
+  app.add_option("--json", settings.JsonPath, "write the figures as JSON")->type_name("FILE");
 }
 
-std::string Json(const Figures& f)
+/// The settings of the methods.
+void AddMethodOptions(CLI::App& app, Settings& settings)
 {
-  std::ostringstream os;
-  os.precision(9);
-  os << "{\n  \"method\": \"" << f.Method << "\",\n  \"seconds\": " << f.Seconds
-     << ",\n  \"peak_bytes\": " << f.PeakBytes
-     << ",\n  \"peak_reset\": " << (f.PeakReset ? "true" : "false")
-     << ",\n  \"state_bytes\": " << f.StateBytes
-     << ",\n  \"metric_bytes_per_vertex\": " << f.MetricBytesPerVertex
-     << ",\n  \"metric_bytes_note\": \"" << f.MetricBytesNote << "\""
-     << ",\n  \"input_points\": " << f.InputPoints
-     << ",\n  \"input_triangles\": " << f.InputTriangles
-     << ",\n  \"output_points\": " << f.OutputPoints
-     << ",\n  \"output_triangles\": " << f.OutputTriangles << "\n}\n";
-  return os.str();
+  const double any = 1e300; // any finite weight >= 0
+  app.add_flag("--placement", settings.Placement,
+               "color-quadric: optimal placement (full collapses)");
+  app.add_flag("--cielab", settings.CieLab,
+               "measure colour in CIELab (the vtkColorHalfEdgeDecimation metrics)");
+  AddNumber(app, "--geometry-weight", settings.GeometryWeight, 0.0, any,
+            BadValueComplaint("--geometry-weight"), "GeometryWeight (half-edge-color)")
+    ->type_name("W");
+  AddNumber(app, "--color-weight", settings.ColorWeight, 0.0, any,
+            BadValueComplaint("--color-weight"), "ColorWeight (color-quadric)")
+    ->type_name("W");
+  AddNumber(app, "--boundary-weight", settings.BoundaryWeight, 0.0, any,
+            BadValueComplaint("--boundary-weight"), "BoundaryWeight (vtkColorHalfEdgeDecimation)")
+    ->type_name("W");
+  app.add_flag("--preserve-boundary", settings.PreserveBoundary,
+               "PreserveBoundary (vtkColorHalfEdgeDecimation)");
+  app.add_flag("--attributes", settings.Attributes, "vtk-quadric: AttributeErrorMetric on");
+  app.add_flag("--clean", settings.Clean,
+               "vtk-quadric: merge coincident points and drop the triangles that\n"
+               "become degenerate first (vtkCleanPolyData, not timed)");
 }
 
-bool ParseNumber(const std::string& text, double& value)
+/// INPUT, triangulated (and cleaned for vtk-quadric with --clean); null when unreadable.
+vtkSmartPointer<vtkPolyData> ReadInput(const Settings& settings)
 {
-  char* end = nullptr;
-  value = std::strtod(text.c_str(), &end);
-  return end && !*end && end != text.c_str() && std::isfinite(value);
-}
-} // namespace
-
-int main(int argc, char* argv[])
-{
-  std::vector<std::string> positional;
-  std::string method = "half-edge-color", jsonPath;
-  double reduction = 0.9, geometryWeight = 1.0, colorWeight = 1.0, boundaryWeight = 0.0;
-  bool placement = false, cielab = false, attributes = false, preserveBoundary = false;
-  bool clean = false;
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string
-    {
-      if (i + 1 >= argc)
-      {
-        std::cerr << "color-decimate-run: " << arg << " needs a value\n";
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    auto number = [&](double& out, double lo, double hi)
-    {
-      const std::string text = value();
-      if (!ParseNumber(text, out) || out < lo || out > hi)
-      {
-        std::cerr << "color-decimate-run: bad value '" << text << "' for " << arg << "\n";
-        std::exit(2);
-      }
-    };
-    if (arg == "-h" || arg == "--help")
-    {
-      std::cout << Usage;
-      return 0;
-    }
-    else if (arg == "--method")
-    {
-      method = value();
-    }
-    else if (arg == "--reduction")
-    {
-      number(reduction, 0.0, 1.0);
-    }
-    else if (arg == "--geometry-weight")
-    {
-      number(geometryWeight, 0.0, 1e300);
-    }
-    else if (arg == "--color-weight")
-    {
-      number(colorWeight, 0.0, 1e300);
-    }
-    else if (arg == "--boundary-weight")
-    {
-      number(boundaryWeight, 0.0, 1e300);
-    }
-    else if (arg == "--placement")
-    {
-      placement = true;
-    }
-    else if (arg == "--cielab")
-    {
-      cielab = true;
-    }
-    else if (arg == "--attributes")
-    {
-      attributes = true;
-    }
-    else if (arg == "--clean")
-    {
-      clean = true;
-    }
-    else if (arg == "--preserve-boundary")
-    {
-      preserveBoundary = true;
-    }
-    else if (arg == "--json")
-    {
-      jsonPath = value();
-    }
-    else if (!arg.empty() && arg[0] == '-')
-    {
-      std::cerr << "color-decimate-run: unknown option '" << arg << "'\n" << Usage;
-      return 2;
-    }
-    else
-    {
-      positional.push_back(arg);
-    }
-  }
-  if (positional.size() != 2)
-  {
-    std::cerr << Usage;
-    return 2;
-  }
-  const bool ours =
-    method == "half-edge-color" || method == "geometry" || method == "color-quadric";
-  if (!ours && method != "vtk-quadric" && method != "meshopt")
-  {
-    std::cerr << "color-decimate-run: unknown method '" << method << "'\n";
-    return 2;
-  }
-#if !COLORDECIMATION_WITH_MESHOPTIMIZER
-  if (method == "meshopt")
-  {
-    std::cerr << "color-decimate-run: built without meshoptimizer\n";
-    return 3;
-  }
-#endif
-
   std::string description, error;
-  vtkSmartPointer<vtkPolyData> read = ReadMesh(positional[0], description, error);
+  vtkSmartPointer<vtkPolyData> read = ReadMesh(settings.Input, description, error);
   if (!read)
   {
-    std::cerr << "color-decimate-run: " << error << "\n";
-    return 1;
+    std::cerr << Program << ": " << error << "\n";
+    return nullptr;
   }
   vtkSmartPointer<vtkPolyData> input = Triangulated(read);
-  read = nullptr;
-  if (clean && method == "vtk-quadric")
+  if (settings.Clean && settings.Method == "vtk-quadric")
   {
     // vtkQuadricDecimation's attribute quadrics cannot be built on zero-area triangles.
     vtkNew<vtkCleanPolyData> cleaner;
@@ -270,89 +153,156 @@ int main(int argc, char* argv[])
     cleaner->Update();
     input = Triangulated(cleaner->GetOutput());
   }
+  return input;
+}
+
+vtkSmartPointer<vtkPolyData> SimplifyOurs(vtkPolyData* input, const Settings& settings,
+                                          Figures& figures)
+{
+  const std::string& method = settings.Method;
+  vtkNew<vtkColorHalfEdgeDecimation> filter;
+  filter->SetInputData(input);
+  filter->SetTargetReduction(settings.Reduction);
+  filter->SetErrorMetric(method == "geometry"          ? vtkColorHalfEdgeDecimation::Geometry
+                           : method == "color-quadric" ? vtkColorHalfEdgeDecimation::ColorQuadric
+                                                       : vtkColorHalfEdgeDecimation::HalfEdgeColor);
+  filter->SetOptimalPlacement(settings.Placement);
+  filter->SetColorSpace(settings.CieLab ? vtkColorHalfEdgeDecimation::CIELab
+                                        : vtkColorHalfEdgeDecimation::RGB);
+  filter->SetGeometryWeight(settings.GeometryWeight);
+  filter->SetColorWeight(settings.ColorWeight);
+  filter->SetBoundaryWeight(settings.BoundaryWeight);
+  filter->SetPreserveBoundary(settings.PreserveBoundary);
+  filter->Update();
+  figures.StateBytes = filter->GetStateMemory();
+  figures.MetricBytesPerVertex = method == "color-quadric" ? 112 : 48;
+  figures.MetricBytesNote = method == "color-quadric"
+    ? "28 floats (6-D quadric)"
+    : "12 floats (quadric 10, importance, max colour distance)";
+  return filter->GetOutput();
+}
+
+vtkSmartPointer<vtkPolyData> SimplifyWithQuadric(vtkPolyData* input, const Settings& settings,
+                                                 Figures& figures)
+{
+  vtkNew<vtkQuadricDecimation> filter;
+  filter->SetInputData(input);
+  filter->SetTargetReduction(settings.Reduction);
+  ConfigureQuadricPeer(filter, settings.Attributes);
+  filter->Update();
+  // vtkQuadricDecimation keeps per vertex a sparse quadric of 11 + 4 m doubles (m the
+  // attribute components: 3 for RGB).
+  vtkDataArray* colors = input->GetPointData()->GetScalars();
+  const int m = settings.Attributes && colors ? colors->GetNumberOfComponents() : 0;
+  figures.MetricBytesPerVertex = 8.0 * (11 + 4 * m);
+  figures.MetricBytesNote = std::to_string(11 + 4 * m) + " doubles (sparse quadric)";
+  return filter->GetOutput();
+}
+
+/// The method's run, timed, with its peak memory.
+vtkSmartPointer<vtkPolyData> Simplify(vtkPolyData* input, const Settings& settings,
+                                      Figures& figures)
+{
+  vtkSmartPointer<vtkPolyData> output;
+  PeakMemoryProbe probe;
+  const auto start = std::chrono::steady_clock::now();
+  if (IsOurs(settings.Method))
+  {
+    output = SimplifyOurs(input, settings, figures);
+  }
+  else if (settings.Method == "vtk-quadric")
+  {
+    output = SimplifyWithQuadric(input, settings, figures);
+  }
+#if COLORDECIMATION_WITH_MESHOPTIMIZER
+  else
+  {
+    output = MakeMeshOptimizerOutput(input, SimplifyWithMeshOptimizer(input, settings.Reduction));
+    // meshopt_simplify keeps a quadric of 11 floats per vertex (and other per-vertex
+    // tables: remap, kind, adjacency).
+    figures.MetricBytesPerVertex = 44;
+    figures.MetricBytesNote = "11 floats (quadric)";
+  }
+#endif
+  figures.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  figures.PeakBytes = probe.PeakAboveBaseline();
+  figures.PeakReset = probe.PeakWasReset();
+  return output;
+}
+
+Json ToJson(const Figures& f)
+{
+  Json json;
+  json["method"] = f.Method;
+  json["seconds"] = f.Seconds;
+  json["peak_bytes"] = f.PeakBytes;
+  json["peak_reset"] = f.PeakReset;
+  json["state_bytes"] = f.StateBytes;
+  json["metric_bytes_per_vertex"] = f.MetricBytesPerVertex;
+  json["metric_bytes_note"] = f.MetricBytesNote;
+  json["input_points"] = f.InputPoints;
+  json["input_triangles"] = f.InputTriangles;
+  json["output_points"] = f.OutputPoints;
+  json["output_triangles"] = f.OutputTriangles;
+  return json;
+}
+
+/// Reads, simplifies, writes OUTPUT and the figures; the exit status.
+int Run(const Settings& settings)
+{
+  vtkSmartPointer<vtkPolyData> input = ReadInput(settings);
+  if (!input)
+  {
+    return 1;
+  }
   Figures figures;
-  figures.Method = method;
+  figures.Method = settings.Method;
   figures.InputPoints = input->GetNumberOfPoints();
   figures.InputTriangles = input->GetNumberOfPolys();
-
-  vtkSmartPointer<vtkPolyData> output;
+  vtkSmartPointer<vtkPolyData> output = Simplify(input, settings, figures);
+  if (settings.Method == "vtk-quadric" && !settings.Attributes)
   {
-    PeakMemoryProbe probe;
-    const auto start = std::chrono::steady_clock::now();
-    if (ours)
-    {
-      vtkNew<vtkColorHalfEdgeDecimation> filter;
-      filter->SetInputData(input);
-      filter->SetTargetReduction(reduction);
-      filter->SetErrorMetric(method == "geometry" ? vtkColorHalfEdgeDecimation::Geometry
-                               : method == "color-quadric"
-                               ? vtkColorHalfEdgeDecimation::ColorQuadric
-                               : vtkColorHalfEdgeDecimation::HalfEdgeColor);
-      filter->SetOptimalPlacement(placement);
-      filter->SetColorSpace(cielab ? vtkColorHalfEdgeDecimation::CIELab
-                                   : vtkColorHalfEdgeDecimation::RGB);
-      filter->SetGeometryWeight(geometryWeight);
-      filter->SetColorWeight(colorWeight);
-      filter->SetBoundaryWeight(boundaryWeight);
-      filter->SetPreserveBoundary(preserveBoundary);
-      filter->Update();
-      output = filter->GetOutput();
-      figures.StateBytes = filter->GetStateMemory();
-      figures.MetricBytesPerVertex = method == "color-quadric" ? 112 : 48;
-      figures.MetricBytesNote = method == "color-quadric"
-        ? "28 floats (6-D quadric)"
-        : "12 floats (quadric 10, importance, max colour distance)";
-    }
-    else if (method == "vtk-quadric")
-    {
-      vtkNew<vtkQuadricDecimation> filter;
-      filter->SetInputData(input);
-      filter->SetTargetReduction(reduction);
-      colordecimation::tools::ConfigureQuadricPeer(filter, attributes);
-      filter->Update();
-      output = filter->GetOutput();
-      // vtkQuadricDecimation keeps per vertex a sparse quadric of 11 + 4 m doubles (m the
-      // attribute components: 3 for RGB).
-      const int m = attributes && input->GetPointData()->GetScalars()
-        ? input->GetPointData()->GetScalars()->GetNumberOfComponents()
-        : 0;
-      figures.MetricBytesPerVertex = 8.0 * (11 + 4 * m);
-      figures.MetricBytesNote = std::to_string(11 + 4 * m) + " doubles (sparse quadric)";
-    }
-#if COLORDECIMATION_WITH_MESHOPTIMIZER
-    else
-    {
-      output = colordecimation::tools::MakeMeshOptimizerOutput(
-        input, colordecimation::tools::SimplifyWithMeshOptimizer(input, reduction));
-      // meshopt_simplify keeps a quadric of 11 floats per vertex (and other per-vertex
-      // tables: remap, kind, adjacency).
-      figures.MetricBytesPerVertex = 44;
-      figures.MetricBytesNote = "11 floats (quadric)";
-    }
-#endif
-    figures.Seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    figures.PeakBytes = probe.PeakAboveBaseline();
-    figures.PeakReset = probe.PeakWasReset();
-  }
-  if (method == "vtk-quadric" && !attributes)
-  {
-    TransferColors(input, output);
+    TransferNearestColors(input, output);
   }
   figures.OutputPoints = output->GetNumberOfPoints();
   figures.OutputTriangles = output->GetNumberOfPolys();
-
-  if (!WriteMesh(output, positional[1], "", error))
+  std::string error;
+  if (!WriteMesh(output, settings.Output, "", error))
   {
-    std::cerr << "color-decimate-run: " << error << "\n";
+    std::cerr << Program << ": " << error << "\n";
     return 1;
   }
-  const std::string json = Json(figures);
-  std::cout << json;
-  if (!jsonPath.empty())
+  const Json json = ToJson(figures);
+  std::cout << JsonText(json) << "\n";
+  if (!settings.JsonPath.empty() && !WriteJsonFile(json, settings.JsonPath, error))
   {
-    std::ofstream out(jsonPath);
-    out << json;
+    std::cerr << Program << ": " << error << "\n";
+    return 1;
   }
   return 0;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  CLI::App app("Simplifies INPUT with one method and writes OUTPUT (.vtp keeps every array; "
+               ".ply, .vtk),\nand prints its time, peak memory and metric bytes per vertex as "
+               "JSON.",
+               Program);
+  SetUpCommandLine(app, "Usage: color-decimate-run INPUT OUTPUT --method M [options]");
+  Settings settings;
+  AddRunOptions(app, settings);
+  AddMethodOptions(app, settings);
+  app.footer(Methods);
+  const int status = ParseCommandLine(app, argc, argv);
+  if (status >= 0)
+  {
+    return status;
+  }
+  if (!COLORDECIMATION_WITH_MESHOPTIMIZER && settings.Method == "meshopt")
+  {
+    std::cerr << Program << ": built without meshoptimizer\n";
+    return 3;
+  }
+  return Run(settings);
 }

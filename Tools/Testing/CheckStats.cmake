@@ -1,11 +1,13 @@
 # Checks the JSON written by color-decimate --stats (a ctest helper).
 #
 #   cmake -DSTATS=file.json -DINPUT_POINTS=N -DINPUT_TRIANGLES=N -DREDUCTION=R -DMETRIC=name
-#         [-DSCHEDULE=greedy|batched] [-DCHECK_FILE=mesh -DMESH_CHECK=ColorDecimationMeshCheck]
+#         [-DSCHEDULE=greedy|batched] [-DTHREADS=N | -DMIN_THREADS=N]
+#         [-DCHECK_FILE=mesh -DMESH_CHECK=ColorDecimationMeshCheck]
 #         -P CheckStats.cmake
 #
-# Every required key must be there with a plausible value; with CHECK_FILE, the output
-# counts in the JSON must be those of the mesh file (read by MESH_CHECK).
+# Every required key must be there with a plausible value; "threads" must be THREADS, or at
+# least MIN_THREADS (at least 1 without either); with CHECK_FILE, the output counts in the
+# JSON must be those of the mesh file (read by MESH_CHECK).
 if (NOT EXISTS "${STATS}")
   message(FATAL_ERROR "${STATS} was not written")
 endif ()
@@ -13,7 +15,7 @@ file(READ "${STATS}" json)
 message(STATUS "${STATS}:\n${json}")
 
 foreach (key IN ITEMS filter_seconds input_triangles output_triangles input_points output_points
-    peak_rss_bytes reduction metric schedule state_memory_bytes)
+    peak_rss_bytes reduction metric schedule threads state_memory_bytes)
   string(JSON value ERROR_VARIABLE problem GET "${json}" ${key})
   if (problem)
     message(FATAL_ERROR "key '${key}' missing: ${problem}")
@@ -65,6 +67,14 @@ expect("reduction (${reduction}) = 1 - output_triangles / input_triangles"
 expect("filter_seconds (${filter_seconds}) in (0, 120)"
   filter_seconds GREATER 0 AND filter_seconds LESS 120)
 expect("peak_rss_bytes (${peak_rss_bytes}) > 1 MB" peak_rss_bytes GREATER 1000000)
+if (DEFINED THREADS)
+  expect("threads (${threads}) = ${THREADS}" threads EQUAL THREADS)
+else ()
+  if (NOT DEFINED MIN_THREADS)
+    set(MIN_THREADS 1)
+  endif ()
+  expect("threads (${threads}) >= ${MIN_THREADS}" threads GREATER_EQUAL MIN_THREADS)
+endif ()
 expect("state_memory_bytes (${state_memory_bytes}) > 0 and < peak_rss_bytes"
   state_memory_bytes GREATER 0 AND state_memory_bytes LESS peak_rss_bytes)
 

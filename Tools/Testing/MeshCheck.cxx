@@ -14,6 +14,7 @@
  *                   colour are those of that input point of the file given by --colors-from.
  * Prints "points=P triangles=T colors=NAME/COMPONENTS" and exits non-zero on a failed check.
  */
+#include "CommandLine.h"
 #include "MeshIO.h"
 
 #include "vtkDataArray.h"
@@ -25,11 +26,11 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <array>
-#include <cstdlib>
 #include <iostream>
 #include <map>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -64,56 +65,148 @@ Colour ColourOf(vtkDataArray* colors, vtkIdType i)
   }
   return c;
 }
-} // namespace
-
-int main(int argc, char* argv[])
+struct Checks
 {
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  if (argc < 2)
-  {
-    std::cerr << "usage: ColorDecimationMeshCheck FILE [checks]" << std::endl;
-    return 2;
-  }
-  const std::string file = argv[1];
-  long long wantTriangles = -1, lo = -1, hi = -1, wantPoints = -1;
-  bool wantColors = false, wantIds = false;
-  std::string reference;
-  for (int i = 2; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if (arg == "--triangles" && i + 1 < argc)
-    {
-      wantTriangles = std::atoll(argv[++i]);
-    }
-    else if (arg == "--triangles-between" && i + 2 < argc)
-    {
-      lo = std::atoll(argv[++i]);
-      hi = std::atoll(argv[++i]);
-    }
-    else if (arg == "--points" && i + 1 < argc)
-    {
-      wantPoints = std::atoll(argv[++i]);
-    }
-    else if (arg == "--colors")
-    {
-      wantColors = true;
-    }
-    else if (arg == "--colors-from" && i + 1 < argc)
-    {
-      reference = argv[++i];
-    }
-    else if (arg == "--original-ids")
-    {
-      wantIds = true;
-    }
-    else
-    {
-      std::cerr << "MeshCheck: bad argument '" << arg << "'" << std::endl;
-      return 2;
-    }
-  }
+  std::string File;
+  long long Triangles = -1;
+  std::vector<long long> TrianglesBetween;
+  long long Points = -1;
+  bool Colors = false;
+  std::string Reference;
+  bool OriginalIds = false;
+};
 
-  auto mesh = Load(file);
+void AddOptions(CLI::App& app, Checks& checks)
+{
+  app.add_option("FILE", checks.File, "the mesh file to check")->required()->type_name("");
+  app.add_option("--triangles", checks.Triangles, "exactly N triangles")->type_name("N");
+  app.add_option("--triangles-between", checks.TrianglesBetween, "LO to HI triangles")
+    ->expected(2)
+    ->type_name("LO HI");
+  app.add_option("--points", checks.Points, "exactly N points")->type_name("N");
+  app.add_flag("--colors", checks.Colors,
+               "a 3- or 4-component unsigned char colour array (the active scalars) with\n"
+               "more than one colour in it");
+  app
+    .add_option("--colors-from", checks.Reference,
+                "every point is a point of INPUT (same coordinates) with the same colour,\n"
+                "bit for bit")
+    ->type_name("INPUT");
+  app.add_flag("--original-ids", checks.OriginalIds,
+               "vtkOriginalPointIds names, for each point, the point of --colors-from's\n"
+               "file with its coordinates and colour");
+}
+
+/// The triangle and point counts; "" when right.
+std::string CheckCounts(const Checks& checks, long long points, long long triangles)
+{
+  if (checks.Triangles >= 0 && triangles != checks.Triangles)
+  {
+    return "expected " + std::to_string(checks.Triangles) + " triangles, found " +
+      std::to_string(triangles);
+  }
+  const std::vector<long long>& range = checks.TrianglesBetween;
+  if (range.size() == 2 && (triangles < range[0] || triangles > range[1]))
+  {
+    return "expected " + std::to_string(range[0]) + " to " + std::to_string(range[1]) +
+      " triangles, found " + std::to_string(triangles);
+  }
+  if (checks.Points >= 0 && points != checks.Points)
+  {
+    return "expected " + std::to_string(checks.Points) + " points, found " + std::to_string(points);
+  }
+  return "";
+}
+
+/// --colors: unsigned char RGB(A), one per point, not all the same; "" when so.
+std::string CheckColors(vtkDataArray* colors, long long points)
+{
+  if (!colors || !vtkUnsignedCharArray::SafeDownCast(colors) ||
+      (colors->GetNumberOfComponents() != 3 && colors->GetNumberOfComponents() != 4))
+  {
+    return "no unsigned char RGB(A) colour array as active scalars";
+  }
+  if (colors->GetNumberOfTuples() != points)
+  {
+    return "the colour array does not have one colour per point";
+  }
+  std::set<Colour> distinct;
+  for (vtkIdType i = 0; i < points && distinct.size() < 2; ++i)
+  {
+    distinct.insert(ColourOf(colors, i));
+  }
+  return distinct.size() < 2 ? "every point has the same colour: the colours were lost" : "";
+}
+
+/// --original-ids: point i of `mesh` is input point ids[i], with its coordinates and colour.
+std::string CheckOriginalId(vtkPolyData* mesh, vtkPolyData* input, vtkIdTypeArray* ids, vtkIdType i)
+{
+  const vtkIdType original = ids->GetValue(i);
+  if (original < 0 || original >= input->GetNumberOfPoints())
+  {
+    return "vtkOriginalPointIds out of range at point " + std::to_string(i);
+  }
+  double p[3], q[3];
+  mesh->GetPoint(i, p);
+  input->GetPoint(original, q);
+  if (q[0] != p[0] || q[1] != p[1] || q[2] != p[2] ||
+      ColourOf(input->GetPointData()->GetScalars(), original) !=
+        ColourOf(mesh->GetPointData()->GetScalars(), i))
+  {
+    return "vtkOriginalPointIds of point " + std::to_string(i) +
+      " names an input point with other coordinates or colour";
+  }
+  return "";
+}
+
+/// --colors-from (and --original-ids): every point and colour is the reference's; "" if so.
+std::string CheckAgainst(vtkPolyData* mesh, vtkPolyData* input, bool wantIds)
+{
+  vtkDataArray* colors = mesh->GetPointData()->GetScalars();
+  vtkDataArray* inputColors = input->GetPointData()->GetScalars();
+  if (!inputColors)
+  {
+    return "the reference mesh has no colours";
+  }
+  std::map<Key, vtkIdType> where;
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    where.emplace(Key{ p[0], p[1], p[2] }, i);
+  }
+  auto* ids = vtkIdTypeArray::SafeDownCast(mesh->GetPointData()->GetArray("vtkOriginalPointIds"));
+  if (wantIds && !ids)
+  {
+    return "no vtkOriginalPointIds array";
+  }
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    auto it = where.find(Key{ p[0], p[1], p[2] });
+    if (it == where.end())
+    {
+      return "output point " + std::to_string(i) + " is not an input point";
+    }
+    if (ColourOf(colors, i) != ColourOf(inputColors, it->second))
+    {
+      return "output point " + std::to_string(i) + " has another colour than input point " +
+        std::to_string(it->second);
+    }
+    const std::string wrong = ids ? CheckOriginalId(mesh, input, ids, i) : std::string();
+    if (!wrong.empty())
+    {
+      return wrong;
+    }
+  }
+  return "";
+}
+
+/// Every check asked for, in order; the exit status.
+int Check(const Checks& checks)
+{
+  auto mesh = Load(checks.File);
   if (!mesh)
   {
     return 1;
@@ -124,100 +217,44 @@ int main(int argc, char* argv[])
   std::cout << "points=" << points << " triangles=" << triangles
             << " colors=" << (colors && colors->GetName() ? colors->GetName() : "none") << "/"
             << (colors ? colors->GetNumberOfComponents() : 0) << std::endl;
-
-  if (wantTriangles >= 0 && triangles != wantTriangles)
+  std::string wrong = CheckCounts(checks, points, triangles);
+  if (wrong.empty() && (checks.Colors || !checks.Reference.empty()))
   {
-    return Failure("expected " + std::to_string(wantTriangles) + " triangles, found " +
-                   std::to_string(triangles));
+    wrong = CheckColors(colors, points);
   }
-  if (lo >= 0 && (triangles < lo || triangles > hi))
+  if (!wrong.empty())
   {
-    return Failure("expected " + std::to_string(lo) + " to " + std::to_string(hi) +
-                   " triangles, found " + std::to_string(triangles));
+    return Failure(wrong);
   }
-  if (wantPoints >= 0 && points != wantPoints)
+  if (checks.Reference.empty())
   {
-    return Failure("expected " + std::to_string(wantPoints) + " points, found " +
-                   std::to_string(points));
+    return 0;
   }
-  if (wantColors || !reference.empty())
+  auto input = Load(checks.Reference);
+  if (!input)
   {
-    if (!colors || !vtkUnsignedCharArray::SafeDownCast(colors) ||
-        (colors->GetNumberOfComponents() != 3 && colors->GetNumberOfComponents() != 4))
-    {
-      return Failure("no unsigned char RGB(A) colour array as active scalars");
-    }
-    if (colors->GetNumberOfTuples() != points)
-    {
-      return Failure("the colour array does not have one colour per point");
-    }
-    std::set<Colour> distinct;
-    for (vtkIdType i = 0; i < points && distinct.size() < 2; ++i)
-    {
-      distinct.insert(ColourOf(colors, i));
-    }
-    if (distinct.size() < 2)
-    {
-      return Failure("every point has the same colour: the colours were lost");
-    }
+    return 1;
   }
-  if (!reference.empty())
+  wrong = CheckAgainst(mesh, input, checks.OriginalIds);
+  if (!wrong.empty())
   {
-    auto input = Load(reference);
-    if (!input)
-    {
-      return 1;
-    }
-    vtkDataArray* inputColors = input->GetPointData()->GetScalars();
-    if (!inputColors)
-    {
-      return Failure("the reference mesh has no colours");
-    }
-    std::map<Key, vtkIdType> where;
-    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
-    {
-      double p[3];
-      input->GetPoint(i, p);
-      where.emplace(Key{ p[0], p[1], p[2] }, i);
-    }
-    vtkIdTypeArray* ids =
-      vtkIdTypeArray::SafeDownCast(mesh->GetPointData()->GetArray("vtkOriginalPointIds"));
-    if (wantIds && !ids)
-    {
-      return Failure("no vtkOriginalPointIds array");
-    }
-    for (vtkIdType i = 0; i < points; ++i)
-    {
-      double p[3];
-      mesh->GetPoint(i, p);
-      auto it = where.find(Key{ p[0], p[1], p[2] });
-      if (it == where.end())
-      {
-        return Failure("output point " + std::to_string(i) + " is not an input point");
-      }
-      if (ColourOf(colors, i) != ColourOf(inputColors, it->second))
-      {
-        return Failure("output point " + std::to_string(i) +
-                       " has another colour than input point " + std::to_string(it->second));
-      }
-      if (ids)
-      {
-        const vtkIdType original = ids->GetValue(i);
-        double q[3];
-        if (original < 0 || original >= input->GetNumberOfPoints())
-        {
-          return Failure("vtkOriginalPointIds out of range at point " + std::to_string(i));
-        }
-        input->GetPoint(original, q);
-        if (q[0] != p[0] || q[1] != p[1] || q[2] != p[2] ||
-            ColourOf(inputColors, original) != ColourOf(colors, i))
-        {
-          return Failure("vtkOriginalPointIds of point " + std::to_string(i) +
-                         " names an input point with other coordinates or colour");
-        }
-      }
-    }
-    std::cout << "all " << points << " points and colours found in " << reference << std::endl;
+    return Failure(wrong);
   }
+  std::cout << "all " << points << " points and colours found in " << checks.Reference << std::endl;
   return 0;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  CLI::App app("Reads a mesh file written by color-decimate and checks its counts and colours;\n"
+               "prints \"points=P triangles=T colors=NAME/COMPONENTS\" and exits non-zero on a\n"
+               "failed check.",
+               "ColorDecimationMeshCheck");
+  SetUpCommandLine(app, "Usage: ColorDecimationMeshCheck FILE [checks]");
+  Checks checks;
+  AddOptions(app, checks);
+  const int status = ParseCommandLine(app, argc, argv);
+  return status >= 0 ? status : Check(checks);
 }
