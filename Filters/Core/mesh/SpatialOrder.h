@@ -55,9 +55,9 @@ VTKCOLORDECIMATION_EXPORT void ComputeSpatialOrder(int32_t numVertices, const do
 /**
  * Move block i of `block` consecutive values to block to[i], for i in [0, count) (`to` is a
  * permutation of [0, count)), through a second array: independent moves, so the cache misses
- * of the scattered writes overlap (following the permutation's cycles in place is several
- * times slower), shared among `threads` threads. The caller frees what it can before, so
- * that the copy fits in what it freed.
+ * of the scattered writes overlap (following the permutation's cycles in place would make
+ * each miss wait for the one before), shared among `threads` threads. The caller frees what it can
+ * before, so that the copy fits in what it freed.
  */
 template <typename Vector>
 void Permute(Vector& values, int64_t count, const int32_t* to, int block = 1, int threads = 1)

@@ -1,7 +1,7 @@
 /**
  * @file ColorQuadric.h
  * @brief The colour quadric of Garland and Heckbert (1998), the metric the paper compares
- * against (paper eq. 10-12, SPEC.md "The comparison metric").
+ * against (paper eq. 10-12; docs/ALGORITHM.md, section 9).
  *
  * Each vertex is a point x = (x, y, z, r, g, b) of R^6. A triangle (v1, v2, v3) spans a plane
  * of R^6 with the orthonormal Gram-Schmidt vectors

@@ -2,9 +2,10 @@
  * @file ColorSpace.h
  * @brief The colour spaces in which the metrics measure colour: RGB as given, or CIELab.
  *
- * The decimation takes colours as RGB in [0,1] (SPEC.md, Frame). With ColorSpace::CIELab
- * every colour term (the visual importance and the collapse colour error of the half-edge
- * metric, the colour part of the colour quadric) is measured on CIELab coordinates instead:
+ * The decimation takes colours as RGB in [0,1] (docs/ALGORITHM.md, sections 2 and 8). With
+ * ColorSpace::CIELab every colour term (the visual importance and the collapse colour error of the
+ * half-edge metric, the colour part of the colour quadric) is measured on CIELab coordinates
+ * instead:
  * - the [0,1] input is taken as sRGB (IEC 61966-2-1): linearised with the sRGB transfer
  *   curve, taken to CIE XYZ with the sRGB primaries and the D65 white point, then to
  *   CIE 1976 L*a*b* relative to D65 (Xn = 0.95047, Yn = 1, Zn = 1.08883);

@@ -1,6 +1,6 @@
 /**
  * @file CollapseRules.h
- * @brief When a half-edge collapse v0 -> v1 is allowed (SPEC.md, "Order").
+ * @brief When a half-edge collapse v0 -> v1 is allowed (docs/ALGORITHM.md, section 5).
  *
  * Topology (the link condition, after pmp-library's is_collapse_legal):
  * - both vertices unlocked (manifold neighbourhood) and adjacent;

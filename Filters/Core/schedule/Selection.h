@@ -52,7 +52,7 @@ inline double OrderableKey(double key)
  * Sort candidates that come in increasing vertex order by (key, vertex), as std::sort with
  * Candidate's operator< would, using `scratch` for room. From a few hundred candidates on, a
  * stable radix sort on the keys' bits, a byte at a time (the bytes all candidates share
- * skipped), which keeps equal keys in vertex order: some three times faster than std::sort on a
+ * skipped), which keeps equal keys in vertex order: faster than std::sort on a
  * block's candidates. The keys must not be NaN (see OrderableKey).
  */
 inline void SortByKey(Candidate* begin, Candidate* end, Buffer<Candidate>& scratch)

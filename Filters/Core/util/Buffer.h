@@ -5,7 +5,7 @@
  *
  * A std::vector zeroes what it grows by, on the calling thread: for the arrays of a mesh of a
  * million triangles, that is tens of megabytes written twice, and every page of them faulted in
- * by one thread (about 1.3 us per 4 KiB page here). A Buffer grows without writing, so the
+ * by one thread. A Buffer grows without writing, so the
  * first write, usually a ParallelFor, also faults the pages in, on all its threads.
  *
  * Only for trivially copyable element types; every element must be written before it is read
