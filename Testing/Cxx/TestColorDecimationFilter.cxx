@@ -42,7 +42,7 @@ void CheckInvariants(vtkPolyData* mesh, const Expectation& expected, const std::
     std::cout << "  " << label.str() << ": " << input << " -> " << output << " triangles, "
               << r.Collapses << " collapses, actual " << r.ActualReduction << std::endl;
     CD_CHECK_MSG(r.Errors == 0 && r.Warnings == 0,
-                 label.str() << ": unexpected messages: " << r.ErrorText << r.WarningText);
+                 label.str() << ": unexpected messages: " << r.ErrorText() << r.WarningText());
     CD_CHECK_NEAR(r.ActualReduction, 1.0 - double(output) / double(input), 1e-12);
     CD_CHECK_MSG(std::abs(r.ActualReduction - reduction) <= 0.01,
                  label.str() << ": actual reduction " << r.ActualReduction);

@@ -9,6 +9,7 @@
  */
 #include "ColorDecimationInvariants.h"
 #include "ColorDecimationMeshes.h"
+#include "ColorDecimationTestUtilities.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -44,13 +45,21 @@
 
 namespace
 {
-using colordecimation::hostile::CheckInvariants;
-using colordecimation::hostile::EventCounter;
-using colordecimation::hostile::IsOrientedSoup;
-using colordecimation::hostile::OriginalTriangles;
-using colordecimation::hostile::TrianglesOf;
 using colordecimation::meshes::Pattern;
-using Triangles = std::vector<std::array<long long, 3>>;
+using colordecimation::testing::IsOrientedSoup;
+using EventCounter = colordecimation::testing::EventRecorder;
+using Triangles = std::vector<colordecimation::testing::Tri>;
+
+Triangles TrianglesOf(vtkPolyData* mesh)
+{
+  return colordecimation::testing::GetTriangles(mesh);
+}
+
+Triangles OriginalTriangles(vtkPolyData* output)
+{
+  return colordecimation::testing::CanonicalSorted(
+    colordecimation::testing::GetOriginalTriangles(output));
+}
 
 int Failures = 0;
 
@@ -93,7 +102,7 @@ Run Decimate(vtkPolyData* input, double targetReduction,
   Run run;
   run.Filter = vtkSmartPointer<vtkColorHalfEdgeDecimation>::New();
   run.Events.reset(new EventCounter);
-  run.Events->Observe(run.Filter);
+  run.Events->Watch(run.Filter);
   run.Filter->SetInputData(input);
   run.Filter->SetTargetReduction(targetReduction);
   if (configure)
@@ -105,8 +114,8 @@ Run Decimate(vtkPolyData* input, double targetReduction,
   run.Filter->Update();
   run.Output = run.Filter->GetOutput();
   run.InputTriangles = static_cast<vtkIdType>(TrianglesOf(input).size());
-  for (const std::string& broken :
-       CheckInvariants(input, run.Filter, run.Output, run.Events->Errors > 0))
+  for (const std::string& broken : colordecimation::testing::CheckInvariants(
+         input, run.Filter, run.Output, run.Events->Errors > 0))
   {
     Check(false, "invariant: " + broken);
   }

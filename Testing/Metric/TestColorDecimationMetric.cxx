@@ -722,12 +722,6 @@ void TestCIELabMetric()
 //------------------------------------------------------------------------------
 // Decimations.
 
-/// The output triangles in output point ids.
-std::vector<Tri> Triangles(vtkPolyData* mesh)
-{
-  return GetTriangles(mesh);
-}
-
 vtkIdTypeArray* OriginalIdArray(vtkPolyData* output)
 {
   return vtkIdTypeArray::SafeDownCast(output->GetPointData()->GetArray("vtkOriginalPointIds"));
@@ -742,13 +736,13 @@ long long CheckPlacedDecimation(vtkPolyData* input, const RunResult& r, double r
   const vtkIdType in = input->GetNumberOfPolys();
   const vtkIdType out = r.Output->GetNumberOfPolys();
   CD_CHECK_MSG(r.Errors == 0 && r.Warnings == 0,
-               label << ": unexpected messages: " << r.ErrorText << r.WarningText);
+               label << ": unexpected messages: " << r.ErrorText() << r.WarningText());
   CD_CHECK_MSG(std::abs(r.ActualReduction - reduction) <= 0.01,
                label << ": actual reduction " << r.ActualReduction);
   CD_CHECK_NEAR(r.ActualReduction, 1.0 - double(out) / double(in), 1e-12);
   CD_CHECK_MSG(r.Collapses == input->GetNumberOfPoints() - r.Output->GetNumberOfPoints(),
                label << ": " << r.Collapses << " collapses");
-  const Topology t = AnalyseTopology(Triangles(r.Output));
+  const Topology t = AnalyseTopology(GetTriangles(r.Output));
   CD_CHECK_MSG(t.NonManifoldEdges == 0 && t.NonManifoldVertices == 0 && t.MisorientedEdges == 0 &&
                  t.RepeatedIdTriangles == 0,
                label << ": " << t);
@@ -827,7 +821,7 @@ void CheckHalfEdgeInvariants(vtkPolyData* mesh, const Expectation& expected,
     std::cout << "  " << label.str() << ": " << mesh->GetNumberOfPolys() << " -> "
               << r.Output->GetNumberOfPolys() << " triangles" << std::endl;
     CD_CHECK_MSG(r.Errors == 0 && r.Warnings == 0,
-                 label.str() << ": unexpected messages: " << r.ErrorText << r.WarningText);
+                 label.str() << ": unexpected messages: " << r.ErrorText() << r.WarningText());
     CD_CHECK_MSG(std::abs(r.ActualReduction - reduction) <= 0.01,
                  label.str() << ": actual reduction " << r.ActualReduction);
     CD_CHECK_MSG(r.Collapses == mesh->GetNumberOfPoints() - r.Output->GetNumberOfPoints(),
