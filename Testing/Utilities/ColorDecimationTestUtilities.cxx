@@ -336,6 +336,20 @@ bool IsOrientedSoup(const std::vector<Tri>& triangles)
   return true;
 }
 
+std::map<std::pair<vtkIdType, vtkIdType>, int> EdgeUses(const std::vector<Tri>& tris)
+{
+  std::map<std::pair<vtkIdType, vtkIdType>, int> uses;
+  for (const Tri& t : tris)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType a = t[k], b = t[(k + 1) % 3];
+      ++uses[{ std::min(a, b), std::max(a, b) }];
+    }
+  }
+  return uses;
+}
+
 std::set<std::pair<vtkIdType, vtkIdType>> BoundaryEdges(const std::vector<Tri>& tris)
 {
   std::map<std::pair<vtkIdType, vtkIdType>, int> directed;

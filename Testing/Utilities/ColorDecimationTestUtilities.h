@@ -22,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -214,6 +215,9 @@ Topology AnalyseTopology(const std::vector<Tri>& tris);
  * three points (in any order), and none repeats a point.
  */
 bool IsOrientedSoup(const std::vector<Tri>& triangles);
+
+/// The number of triangles on each edge (a, b), a < b, of a triangle set.
+std::map<std::pair<vtkIdType, vtkIdType>, int> EdgeUses(const std::vector<Tri>& tris);
 
 /// Directed boundary edges (a, b) of a triangle set.
 std::set<std::pair<vtkIdType, vtkIdType>> BoundaryEdges(const std::vector<Tri>& tris);
