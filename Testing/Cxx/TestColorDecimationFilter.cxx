@@ -70,50 +70,50 @@ Expectation WithoutFlipCheck(Expectation e)
   return e;
 }
 
-void TestInvariantsIcosphereSharp()
+CD_TEST_CASE(InvariantsIcosphereSharp)
 {
   CheckInvariants(meshes::Icosphere(5, Pattern::SharpRegions), ClosedSurface(2, SphereNormal),
                   "Icosphere(5)");
 }
 
-void TestInvariantsUVSphereSmooth()
+CD_TEST_CASE(InvariantsUVSphereSmooth)
 {
   CheckInvariants(meshes::UVSphere(100, Pattern::SmoothGradient), ClosedSurface(2, SphereNormal),
                   "UVSphere(100)");
 }
 
-void TestInvariantsTorusSharp()
+CD_TEST_CASE(InvariantsTorusSharp)
 {
   // Float points: their type and bits must be kept too.
   auto torus = WithFloatPoints(meshes::Torus(150, 60, Pattern::SharpRegions));
   CheckInvariants(torus, ClosedSurface(0, TorusNormal), "Torus(150,60) float");
 }
 
-void TestInvariantsTorusFineDetail()
+CD_TEST_CASE(InvariantsTorusFineDetail)
 {
   CheckInvariants(meshes::Torus(120, 48, Pattern::FineDetail), ClosedSurface(0, TorusNormal),
                   "Torus(120,48)");
 }
 
-void TestInvariantsGridSmooth()
+CD_TEST_CASE(InvariantsGridSmooth)
 {
   CheckInvariants(meshes::Grid(80, 60, Pattern::SmoothGradient), OpenSheet(), "Grid(80,60)");
 }
 
-void TestInvariantsGridSharp()
+CD_TEST_CASE(InvariantsGridSharp)
 {
   CheckInvariants(meshes::Grid(90, 70, Pattern::SharpRegions), OpenSheet(), "Grid(90,70)");
 }
 
 /// Meshes of more than Decimator::LargeMeshVertices points are decimated renumbered in a
 /// spatial order and with prefetching: the same invariants, in the input's ids.
-void TestInvariantsLargeTorus()
+CD_TEST_CASE(InvariantsLargeTorus)
 {
   CheckInvariants(meshes::Torus(400, 180, Pattern::FineDetail), ClosedSurface(0, TorusNormal),
                   "Torus(400,180)");
 }
 
-void TestInvariantsLargeGrid()
+CD_TEST_CASE(InvariantsLargeGrid)
 {
   CheckInvariants(meshes::Grid(290, 260, Pattern::SharpRegions), OpenSheet(), "Grid(290,260)");
 }
@@ -125,20 +125,20 @@ void Batched(vtkColorHalfEdgeDecimation* f)
   f->SetNumberOfThreads(2);
 }
 
-void TestInvariantsBatchedTorus()
+CD_TEST_CASE(InvariantsBatchedTorus)
 {
   CheckInvariants(meshes::Torus(150, 60, Pattern::SharpRegions), ClosedSurface(0, TorusNormal),
                   "Torus(150,60) batched", Batched);
 }
 
-void TestInvariantsBatchedSphere()
+CD_TEST_CASE(InvariantsBatchedSphere)
 {
   CheckInvariants(meshes::UVSphere(100, Pattern::FineDetail), ClosedSurface(2, SphereNormal),
                   "UVSphere(100) batched", Batched);
 }
 
 /// Large enough to be renumbered, and to re-cost on both threads.
-void TestInvariantsBatchedLargeGrid()
+CD_TEST_CASE(InvariantsBatchedLargeGrid)
 {
   CheckInvariants(meshes::Grid(290, 260, Pattern::SharpRegions), OpenSheet(),
                   "Grid(290,260) batched", Batched);
@@ -198,7 +198,7 @@ vtkSmartPointer<vtkPolyData> Jittered(vtkSmartPointer<vtkPolyData> mesh, double 
   return mesh;
 }
 
-void TestScaleTranslationInvariance()
+CD_TEST_CASE(ScaleTranslationInvariance)
 {
   auto sphere = Jittered(meshes::Icosphere(4, Pattern::SharpRegions), 5e-4);
   auto torus = Jittered(meshes::Torus(60, 24, Pattern::SmoothGradient), 5e-4);
@@ -212,7 +212,7 @@ void TestScaleTranslationInvariance()
 }
 
 //------------------------------------------------------------------------------
-void TestTargetReductionZero()
+CD_TEST_CASE(TargetReductionZero)
 {
   for (auto mesh : { meshes::Icosphere(3, Pattern::SharpRegions),
                      meshes::Grid(30, 20, Pattern::SmoothGradient) })
@@ -233,7 +233,7 @@ void TestTargetReductionZero()
   }
 }
 
-void TestTargetReductionOne()
+CD_TEST_CASE(TargetReductionOne)
 {
   struct Case
   {
@@ -265,7 +265,7 @@ void TestTargetReductionOne()
 }
 
 //------------------------------------------------------------------------------
-void TestPreserveBoundary()
+CD_TEST_CASE(PreserveBoundary)
 {
   auto grid = meshes::Grid(60, 40, Pattern::SharpRegions);
   Decorate(grid);
@@ -365,7 +365,7 @@ void CheckProgress(int schedule)
   CD_CHECK(!log.Values.empty() && log.Values.back() == 1.0);
 }
 
-void TestProgress()
+CD_TEST_CASE(Progress)
 {
   for (int schedule : { vtkColorHalfEdgeDecimation::Greedy, vtkColorHalfEdgeDecimation::Batched })
   {
@@ -403,7 +403,7 @@ void CheckAbort(int schedule)
   }
 }
 
-void TestAbort()
+CD_TEST_CASE(Abort)
 {
   for (int schedule : { vtkColorHalfEdgeDecimation::Greedy, vtkColorHalfEdgeDecimation::Batched })
   {
@@ -412,7 +412,7 @@ void TestAbort()
 }
 
 //------------------------------------------------------------------------------
-void TestPrintSelf()
+CD_TEST_CASE(PrintSelf)
 {
   vtkNew<vtkColorHalfEdgeDecimation> filter;
   filter->SetTargetReduction(0.25);
@@ -450,7 +450,7 @@ void TestPrintSelf()
   CD_CHECK(after.str().find("ErrorMetric: HalfEdgeColor") != std::string::npos);
 }
 
-void TestProperties()
+CD_TEST_CASE(Properties)
 {
   vtkNew<vtkColorHalfEdgeDecimation> f;
   CD_CHECK(f->GetTargetReduction() == 0.9);
@@ -555,24 +555,5 @@ void TestProperties()
 
 int main(int argc, char* argv[])
 {
-  return RunTestCases(argc, argv,
-                      { { "InvariantsIcosphereSharp", TestInvariantsIcosphereSharp },
-                        { "InvariantsUVSphereSmooth", TestInvariantsUVSphereSmooth },
-                        { "InvariantsTorusSharp", TestInvariantsTorusSharp },
-                        { "InvariantsTorusFineDetail", TestInvariantsTorusFineDetail },
-                        { "InvariantsGridSmooth", TestInvariantsGridSmooth },
-                        { "InvariantsGridSharp", TestInvariantsGridSharp },
-                        { "InvariantsLargeTorus", TestInvariantsLargeTorus },
-                        { "InvariantsLargeGrid", TestInvariantsLargeGrid },
-                        { "InvariantsBatchedTorus", TestInvariantsBatchedTorus },
-                        { "InvariantsBatchedSphere", TestInvariantsBatchedSphere },
-                        { "InvariantsBatchedLargeGrid", TestInvariantsBatchedLargeGrid },
-                        { "ScaleTranslationInvariance", TestScaleTranslationInvariance },
-                        { "TargetReductionZero", TestTargetReductionZero },
-                        { "TargetReductionOne", TestTargetReductionOne },
-                        { "PreserveBoundary", TestPreserveBoundary },
-                        { "Progress", TestProgress },
-                        { "Abort", TestAbort },
-                        { "PrintSelf", TestPrintSelf },
-                        { "Properties", TestProperties } });
+  return RunTestCases(argc, argv);
 }

@@ -84,7 +84,7 @@ double MixedColorArea(vtkPolyData* output)
 //------------------------------------------------------------------------------
 // Colour arrays.
 
-void TestColorMetricKeepsBorders()
+CD_TEST_CASE(ColorMetricKeepsBorders)
 {
   // Sharp colour regions: the colour metric keeps the borders finely sampled, so far less
   // of the surface is covered by triangles that blend two colours than with geometry alone.
@@ -114,7 +114,7 @@ void TestColorMetricKeepsBorders()
   }
 }
 
-void TestColorUnsignedCharRGBA()
+CD_TEST_CASE(ColorUnsignedCharRGBA)
 {
   auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
   Decorate(mesh);
@@ -145,7 +145,7 @@ void TestColorUnsignedCharRGBA()
            r.Output->GetPointData()->GetScalars()->GetNumberOfComponents() == 4);
 }
 
-void TestColorFloatAndDouble()
+CD_TEST_CASE(ColorFloatAndDouble)
 {
   auto mesh = meshes::Torus(80, 30, Pattern::SharpRegions);
   const RunResult reference = Decimate(mesh, 0.9);
@@ -183,7 +183,7 @@ void TestColorFloatAndDouble()
   CD_CHECK(CheckPointDataCopied(asDouble, rd.Output) == 0);
 }
 
-void TestColorFloatRange()
+CD_TEST_CASE(ColorFloatRange)
 {
   // Colours quantised to multiples of 1/8 (exact in float), with black and white present.
   // As float in [0,1] they are used as they are; multiplied by 1000 (range 0..1000) they
@@ -236,7 +236,7 @@ void TestColorFloatRange()
   CD_CHECK(Result(rs) == Result(ru));
 }
 
-void TestColorOneComponent()
+CD_TEST_CASE(ColorOneComponent)
 {
   auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
   const vtkIdType n = mesh->GetNumberOfPoints();
@@ -278,7 +278,7 @@ void TestColorOneComponent()
   CD_CHECK(CheckPointDataCopied(grey, r1.Output) == 0);
 }
 
-void TestColorArrayByName()
+CD_TEST_CASE(ColorArrayByName)
 {
   // The active scalars are one flat colour; the sharp colours are in "Paint", a point array
   // that is not the scalars, selected by name.
@@ -313,7 +313,7 @@ void TestColorArrayByName()
   CD_CHECK(std::abs(missing.ActualReduction - 0.9) <= 0.01);
 }
 
-void TestColorNaN()
+CD_TEST_CASE(ColorNaN)
 {
   // NaN colour values are measured as 0 (warning) and carried through bit-exactly.
   auto mesh = meshes::Icosphere(4, Pattern::SmoothGradient);
@@ -338,7 +338,7 @@ void TestColorNaN()
 //------------------------------------------------------------------------------
 // Bad or unusual input.
 
-void TestEmptyInput()
+CD_TEST_CASE(EmptyInput)
 {
   vtkNew<vtkPolyData> empty;
   RunResult r = Decimate(empty, 0.9);
@@ -368,7 +368,7 @@ void TestEmptyInput()
   CD_CHECK(r.Output->GetNumberOfCells() == 0);
 }
 
-void TestNoColorArray()
+CD_TEST_CASE(NoColorArray)
 {
   auto mesh = meshes::Icosphere(5, Pattern::SharpRegions);
   mesh->GetPointData()->Initialize();
@@ -383,7 +383,7 @@ void TestNoColorArray()
   CD_CHECK(std::abs(g.ActualReduction - 0.9) <= 0.01);
 }
 
-void TestQuads()
+CD_TEST_CASE(Quads)
 {
   vtkNew<vtkPlaneSource> plane;
   plane->SetResolution(60, 40);
@@ -418,7 +418,7 @@ void TestQuads()
   CheckDecimatedMesh(quads, r.Output, Expectation{ false, 1, 1, UpNormal, true }, "quads, 0.9");
 }
 
-void TestTriangleStrips()
+CD_TEST_CASE(TriangleStrips)
 {
   auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
   vtkNew<vtkStripper> stripper;
@@ -441,7 +441,7 @@ void TestTriangleStrips()
   CheckDecimatedMesh(strips, r.Output, Expectation{ true, 2, 0, nullptr, false }, "strips");
 }
 
-void TestVerticesAndLines()
+CD_TEST_CASE(VerticesAndLines)
 {
   auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
   vtkNew<vtkCellArray> verts;
@@ -470,7 +470,7 @@ void TestVerticesAndLines()
   CheckDecimatedMesh(mesh, r.Output, Expectation{ true, 2, 0, nullptr, true }, "verts+lines");
 }
 
-void TestNonManifoldEdge()
+CD_TEST_CASE(NonManifoldEdge)
 {
   // A fin: a third triangle on an interior edge (a, c) of a grid.
   const int nx = 40, ny = 30;
@@ -510,7 +510,7 @@ void TestNonManifoldEdge()
   CD_CHECK(CountDegenerate(r.Output) == 0);
 }
 
-void TestBowTie()
+CD_TEST_CASE(BowTie)
 {
   // Two grids that touch at one corner: a bow-tie vertex.
   const int n = 20;
@@ -572,7 +572,7 @@ void CheckFailsEmpty(const RunResult& r, const char* what)
   CD_CHECK(r.Collapses == 0);
 }
 
-void TestNaNPoint()
+CD_TEST_CASE(NaNPoint)
 {
   for (double bad :
        { std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })
@@ -583,7 +583,7 @@ void TestNaNPoint()
   }
 }
 
-void TestWrongTupleCount()
+CD_TEST_CASE(WrongTupleCount)
 {
   auto mesh = meshes::Icosphere(3, Pattern::SharpRegions);
   vtkNew<vtkUnsignedCharArray> shortArray;
@@ -609,7 +609,7 @@ void TestWrongTupleCount()
   CheckFailsEmpty(Decimate(other, 0.9), "long colour array");
 }
 
-void TestCellDataColor()
+CD_TEST_CASE(CellDataColor)
 {
   auto mesh = meshes::Icosphere(3, Pattern::SharpRegions);
   vtkNew<vtkUnsignedCharArray> faces;
@@ -626,7 +626,7 @@ void TestCellDataColor()
                   "cell colour array");
 }
 
-void TestPointIdsOutOfRange()
+CD_TEST_CASE(PointIdsOutOfRange)
 {
   auto mesh = meshes::Icosphere(3, Pattern::SharpRegions);
   const vtkIdType bad[3] = { 0, 1, mesh->GetNumberOfPoints() };
@@ -638,23 +638,5 @@ void TestPointIdsOutOfRange()
 
 int main(int argc, char* argv[])
 {
-  return RunTestCases(argc, argv,
-                      { { "ColorMetricKeepsBorders", TestColorMetricKeepsBorders },
-                        { "ColorUnsignedCharRGBA", TestColorUnsignedCharRGBA },
-                        { "ColorFloatAndDouble", TestColorFloatAndDouble },
-                        { "ColorFloatRange", TestColorFloatRange },
-                        { "ColorOneComponent", TestColorOneComponent },
-                        { "ColorArrayByName", TestColorArrayByName },
-                        { "ColorNaN", TestColorNaN },
-                        { "EmptyInput", TestEmptyInput },
-                        { "NoColorArray", TestNoColorArray },
-                        { "Quads", TestQuads },
-                        { "TriangleStrips", TestTriangleStrips },
-                        { "VerticesAndLines", TestVerticesAndLines },
-                        { "NonManifoldEdge", TestNonManifoldEdge },
-                        { "BowTie", TestBowTie },
-                        { "NaNPoint", TestNaNPoint },
-                        { "WrongTupleCount", TestWrongTupleCount },
-                        { "CellDataColor", TestCellDataColor },
-                        { "PointIdsOutOfRange", TestPointIdsOutOfRange } });
+  return RunTestCases(argc, argv);
 }

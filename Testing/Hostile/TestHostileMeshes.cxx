@@ -213,7 +213,7 @@ double LargestCornerSine(vtkPolyData* mesh, const Tri& t)
 // Topology.
 
 /// An edge shared by three triangles (a fin on a grid's interior edge).
-void NonManifoldEdge()
+CD_TEST_CASE(NonManifoldEdge)
 {
   // The small grid, and one large enough to be decimated renumbered (Decimator.h).
   for (int size : { 30, 300 })
@@ -264,7 +264,7 @@ void NonManifoldEdge()
 }
 
 /// Two grids that share one corner point: a bow-tie vertex.
-void NonManifoldVertex()
+CD_TEST_CASE(NonManifoldVertex)
 {
   auto first = colordecimation::meshes::Grid(20, 20, Pattern::SmoothGradient);
   auto points = PointsOf(first);
@@ -321,7 +321,7 @@ void NonManifoldVertex()
 }
 
 /// The same triangle twice (same orientation, and once reversed) inside a grid.
-void DuplicateTriangles()
+CD_TEST_CASE(DuplicateTriangles)
 {
   auto grid = colordecimation::meshes::Grid(20, 20, Pattern::FineDetail);
   Triangles triangles = GetTriangles(grid);
@@ -354,7 +354,7 @@ void DuplicateTriangles()
 }
 
 /// A triangle and its reversed copy alone: a closed two-faced "pillow".
-void DoubleSidedTriangle()
+CD_TEST_CASE(DoubleSidedTriangle)
 {
   auto mesh = Make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 }, { 0, 2, 1 } });
   colordecimation::meshes::ApplyPattern(mesh, Pattern::SmoothGradient);
@@ -367,7 +367,7 @@ void DoubleSidedTriangle()
 }
 
 /// Every triangle with its own three points (a triangle soup): nothing can collapse.
-void TriangleSoup()
+CD_TEST_CASE(TriangleSoup)
 {
   auto grid = colordecimation::meshes::Grid(10, 10, Pattern::SharpRegions);
   const auto gridPoints = PointsOf(grid);
@@ -392,7 +392,7 @@ void TriangleSoup()
 }
 
 /// Coincident duplicates of every point, unused: dropped, and the result does not change.
-void DuplicatePoints()
+CD_TEST_CASE(DuplicatePoints)
 {
   auto grid = colordecimation::meshes::Grid(30, 30, Pattern::SharpRegions);
   auto points = PointsOf(grid);
@@ -414,7 +414,7 @@ void DuplicatePoints()
 
 /// A flat grid whose second row of points lies on the first (zero-length edges, zero-area
 /// triangles) and whose row 10 lies on row 9's line (collinear triangles).
-void ZeroAreaTriangles()
+CD_TEST_CASE(ZeroAreaTriangles)
 {
   auto grid = MakeFlatGrid(20, Pattern::SharpRegions);
   auto points = PointsOf(grid);
@@ -452,7 +452,7 @@ void ZeroAreaTriangles()
 }
 
 /// Points used by no triangle: dropped from the output.
-void IsolatedPoints()
+CD_TEST_CASE(IsolatedPoints)
 {
   auto grid = colordecimation::meshes::Torus(40, 20, Pattern::SmoothGradient);
   auto points = PointsOf(grid);
@@ -484,7 +484,7 @@ void IsolatedPoints()
  * by MaximumNormalAngle, 90 degrees, so output triangles may stand steeply, see
  * docs/RELIABILITY.md).
  */
-void MixedOrientation()
+CD_TEST_CASE(MixedOrientation)
 {
   auto grid = colordecimation::meshes::Grid(30, 30, Pattern::SmoothGradient);
   const auto points = PointsOf(grid);
@@ -570,7 +570,7 @@ void MixedOrientation()
  * normal), at 50 % and 90 % reduction, with both metrics and the default MaximumNormalAngle.
  * Triangles standing at about 90 degrees (slivers) are counted and printed, not failed.
  */
-void NoFoldOver()
+CD_TEST_CASE(NoFoldOver)
 {
   struct Surface
   {
@@ -626,7 +626,7 @@ void NoFoldOver()
 }
 
 /// A flat grid: every quadric is singular (all Q = 0); colour alone orders the collapses.
-void FlatGrid()
+CD_TEST_CASE(FlatGrid)
 {
   for (Pattern pattern : { Pattern::SharpRegions, Pattern::Constant })
   {
@@ -673,7 +673,7 @@ void FlatGrid()
 }
 
 /// One triangle: nothing to collapse.
-void SingleTriangle()
+CD_TEST_CASE(SingleTriangle)
 {
   auto mesh = Make({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 } });
   colordecimation::meshes::ApplyPattern(mesh, Pattern::SharpRegions);
@@ -703,12 +703,12 @@ void Scale(double scale)
   }
 }
 
-void LargeScale()
+CD_TEST_CASE(LargeScale)
 {
   Scale(1e7);
 }
 
-void SmallScale()
+CD_TEST_CASE(SmallScale)
 {
   Scale(1e-7);
 }
@@ -826,7 +826,7 @@ void ColorType(int type)
 }
 
 /// NaN and infinite colour values: a warning; measured as 0, carried through unchanged.
-void NaNColors()
+CD_TEST_CASE(NaNColors)
 {
   for (int type : { VTK_FLOAT, VTK_DOUBLE })
   {
@@ -866,7 +866,7 @@ void NaNColors()
 }
 
 /// Colour array of the wrong length, or as cell data: errors, empty output.
-void BadColorArrays()
+CD_TEST_CASE(BadColorArrays)
 {
   auto mesh = ColorMesh();
   auto shortColors = vtkSmartPointer<vtkPolyData>::New();
@@ -905,7 +905,7 @@ void BadColorArrays()
  * look at the colour): left out of the output, with one warning naming them; the rest is
  * decimated as usual. (Before 76cd09e they were copied past their end.)
  */
-void ShortPointArray()
+CD_TEST_CASE(ShortPointArray)
 {
   auto mesh = ColorMesh();
   mesh->GetPointData()->GetScalars()->SetNumberOfTuples(mesh->GetNumberOfPoints() / 2);
@@ -936,7 +936,7 @@ void ShortPointArray()
 // Target reduction and input validation.
 
 /// TargetReduction 0: the output is the input (its triangles, on the points they use).
-void TargetReductionZero()
+CD_TEST_CASE(TargetReductionZero)
 {
   auto mesh = colordecimation::meshes::Torus(40, 20, Pattern::FineDetail);
   RunResult run = Run(mesh, 0.0);
@@ -959,7 +959,7 @@ void TargetReductionZero()
 
 /// TargetReduction 1: as far as the rules allow; closed surfaces stay closed, of the same
 /// Euler characteristic; an open grid keeps one boundary loop.
-void TargetReductionOne()
+CD_TEST_CASE(TargetReductionOne)
 {
   struct Case
   {
@@ -994,7 +994,7 @@ void TargetReductionOne()
 }
 
 /// Empty input, points without cells, only vertices and lines: empty output.
-void EmptyAndNoSurface()
+CD_TEST_CASE(EmptyAndNoSurface)
 {
   vtkNew<vtkPolyData> empty;
   RunResult run = Run(empty, 0.9);
@@ -1024,7 +1024,7 @@ void EmptyAndNoSurface()
 }
 
 /// Quads and strips: triangulated (with a warning), then decimated.
-void PolygonsAndStrips()
+CD_TEST_CASE(PolygonsAndStrips)
 {
   auto grid = colordecimation::meshes::Grid(30, 30, Pattern::SharpRegions);
   vtkNew<vtkCellArray> quads;
@@ -1066,7 +1066,7 @@ void PolygonsAndStrips()
 }
 
 /// Non-finite coordinates (even of an unused point) and point ids out of range: errors.
-void InvalidInput()
+CD_TEST_CASE(InvalidInput)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
@@ -1098,7 +1098,7 @@ void InvalidInput()
 }
 
 /// An input array already named vtkOriginalPointIds: replaced, with a warning.
-void ExistingOriginalIds()
+CD_TEST_CASE(ExistingOriginalIds)
 {
   auto mesh = ColorMesh();
   vtkNew<vtkIdTypeArray> stale;
@@ -1119,7 +1119,7 @@ void ExistingOriginalIds()
  * every colour type keeps its type and width, and moved colours stay inside the domain of the
  * array's mapping to [0,1].
  */
-void OtherMetrics()
+CD_TEST_CASE(OtherMetrics)
 {
   struct Setting
   {
@@ -1230,7 +1230,7 @@ void OtherMetrics()
 }
 
 /// Out-of-range and extreme property values are clamped or survive without harm.
-void ExtremeProperties()
+CD_TEST_CASE(ExtremeProperties)
 {
   auto mesh = colordecimation::meshes::Icosphere(3, Pattern::FineDetail);
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -1272,7 +1272,7 @@ void ExtremeProperties()
  * and an empty output. Also ColorWeight NaN with the ColorQuadric metric. (Infinite values
  * are clamped by the setters: see ExtremeProperties.)
  */
-void NaNProperties()
+CD_TEST_CASE(NaNProperties)
 {
   auto mesh = colordecimation::meshes::Icosphere(3, Pattern::FineDetail);
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -1296,67 +1296,67 @@ void NaNProperties()
   }
 }
 
-void ColorType_char()
+CD_TEST_CASE(ColorType_char)
 {
   ColorType(VTK_CHAR);
 }
 
-void ColorType_signed_char()
+CD_TEST_CASE(ColorType_signed_char)
 {
   ColorType(VTK_SIGNED_CHAR);
 }
 
-void ColorType_unsigned_char()
+CD_TEST_CASE(ColorType_unsigned_char)
 {
   ColorType(VTK_UNSIGNED_CHAR);
 }
 
-void ColorType_short()
+CD_TEST_CASE(ColorType_short)
 {
   ColorType(VTK_SHORT);
 }
 
-void ColorType_unsigned_short()
+CD_TEST_CASE(ColorType_unsigned_short)
 {
   ColorType(VTK_UNSIGNED_SHORT);
 }
 
-void ColorType_int()
+CD_TEST_CASE(ColorType_int)
 {
   ColorType(VTK_INT);
 }
 
-void ColorType_unsigned_int()
+CD_TEST_CASE(ColorType_unsigned_int)
 {
   ColorType(VTK_UNSIGNED_INT);
 }
 
-void ColorType_long()
+CD_TEST_CASE(ColorType_long)
 {
   ColorType(VTK_LONG);
 }
 
-void ColorType_unsigned_long()
+CD_TEST_CASE(ColorType_unsigned_long)
 {
   ColorType(VTK_UNSIGNED_LONG);
 }
 
-void ColorType_long_long()
+CD_TEST_CASE(ColorType_long_long)
 {
   ColorType(VTK_LONG_LONG);
 }
 
-void ColorType_unsigned_long_long()
+CD_TEST_CASE(ColorType_unsigned_long_long)
 {
   ColorType(VTK_UNSIGNED_LONG_LONG);
 }
 
-void ColorType_float()
+CD_TEST_CASE(ColorType_float)
 {
   ColorType(VTK_FLOAT);
 }
 
-void ColorType_double()
+CD_TEST_CASE(ColorType_double)
 {
   ColorType(VTK_DOUBLE);
 }
@@ -1365,44 +1365,5 @@ void ColorType_double()
 
 int main(int argc, char* argv[])
 {
-  return RunTestCases(argc, argv,
-                      { { "NonManifoldEdge", NonManifoldEdge },
-                        { "NonManifoldVertex", NonManifoldVertex },
-                        { "DuplicateTriangles", DuplicateTriangles },
-                        { "DoubleSidedTriangle", DoubleSidedTriangle },
-                        { "TriangleSoup", TriangleSoup },
-                        { "DuplicatePoints", DuplicatePoints },
-                        { "ZeroAreaTriangles", ZeroAreaTriangles },
-                        { "IsolatedPoints", IsolatedPoints },
-                        { "MixedOrientation", MixedOrientation },
-                        { "FlatGrid", FlatGrid },
-                        { "NoFoldOver", NoFoldOver },
-                        { "SingleTriangle", SingleTriangle },
-                        { "LargeScale", LargeScale },
-                        { "SmallScale", SmallScale },
-                        { "NaNColors", NaNColors },
-                        { "BadColorArrays", BadColorArrays },
-                        { "ShortPointArray", ShortPointArray },
-                        { "TargetReductionZero", TargetReductionZero },
-                        { "TargetReductionOne", TargetReductionOne },
-                        { "EmptyAndNoSurface", EmptyAndNoSurface },
-                        { "PolygonsAndStrips", PolygonsAndStrips },
-                        { "InvalidInput", InvalidInput },
-                        { "ExistingOriginalIds", ExistingOriginalIds },
-                        { "ExtremeProperties", ExtremeProperties },
-                        { "NaNProperties", NaNProperties },
-                        { "OtherMetrics", OtherMetrics },
-                        { "ColorType_char", ColorType_char },
-                        { "ColorType_signed_char", ColorType_signed_char },
-                        { "ColorType_unsigned_char", ColorType_unsigned_char },
-                        { "ColorType_short", ColorType_short },
-                        { "ColorType_unsigned_short", ColorType_unsigned_short },
-                        { "ColorType_int", ColorType_int },
-                        { "ColorType_unsigned_int", ColorType_unsigned_int },
-                        { "ColorType_long", ColorType_long },
-                        { "ColorType_unsigned_long", ColorType_unsigned_long },
-                        { "ColorType_long_long", ColorType_long_long },
-                        { "ColorType_unsigned_long_long", ColorType_unsigned_long_long },
-                        { "ColorType_float", ColorType_float },
-                        { "ColorType_double", ColorType_double } });
+  return RunTestCases(argc, argv);
 }

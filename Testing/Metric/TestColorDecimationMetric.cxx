@@ -94,7 +94,7 @@ void Sub(const double a[6], const double b[6], double d[6])
 }
 
 //------------------------------------------------------------------------------
-void TestTriangleQuadric()
+CD_TEST_CASE(TriangleQuadric)
 {
   // v1 = (1,2,3, .1,.2,.3); v2 = v1 + 2 e_x; v3 = v1 + (0,1,0, 0,.5,0). Then e1 = e_x and
   // e2 = (0,1,0,0,.5,0)/sqrt(1.25).
@@ -160,7 +160,7 @@ void TestTriangleQuadric()
 }
 
 //------------------------------------------------------------------------------
-void TestCentredQuadric()
+CD_TEST_CASE(CentredQuadric)
 {
   // A triangle in general position; its quadric centred at corner v2 (only A: the plane
   // passes through the centre) equals the global one.
@@ -207,7 +207,7 @@ void TestCentredQuadric()
 }
 
 //------------------------------------------------------------------------------
-void TestQuadricSums()
+CD_TEST_CASE(QuadricSums)
 {
   // Two triangles' quadrics, one centred at a, one at b: sum centred at a by AddShifted;
   // and the 28 coefficients of a sum are the sums of the coefficients.
@@ -265,7 +265,7 @@ struct Square
   Square() { this->Mesh.Build(4, this->Triangles.data(), 2); }
 };
 
-void TestInitialQuadrics()
+CD_TEST_CASE(InitialQuadrics)
 {
   Square square;
   const std::vector<float> grey(12, 0.5f);
@@ -329,7 +329,7 @@ void TestInitialQuadrics()
 }
 
 //------------------------------------------------------------------------------
-void TestOptimalPlacement()
+CD_TEST_CASE(OptimalPlacement)
 {
   // Plane 1: through the origin along x and y. Plane 2: through (1,2,0,0,.4,.6) along z and r.
   // The sum of squared distances, z^2 + r^2 + g^2 + b^2 + (x-1)^2 + (y-2)^2 + (g-.4)^2 +
@@ -377,7 +377,7 @@ void TestOptimalPlacement()
 }
 
 //------------------------------------------------------------------------------
-void TestSingularSystem()
+CD_TEST_CASE(SingularSystem)
 {
   double y[6] = { 42, 42, 42, 42, 42, 42 };
   // Nothing at all.
@@ -491,7 +491,7 @@ DecimatorInput PyramidInput(const double* points)
   return input;
 }
 
-void TestCollapseCostColorQuadric()
+CD_TEST_CASE(CollapseCostColorQuadric)
 {
   for (double w : { 1.0, 2.5, 0.0 })
   {
@@ -535,7 +535,7 @@ void TestCollapseCostColorQuadric()
   }
 }
 
-void TestPlacementCost()
+CD_TEST_CASE(PlacementCost)
 {
   DecimatorOptions options;
   options.Metric = ErrorMetric::ColorQuadric;
@@ -575,7 +575,7 @@ void CheckLab(double r, double g, double b, double l, double a, double bb, doubl
                         << ")");
 }
 
-void TestCIELabValues()
+CD_TEST_CASE(CIELabValues)
 {
   // Published sRGB (D65) -> CIELab values.
   CheckLab(1, 1, 1, 100, 0, 0, 1e-3);
@@ -606,7 +606,7 @@ void TestCIELabValues()
   CD_CHECK(std::string(ColorSpaceName(ColorSpace::RGB)) == "RGB");
 }
 
-void TestCIELabRoundTrip()
+CD_TEST_CASE(CIELabRoundTrip)
 {
   std::mt19937 random(3);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -627,7 +627,7 @@ void TestCIELabRoundTrip()
   }
 }
 
-void TestCIELabClamp()
+CD_TEST_CASE(CIELabClamp)
 {
   // RGB: clamped to [0,1].
   double c[3] = { 1.2, -0.1, 0.5 };
@@ -669,7 +669,7 @@ double LabDistance(const float* a, const float* b)
     100.0;
 }
 
-void TestCIELabMetric()
+CD_TEST_CASE(CIELabMetric)
 {
   // The paper's cost of the pyramid's apex -> 1 collapse with every colour distance taken
   // in CIELab / 100 (SPEC.md's formulas; the frame makes every spoke and the rims 1-2, 1-4
@@ -830,7 +830,7 @@ void CheckHalfEdgeInvariants(vtkPolyData* mesh, const Expectation& expected,
   }
 }
 
-void TestInvariantsColorQuadric()
+CD_TEST_CASE(InvariantsColorQuadric)
 {
   auto configure = [](vtkColorHalfEdgeDecimation* f) { ConfigureQuadric(f, false); };
   CheckHalfEdgeInvariants(meshes::Icosphere(5, Pattern::SharpRegions),
@@ -841,7 +841,7 @@ void TestInvariantsColorQuadric()
                           "ColorQuadric Grid(80,60)", configure);
 }
 
-void TestInvariantsColorQuadricPlacement()
+CD_TEST_CASE(InvariantsColorQuadricPlacement)
 {
   struct Case
   {
@@ -938,7 +938,7 @@ void RampColour(double x, double, unsigned char* c)
   c[2] = 90;
 }
 
-void TestPlacementFallback()
+CD_TEST_CASE(PlacementFallback)
 {
   // On a flat patch with a constant colour or a linear ramp every vertex's quadric has the
   // same plane of R^6: every 6x6 system is singular, so every collapse falls back to an
@@ -996,7 +996,7 @@ vtkSmartPointer<vtkPolyData> WithColourArray(vtkPolyData* mesh, double offset, d
   return copy;
 }
 
-void TestPlacementColorArrays()
+CD_TEST_CASE(PlacementColorArrays)
 {
   // Sharp regions with pure 0 and 255 channels: the float array spans [0,1] exactly, the
   // double array [0, 1000] (mapped by its range, written back through the inverse), so both
@@ -1067,7 +1067,7 @@ void TestPlacementColorArrays()
   }
 }
 
-void TestPlacementPreserveBoundary()
+CD_TEST_CASE(PlacementPreserveBoundary)
 {
   // With PreserveBoundary, boundary points are neither removed nor moved.
   auto grid = meshes::Grid(60, 50, Pattern::SharpRegions);
@@ -1108,7 +1108,7 @@ void TestPlacementPreserveBoundary()
   CD_CHECK(r.ActualReduction > 0.85);
 }
 
-void TestInvariantsCIELab()
+CD_TEST_CASE(InvariantsCIELab)
 {
   auto lab = [](vtkColorHalfEdgeDecimation* f) { f->SetColorSpaceToCIELab(); };
   CheckHalfEdgeInvariants(meshes::Icosphere(5, Pattern::SharpRegions),
@@ -1143,7 +1143,7 @@ void TestInvariantsCIELab()
 }
 
 //------------------------------------------------------------------------------
-void TestRulesNewPosition()
+CD_TEST_CASE(RulesNewPosition)
 {
   // CheckGeometry with a new position for the merged vertex. At p1 it is the half-edge check;
   // at p0 v0's triangles do not move, and v1's triangles move onto p0: exactly the check of
@@ -1209,7 +1209,7 @@ void TestRulesNewPosition()
 }
 
 //------------------------------------------------------------------------------
-void TestBoundaryQuadric()
+CD_TEST_CASE(BoundaryQuadric)
 {
   // The paper's 10-float quadric with boundary planes (BoundaryWeight): on the flat square,
   // vertex 1 lies on the boundary edges 0-1 (along x: its plane is perpendicular to y) and
@@ -1243,7 +1243,7 @@ double BoxShrink(vtkPolyData* input, vtkPolyData* output)
   return std::max({ b[0] - a[0], a[1] - b[1], b[2] - a[2], a[3] - b[3] });
 }
 
-void TestBoundaryWeight()
+CD_TEST_CASE(BoundaryWeight)
 {
   // The open grid's square outline: with boundary planes its corners cannot be cut (that
   // would move the outline by a whole edge against a weight of 100), for every metric.
@@ -1298,7 +1298,7 @@ void TestBoundaryWeight()
 }
 
 //------------------------------------------------------------------------------
-void TestProperties()
+CD_TEST_CASE(Properties)
 {
   vtkNew<vtkColorHalfEdgeDecimation> f;
   CD_CHECK(f->GetErrorMetric() == vtkColorHalfEdgeDecimation::HalfEdgeColor);
@@ -1340,7 +1340,7 @@ void TestProperties()
   CD_CHECK(text.find("BoundaryWeight: 250") != std::string::npos);
 }
 
-void TestStateMemory()
+CD_TEST_CASE(StateMemory)
 {
   // The colour quadric holds 28 floats per vertex instead of the paper's 12 (64 bytes more),
   // plus one byte of moved flag with placement.
@@ -1366,28 +1366,5 @@ void TestStateMemory()
 
 int main(int argc, char* argv[])
 {
-  return RunTestCases(argc, argv,
-                      { { "TriangleQuadric", TestTriangleQuadric },
-                        { "CentredQuadric", TestCentredQuadric },
-                        { "QuadricSums", TestQuadricSums },
-                        { "InitialQuadrics", TestInitialQuadrics },
-                        { "OptimalPlacement", TestOptimalPlacement },
-                        { "SingularSystem", TestSingularSystem },
-                        { "CollapseCostColorQuadric", TestCollapseCostColorQuadric },
-                        { "PlacementCost", TestPlacementCost },
-                        { "CIELabValues", TestCIELabValues },
-                        { "CIELabRoundTrip", TestCIELabRoundTrip },
-                        { "CIELabClamp", TestCIELabClamp },
-                        { "CIELabMetric", TestCIELabMetric },
-                        { "InvariantsColorQuadric", TestInvariantsColorQuadric },
-                        { "InvariantsColorQuadricPlacement", TestInvariantsColorQuadricPlacement },
-                        { "PlacementFallback", TestPlacementFallback },
-                        { "PlacementColorArrays", TestPlacementColorArrays },
-                        { "PlacementPreserveBoundary", TestPlacementPreserveBoundary },
-                        { "InvariantsCIELab", TestInvariantsCIELab },
-                        { "RulesNewPosition", TestRulesNewPosition },
-                        { "BoundaryQuadric", TestBoundaryQuadric },
-                        { "BoundaryWeight", TestBoundaryWeight },
-                        { "Properties", TestProperties },
-                        { "StateMemory", TestStateMemory } });
+  return RunTestCases(argc, argv);
 }

@@ -158,15 +158,6 @@ int RunTestCases(int argc, char* argv[])
   return Failures == 0 ? 0 : 1;
 }
 
-int RunTestCases(int argc, char* argv[], const std::vector<TestCase>& cases)
-{
-  for (const TestCase& c : cases)
-  {
-    RegisterTestCase(c.Name, c.Function);
-  }
-  return RunTestCases(argc, argv);
-}
-
 //------------------------------------------------------------------------------
 bool Messages::HasError(const std::string& part) const
 {

@@ -54,15 +54,6 @@ bool RegisterTestCase(const char* name, void (*function)());
  */
 int RunTestCases(int argc, char* argv[]);
 
-/// The cases of a suite listed in its main() (until every suite uses CD_TEST_CASE).
-struct TestCase
-{
-  const char* Name;
-  void (*Function)();
-};
-/// Register `cases`, then RunTestCases(argc, argv).
-int RunTestCases(int argc, char* argv[], const std::vector<TestCase>& cases);
-
 /**
  * Define and register the test case `Name`: `CD_TEST_CASE(Name)` alone on its line, then the
  * body in braces. The ctest entries are made from these lines (colordecimation_add_test_cases).
