@@ -134,22 +134,6 @@ std::vector<std::array<double, 3>> PointsOf(vtkPolyData* mesh)
   return points;
 }
 
-/// A flat square grid (z = 0) in [-1,1]^2, coloured by `pattern`.
-vtkSmartPointer<vtkPolyData> MakeFlatGrid(int n, Pattern pattern)
-{
-  auto mesh = colordecimation::meshes::Grid(n, n, pattern);
-  vtkPoints* points = mesh->GetPoints();
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    points->GetPoint(i, p);
-    p[2] = 0;
-    points->SetPoint(i, p);
-  }
-  colordecimation::meshes::ApplyPattern(mesh, pattern);
-  return mesh;
-}
-
 /// Attach a cell-data int array (one value per cell).
 void AddCellValues(vtkPolyData* mesh, const char* name, const std::vector<int>& values)
 {
@@ -416,7 +400,7 @@ CD_TEST_CASE(DuplicatePoints)
 /// triangles) and whose row 10 lies on row 9's line (collinear triangles).
 CD_TEST_CASE(ZeroAreaTriangles)
 {
-  auto grid = MakeFlatGrid(20, Pattern::SharpRegions);
+  auto grid = colordecimation::meshes::FlatGrid(20, 20, Pattern::SharpRegions);
   auto points = PointsOf(grid);
   for (int i = 0; i <= 20; ++i)
   {
@@ -630,7 +614,7 @@ CD_TEST_CASE(FlatGrid)
 {
   for (Pattern pattern : { Pattern::SharpRegions, Pattern::Constant })
   {
-    auto mesh = MakeFlatGrid(50, pattern);
+    auto mesh = colordecimation::meshes::FlatGrid(50, 50, pattern);
     RunResult run = Run(mesh, 0.9);
     ExpectNoMessages(run);
     ExpectReached(run, 0.9);
@@ -1160,7 +1144,7 @@ CD_TEST_CASE(OtherMetrics)
     }
     for (Pattern pattern : { Pattern::SharpRegions, Pattern::Constant })
     {
-      RunResult run = Run(MakeFlatGrid(40, pattern), 0.9, configure);
+      RunResult run = Run(colordecimation::meshes::FlatGrid(40, 40, pattern), 0.9, configure);
       ExpectNoMessages(run);
       ExpectReached(run, 0.9);
       int flipped = 0;

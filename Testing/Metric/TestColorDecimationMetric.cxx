@@ -888,40 +888,30 @@ CD_TEST_CASE(InvariantsColorQuadricPlacement)
   }
 }
 
-/// A flat n x n grid of unit squares in z = 0, coloured by `colour(x, y)`.
-vtkSmartPointer<vtkPolyData> FlatGrid(int n, void (*colour)(double, double, unsigned char*))
+/**
+ * A flat n x n grid of unit squares in z = 0, coloured by `colour(i / n, j / n)` at its point
+ * (i, j): meshes::FlatGrid scaled from [-1,1]^2 to [0,n]^2, with float points (at integers).
+ */
+vtkSmartPointer<vtkPolyData> UnitSquareGrid(int n, void (*colour)(double, double, unsigned char*))
 {
-  vtkNew<vtkPoints> points;
+  const double half = 0.5 * n, shift[3] = { half, half, 0 };
+  auto grid = WithFloatPoints(Transformed(meshes::FlatGrid(n, n, Pattern::Constant), half, shift));
   vtkNew<vtkUnsignedCharArray> rgb;
   rgb->SetName("RGB");
   rgb->SetNumberOfComponents(3);
-  for (int j = 0; j <= n; ++j)
+  rgb->SetNumberOfTuples(grid->GetNumberOfPoints());
+  for (vtkIdType v = 0; v < grid->GetNumberOfPoints(); ++v)
   {
-    for (int i = 0; i <= n; ++i)
-    {
-      points->InsertNextPoint(i, j, 0);
-      unsigned char c[3];
-      colour(double(i) / n, double(j) / n, c);
-      rgb->InsertNextTypedTuple(c);
-    }
+    const int i = static_cast<int>(v % (n + 1)), j = static_cast<int>(v / (n + 1));
+    double p[3];
+    grid->GetPoint(v, p);
+    CD_CHECK(p[0] == i && p[1] == j && p[2] == 0);
+    unsigned char c[3];
+    colour(double(i) / n, double(j) / n, c);
+    rgb->SetTypedTuple(v, c);
   }
-  vtkNew<vtkCellArray> polys;
-  for (int j = 0; j < n; ++j)
-  {
-    for (int i = 0; i < n; ++i)
-    {
-      const vtkIdType a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
-      const vtkIdType t1[3] = { a, b, c };
-      const vtkIdType t2[3] = { a, c, d };
-      polys->InsertNextCell(3, t1);
-      polys->InsertNextCell(3, t2);
-    }
-  }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(polys);
-  mesh->GetPointData()->SetScalars(rgb);
-  return mesh;
+  grid->GetPointData()->SetScalars(rgb);
+  return grid;
 }
 
 void ConstantColour(double, double, unsigned char* c)
@@ -946,7 +936,7 @@ CD_TEST_CASE(PlacementFallback)
   // patch, where both endpoints cost the same).
   for (auto colour : { ConstantColour, RampColour })
   {
-    auto grid = FlatGrid(51, colour);
+    auto grid = UnitSquareGrid(51, colour);
     Decorate(grid);
     const RunResult r =
       Decimate(grid, 0.9, [](vtkColorHalfEdgeDecimation* f) { ConfigureQuadric(f, true); });
