@@ -40,50 +40,13 @@ double Dot(const double a[3], const double b[3])
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-/// Triangles (as int32) and float positions of a generated mesh.
-struct PlainMesh
-{
-  std::vector<int32_t> Triangles;
-  std::vector<float> Positions;
-  std::vector<double> Points;
-  int32_t NumberOfPoints() const { return static_cast<int32_t>(this->Points.size() / 3); }
-  int32_t NumberOfTriangles() const { return static_cast<int32_t>(this->Triangles.size() / 3); }
-};
-
-PlainMesh ToPlain(vtkPolyData* mesh)
-{
-  PlainMesh plain;
-  for (const Tri& t : GetTriangles(mesh))
-  {
-    for (vtkIdType v : t)
-    {
-      plain.Triangles.push_back(static_cast<int32_t>(v));
-    }
-  }
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    mesh->GetPoint(i, p);
-    for (double x : p)
-    {
-      plain.Points.push_back(x);
-      plain.Positions.push_back(static_cast<float>(x));
-    }
-  }
-  return plain;
-}
-
 /**
- * The square pyramid used for hand computations: apex 0 at (0,0,1), ring 1..4 at (1,0,0),
- * (0,1,0), (-1,0,0), (0,-1,0); four triangles (0,i,i+1) seen counter-clockwise from above,
- * no base (open, the ring is the boundary). Every one of its 8 edges has length sqrt(2), so
- * the normalised frame is: subtract the bounding-box centre (0,0,1/2), divide by sqrt(2).
- * Each face is equilateral with side 1 there (area sqrt(3)/4) and its unit normal is
- * (+-1,+-1,1)/sqrt(3).
+ * The square pyramid (PyramidPoints, PyramidTriangles) for hand computations. Every one of
+ * its 8 edges has length sqrt(2), so the normalised frame is: subtract the bounding-box centre
+ * (0,0,1/2), divide by sqrt(2). Each face is equilateral with side 1 there (area sqrt(3)/4)
+ * and its unit normal is (+-1,+-1,1)/sqrt(3).
+ * Colours: apex black, ring (0.6,0,0), black, (0,0.8,0), black.
  */
-const double PyramidPoints[15] = { 0, 0, 1, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0 };
-const int32_t PyramidTriangles[12] = { 0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 1 };
-/// Colours: apex black, ring (0.6,0,0), black, (0,0.8,0), black.
 const float PyramidColors[15] = { 0, 0, 0, 0.6f, 0, 0, 0, 0, 0, 0, 0.8f, 0, 0, 0, 0 };
 
 //------------------------------------------------------------------------------
@@ -973,8 +936,8 @@ long long CheckMeshConsistency(const HalfEdgeMesh& mesh, bool closed)
   return bad;
 }
 
-/// V - E + F of the live faces.
-long long Euler(const HalfEdgeMesh& mesh)
+/// The live faces of a corner table.
+std::vector<Tri> LiveTriangles(const HalfEdgeMesh& mesh)
 {
   std::vector<Tri> tris;
   for (int32_t f = 0; f < mesh.GetNumberOfFaceSlots(); ++f)
@@ -985,7 +948,7 @@ long long Euler(const HalfEdgeMesh& mesh)
       tris.push_back({ t[0], t[1], t[2] });
     }
   }
-  return AnalyseTopology(tris).Euler();
+  return tris;
 }
 
 /// Build on one thread and on three: the same report, twins, outgoing half-edges and locks.
@@ -1152,7 +1115,7 @@ CD_TEST_CASE(HalfEdgeCollapse)
     const PlainMesh m = ToPlain(c.Poly);
     HalfEdgeMesh mesh;
     mesh.Build(m.NumberOfPoints(), m.Triangles.data(), m.NumberOfTriangles());
-    const long long euler = Euler(mesh);
+    const long long euler = AnalyseTopology(LiveTriangles(mesh)).Euler();
     CollapseRuleOptions options;
     options.MinimumNormalCosine = -1.0; // topology only: many different collapses
     CollapseRules rules(options);
@@ -1189,7 +1152,7 @@ CD_TEST_CASE(HalfEdgeCollapse)
                         " -> " + std::to_string(v1));
         return;
       }
-      CD_CHECK(Euler(mesh) == euler);
+      CD_CHECK(AnalyseTopology(LiveTriangles(mesh)).Euler() == euler);
     }
     std::cout << "  " << m.NumberOfTriangles() << " -> " << mesh.GetNumberOfLiveFaces()
               << " triangles in " << collapses << " collapses (" << boundaryCollapses
@@ -1761,7 +1724,7 @@ CD_TEST_CASE(RulesLinkCondition)
   CD_CHECK(rules.CheckTopology(mesh, 0, 2) == CollapseVerdict::Legal);
   CD_CHECK(mesh.Collapse(0, 2) == 2);
   CD_CHECK(CheckMeshConsistency(mesh, true) == 0);
-  CD_CHECK(Euler(mesh) == 2);
+  CD_CHECK(AnalyseTopology(LiveTriangles(mesh)).Euler() == 2);
   CD_CHECK(mesh.Valence(4) == 3 && mesh.Valence(5) == 3 && mesh.Valence(1) == 4);
   CD_CHECK(rules.CheckTopology(mesh, 1, 2) == CollapseVerdict::LinkCondition);
   CD_CHECK(rules.CheckTopology(mesh, 2, 3) == CollapseVerdict::LinkCondition);
@@ -1769,7 +1732,7 @@ CD_TEST_CASE(RulesLinkCondition)
   CD_CHECK(rules.CheckTopology(mesh, 4, 1) == CollapseVerdict::Legal);
   CD_CHECK(mesh.Collapse(4, 1) == 2);
   CD_CHECK(CheckMeshConsistency(mesh, true) == 0);
-  CD_CHECK(mesh.GetNumberOfLiveFaces() == 4 && Euler(mesh) == 2);
+  CD_CHECK(mesh.GetNumberOfLiveFaces() == 4 && AnalyseTopology(LiveTriangles(mesh)).Euler() == 2);
   for (int32_t a : { 1, 2, 3, 5 })
   {
     mesh.ForEachNeighbor(

@@ -428,12 +428,9 @@ CD_TEST_CASE(SingularSystem)
 
 //------------------------------------------------------------------------------
 /**
- * The square pyramid of the core tests: apex 0 at (0,0,1), ring 1..4 at (1,0,0), (0,1,0),
- * (-1,0,0), (0,-1,0); triangles (0,i,i+1). Bounding box [-1,1]x[-1,1]x[0,1]: GH98's frame
- * divides by its largest side, 2.
+ * The square pyramid of the core tests (PyramidPoints, PyramidTriangles). Bounding box
+ * [-1,1]x[-1,1]x[0,1]: GH98's frame divides by its largest side, 2.
  */
-const double PyramidPoints[15] = { 0, 0, 1, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0 };
-const int32_t PyramidTriangles[12] = { 0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 1 };
 const float PyramidColors[15] = { 0.1f, 0.1f, 0.1f, 0.6f, 0, 0, 0, 0, 0.9f, 0, 0.8f, 0, 1, 1, 1 };
 
 /// The hand cost (Q0 + Q1)(x1) of a pyramid collapse in GH98's frame, colour weight w.
@@ -1139,14 +1136,7 @@ CD_TEST_CASE(RulesNewPosition)
   // at p0 v0's triangles do not move, and v1's triangles move onto p0: exactly the check of
   // the reverse half-edge collapse v1 -> v0. On a noisy sphere both verdicts occur.
   auto sphere = meshes::Icosphere(2, Pattern::Constant);
-  std::vector<int32_t> triangles;
-  for (const Tri& t : GetTriangles(sphere))
-  {
-    for (vtkIdType v : t)
-    {
-      triangles.push_back(static_cast<int32_t>(v));
-    }
-  }
+  const std::vector<int32_t> triangles = ToPlain(sphere).Triangles;
   const int32_t n = static_cast<int32_t>(sphere->GetNumberOfPoints());
   std::vector<float> positions(3 * n);
   std::mt19937 random(5);

@@ -842,5 +842,32 @@ vtkSmartPointer<vtkPolyData> WithFloatPoints(vtkPolyData* mesh)
   return copy;
 }
 
+//------------------------------------------------------------------------------
+PlainMesh ToPlain(vtkPolyData* mesh)
+{
+  PlainMesh plain;
+  for (const Tri& t : GetTriangles(mesh))
+  {
+    for (vtkIdType v : t)
+    {
+      plain.Triangles.push_back(static_cast<int32_t>(v));
+    }
+  }
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    for (double x : p)
+    {
+      plain.Points.push_back(x);
+      plain.Positions.push_back(static_cast<float>(x));
+    }
+  }
+  return plain;
+}
+
+const double PyramidPoints[15] = { 0, 0, 1, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0 };
+const int32_t PyramidTriangles[12] = { 0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 1 };
+
 } // namespace testing
 } // namespace colordecimation

@@ -21,6 +21,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <set>
@@ -286,6 +287,29 @@ void Decorate(vtkPolyData* mesh);
 
 /// A deep copy.
 vtkSmartPointer<vtkPolyData> Copy(vtkPolyData* mesh);
+
+//------------------------------------------------------------------------------
+// Meshes for the core (Filters/Core), which takes int32 triangles and float positions.
+
+/// Triangles (as int32), float positions and double points of a generated mesh.
+struct PlainMesh
+{
+  std::vector<int32_t> Triangles;
+  std::vector<float> Positions;
+  std::vector<double> Points;
+  int32_t NumberOfPoints() const { return static_cast<int32_t>(this->Points.size() / 3); }
+  int32_t NumberOfTriangles() const { return static_cast<int32_t>(this->Triangles.size() / 3); }
+};
+
+PlainMesh ToPlain(vtkPolyData* mesh);
+
+/**
+ * The square pyramid of the hand computations: apex 0 at (0,0,1), ring 1..4 at (1,0,0),
+ * (0,1,0), (-1,0,0), (0,-1,0); four triangles (0,i,i+1) seen counter-clockwise from above,
+ * no base (open, the ring is the boundary). Each test gives it its own colours.
+ */
+extern const double PyramidPoints[15];
+extern const int32_t PyramidTriangles[12];
 
 /// A deep copy whose points are scaled by `scale` and then translated.
 vtkSmartPointer<vtkPolyData> Transformed(vtkPolyData* mesh, double scale,
