@@ -919,64 +919,6 @@ CD_TEST_CASE(ShortPointArray)
 //------------------------------------------------------------------------------
 // Target reduction and input validation.
 
-/// TargetReduction 0: the output is the input (its triangles, on the points they use).
-CD_TEST_CASE(TargetReductionZero)
-{
-  auto mesh = colordecimation::meshes::Torus(40, 20, Pattern::FineDetail);
-  RunResult run = Run(mesh, 0.0);
-  ExpectNoMessages(run);
-  CD_CHECK_MSG(run.Collapses == 0, "no collapse");
-  CD_CHECK_MSG(run.Output->GetNumberOfPolys() == mesh->GetNumberOfPolys() &&
-                 run.ActualReduction == 0.0,
-               "every triangle is kept");
-  Triangles input = GetTriangles(mesh);
-  for (auto& t : input)
-  {
-    while (t[0] > t[1] || t[0] > t[2])
-    {
-      t = { t[1], t[2], t[0] };
-    }
-  }
-  std::sort(input.begin(), input.end());
-  CD_CHECK_MSG(OriginalTriangles(run.Output) == input, "the same triangles");
-}
-
-/// TargetReduction 1: as far as the rules allow; closed surfaces stay closed, of the same
-/// Euler characteristic; an open grid keeps one boundary loop.
-CD_TEST_CASE(TargetReductionOne)
-{
-  struct Case
-  {
-    vtkSmartPointer<vtkPolyData> Mesh;
-    long long Euler;
-    bool Closed;
-  };
-  for (const Case& c :
-       { Case{ colordecimation::meshes::Icosphere(3, Pattern::SharpRegions), 2, true },
-         Case{ colordecimation::meshes::Torus(40, 20, Pattern::SmoothGradient), 0, true },
-         Case{ colordecimation::meshes::Grid(30, 30, Pattern::FineDetail), 1, false } })
-  {
-    RunResult run = Run(c.Mesh, 1.0);
-    ExpectNoMessages(run);
-    const Triangles out = GetTriangles(run.Output);
-    const Topology topology = AnalyseTopology(out);
-    CD_CHECK_MSG(!out.empty(), "the output is not empty");
-    CD_CHECK_MSG(run.ActualReduction > 0.9, "most triangles are removed");
-    CD_CHECK_MSG(topology.Euler() == c.Euler,
-                 "Euler characteristic " << topology.Euler() << " == " << c.Euler);
-    CD_CHECK_MSG(IsOrientedSoup(out), "the output is consistently oriented");
-    if (c.Closed)
-    {
-      CD_CHECK_MSG(topology.BoundaryEdges == 0 && topology.NonManifoldEdges == 0,
-                   "the output is closed");
-    }
-    else
-    {
-      CD_CHECK_MSG(topology.BoundaryEdges >= 3, "the grid keeps a boundary");
-    }
-  }
-}
-
 /// Empty input, points without cells, only vertices and lines: empty output.
 CD_TEST_CASE(EmptyAndNoSurface)
 {
