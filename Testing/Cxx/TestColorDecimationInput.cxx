@@ -338,36 +338,6 @@ CD_TEST_CASE(ColorNaN)
 //------------------------------------------------------------------------------
 // Bad or unusual input.
 
-CD_TEST_CASE(EmptyInput)
-{
-  vtkNew<vtkPolyData> empty;
-  RunResult r = Decimate(empty, 0.9);
-  CD_CHECK(r.Errors == 0);
-  CD_CHECK(r.Output->GetNumberOfPoints() == 0 && r.Output->GetNumberOfCells() == 0);
-  CD_CHECK(r.ActualReduction == 0 && r.Collapses == 0);
-
-  // Points but no cells: empty output.
-  vtkNew<vtkPolyData> cloud;
-  vtkNew<vtkPoints> points;
-  points->InsertNextPoint(0, 0, 0);
-  points->InsertNextPoint(1, 0, 0);
-  cloud->SetPoints(points);
-  r = Decimate(cloud, 0.9);
-  CD_CHECK(r.Errors == 0);
-  CD_CHECK(r.Output->GetNumberOfCells() == 0);
-
-  // Only triangles that repeat a point: dropped with a warning, empty output.
-  vtkNew<vtkPolyData> degenerate;
-  degenerate->SetPoints(points);
-  vtkNew<vtkCellArray> polys;
-  const vtkIdType tri[3] = { 0, 1, 1 };
-  polys->InsertNextCell(3, tri);
-  degenerate->SetPolys(polys);
-  r = Decimate(degenerate, 0.9);
-  CD_CHECK(r.Errors == 0 && r.Warnings >= 1);
-  CD_CHECK(r.Output->GetNumberOfCells() == 0);
-}
-
 CD_TEST_CASE(NoColorArray)
 {
   auto mesh = meshes::Icosphere(5, Pattern::SharpRegions);

@@ -919,19 +919,40 @@ CD_TEST_CASE(ShortPointArray)
 //------------------------------------------------------------------------------
 // Target reduction and input validation.
 
-/// Empty input, points without cells, only vertices and lines: empty output.
+/// Two points, (0,0,0) and (1,0,0), without cells or colours.
+vtkSmartPointer<vtkPolyData> TwoPoints()
+{
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  auto cloud = vtkSmartPointer<vtkPolyData>::New();
+  cloud->SetPoints(points);
+  return cloud;
+}
+
+/**
+ * Empty input, points without cells (with and without colours), only vertices and lines,
+ * only triangles that repeat a point: empty output.
+ */
 CD_TEST_CASE(EmptyAndNoSurface)
 {
   vtkNew<vtkPolyData> empty;
   RunResult run = Run(empty, 0.9);
   ExpectNoMessages(run);
-  CD_CHECK_MSG(run.Output->GetNumberOfPoints() == 0, "empty input: empty output");
+  CD_CHECK_MSG(run.Output->GetNumberOfPoints() == 0 && run.Output->GetNumberOfCells() == 0,
+               "empty input: empty output");
+  CD_CHECK_MSG(run.ActualReduction == 0 && run.Collapses == 0, "empty input: no reduction");
 
   auto pointsOnly = ColorMesh();
   pointsOnly->SetPolys(vtkNew<vtkCellArray>());
-  run = Run(pointsOnly, 0.9);
-  ExpectNoMessages(run);
-  CD_CHECK_MSG(run.Output->GetNumberOfPoints() == 0, "points without cells: empty output");
+  auto twoPoints = TwoPoints();
+  for (vtkPolyData* points : { pointsOnly.Get(), twoPoints.Get() })
+  {
+    run = Run(points, 0.9);
+    ExpectNoMessages(run);
+    CD_CHECK_MSG(run.Output->GetNumberOfPoints() == 0 && run.Output->GetNumberOfCells() == 0,
+                 "points without cells: empty output");
+  }
 
   auto linesOnly = ColorMesh();
   vtkNew<vtkCellArray> lines;
@@ -947,6 +968,17 @@ CD_TEST_CASE(EmptyAndNoSurface)
   CD_CHECK_MSG(run.HasWarning("Dropping 1 vertex and 1 line"), "a warning about the cells");
   CD_CHECK_MSG(run.Output->GetNumberOfPoints() == 0 && run.Output->GetNumberOfCells() == 0,
                "only vertices and lines: empty output");
+
+  auto repeating = TwoPoints();
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType repeated[3] = { 0, 1, 1 };
+  polys->InsertNextCell(3, repeated);
+  repeating->SetPolys(polys);
+  run = Run(repeating, 0.9);
+  CD_CHECK_MSG(run.Errors == 0 && run.Warnings >= 1 &&
+                 run.HasWarning("Dropped 1 triangles that repeat"),
+               "only a triangle repeating a point: dropped with a warning");
+  CD_CHECK_MSG(run.Output->GetNumberOfCells() == 0, "only a repeating triangle: empty output");
 }
 
 /// Quads and strips: triangulated (with a warning), then decimated.
