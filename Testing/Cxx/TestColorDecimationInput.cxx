@@ -542,17 +542,6 @@ void CheckFailsEmpty(const RunResult& r, const char* what)
   CD_CHECK(r.Collapses == 0);
 }
 
-CD_TEST_CASE(NaNPoint)
-{
-  for (double bad :
-       { std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })
-  {
-    auto mesh = meshes::Icosphere(3, Pattern::SharpRegions);
-    mesh->GetPoints()->SetPoint(7, bad, 0, 0);
-    CheckFailsEmpty(Decimate(mesh, 0.9), "non-finite point");
-  }
-}
-
 CD_TEST_CASE(WrongTupleCount)
 {
   auto mesh = meshes::Icosphere(3, Pattern::SharpRegions);
@@ -594,14 +583,6 @@ CD_TEST_CASE(CellDataColor)
                                0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "FaceRGB");
                            }),
                   "cell colour array");
-}
-
-CD_TEST_CASE(PointIdsOutOfRange)
-{
-  auto mesh = meshes::Icosphere(3, Pattern::SharpRegions);
-  const vtkIdType bad[3] = { 0, 1, mesh->GetNumberOfPoints() };
-  mesh->GetPolys()->InsertNextCell(3, bad);
-  CheckFailsEmpty(Decimate(mesh, 0.9), "point id out of range");
 }
 
 } // namespace

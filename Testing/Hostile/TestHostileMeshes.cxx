@@ -91,6 +91,7 @@ void ExpectEmptyWithError(const RunResult& run, const std::string& text)
   CD_CHECK_MSG(run.HasError(text), "the error says '" + text + "'");
   CD_CHECK_MSG(run.Output->GetNumberOfPoints() == 0 && run.Output->GetNumberOfCells() == 0,
                "empty output");
+  CD_CHECK_MSG(run.Collapses == 0, "no collapse (got " << run.Collapses << ")");
 }
 
 void ExpectReached(const RunResult& run, double target, double slack = 0.02)
@@ -1023,7 +1024,8 @@ CD_TEST_CASE(PolygonsAndStrips)
   ExpectReached(run, 0.9);
 }
 
-/// Non-finite coordinates (even of an unused point) and point ids out of range: errors.
+/// Non-finite coordinates (of a used point, or of an unused one) and point ids out of range:
+/// errors.
 CD_TEST_CASE(InvalidInput)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -1036,6 +1038,12 @@ CD_TEST_CASE(InvalidInput)
     vtkDataArray* colors = mesh->GetPointData()->GetScalars();
     colors->InsertNextTuple3(0, 0, 0);
     CD_CHECK_MSG(unused > 0, "an extra point");
+    ExpectEmptyWithError(Run(mesh, 0.9), "NaN or infinite point coordinates");
+  }
+  for (double bad : { nan, inf })
+  {
+    auto mesh = ColorMesh();
+    mesh->GetPoints()->SetPoint(7, bad, 0, 0);
     ExpectEmptyWithError(Run(mesh, 0.9), "NaN or infinite point coordinates");
   }
   for (vtkIdType bad : { vtkIdType(-1), vtkIdType(642), vtkIdType(1) << 40 })
