@@ -534,57 +534,6 @@ CD_TEST_CASE(BowTie)
   CD_CHECK(CountDegenerate(r.Output) == 0);
 }
 
-void CheckFailsEmpty(const RunResult& r, const char* what)
-{
-  CD_CHECK_MSG(r.Errors == 1, what << ": " << r.Errors << " errors");
-  CD_CHECK_MSG(r.Output->GetNumberOfPoints() == 0 && r.Output->GetNumberOfCells() == 0,
-               what << ": the output is not empty");
-  CD_CHECK(r.Collapses == 0);
-}
-
-CD_TEST_CASE(WrongTupleCount)
-{
-  auto mesh = meshes::Icosphere(3, Pattern::SharpRegions);
-  vtkNew<vtkUnsignedCharArray> shortArray;
-  shortArray->SetName("Short");
-  shortArray->SetNumberOfComponents(3);
-  shortArray->SetNumberOfTuples(mesh->GetNumberOfPoints() - 1);
-  shortArray->FillValue(100);
-  mesh->GetPointData()->AddArray(shortArray);
-  CheckFailsEmpty(Decimate(mesh, 0.9,
-                           [](vtkColorHalfEdgeDecimation* f) {
-                             f->SetInputArrayToProcess(
-                               0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Short");
-                           }),
-                  "short colour array");
-
-  // Too long, as the active scalars.
-  auto other = meshes::Icosphere(3, Pattern::SharpRegions);
-  vtkNew<vtkFloatArray> longArray;
-  longArray->SetNumberOfComponents(3);
-  longArray->SetNumberOfTuples(other->GetNumberOfPoints() + 5);
-  longArray->FillValue(0.5f);
-  SetColors(other, longArray);
-  CheckFailsEmpty(Decimate(other, 0.9), "long colour array");
-}
-
-CD_TEST_CASE(CellDataColor)
-{
-  auto mesh = meshes::Icosphere(3, Pattern::SharpRegions);
-  vtkNew<vtkUnsignedCharArray> faces;
-  faces->SetName("FaceRGB");
-  faces->SetNumberOfComponents(3);
-  faces->SetNumberOfTuples(mesh->GetNumberOfCells());
-  faces->FillValue(200);
-  mesh->GetCellData()->AddArray(faces);
-  CheckFailsEmpty(Decimate(mesh, 0.9,
-                           [](vtkColorHalfEdgeDecimation* f) {
-                             f->SetInputArrayToProcess(
-                               0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "FaceRGB");
-                           }),
-                  "cell colour array");
-}
-
 } // namespace
 
 int main(int argc, char* argv[])

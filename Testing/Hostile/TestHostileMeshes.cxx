@@ -850,34 +850,60 @@ CD_TEST_CASE(NaNColors)
   ExpectReached(run, 0.9);
 }
 
-/// Colour array of the wrong length, or as cell data: errors, empty output.
+/// Select the colour array `name` with the field association `association`.
+Configure ColorFrom(int association, const char* name)
+{
+  return [association, name](vtkColorHalfEdgeDecimation* f)
+  { f->SetInputArrayToProcess(0, 0, 0, association, name); };
+}
+
+/**
+ * Colour array of the wrong length (one tuple short as the scalars or selected by name, five
+ * tuples long), or as cell data (selected as cell data, or as points then cells): errors,
+ * empty output. No colour array: a warning, geometry alone.
+ */
 CD_TEST_CASE(BadColorArrays)
 {
   auto mesh = ColorMesh();
-  auto shortColors = vtkSmartPointer<vtkPolyData>::New();
-  shortColors->DeepCopy(mesh);
+  auto shortColors = Copy(mesh);
   shortColors->GetPointData()->GetScalars()->SetNumberOfTuples(mesh->GetNumberOfPoints() - 1);
   ExpectEmptyWithError(Run(shortColors, 0.9), "tuples for");
 
-  auto cellColors = vtkSmartPointer<vtkPolyData>::New();
-  cellColors->DeepCopy(mesh);
+  auto shortByName = Copy(mesh);
+  vtkNew<vtkUnsignedCharArray> shortArray;
+  shortArray->SetName("Short");
+  shortArray->SetNumberOfComponents(3);
+  shortArray->SetNumberOfTuples(mesh->GetNumberOfPoints() - 1);
+  shortArray->FillValue(100);
+  shortByName->GetPointData()->AddArray(shortArray);
+  ExpectEmptyWithError(
+    Run(shortByName, 0.9, ColorFrom(vtkDataObject::FIELD_ASSOCIATION_POINTS, "Short")),
+    "tuples for");
+
+  auto longColors = Copy(mesh);
+  vtkNew<vtkFloatArray> longArray;
+  longArray->SetNumberOfComponents(3);
+  longArray->SetNumberOfTuples(mesh->GetNumberOfPoints() + 5);
+  longArray->FillValue(0.5f);
+  longColors->GetPointData()->RemoveArray("RGB");
+  longColors->GetPointData()->SetScalars(longArray);
+  ExpectEmptyWithError(Run(longColors, 0.9), "tuples for");
+
+  auto cellColors = Copy(mesh);
   vtkNew<vtkUnsignedCharArray> rgb;
   rgb->SetName("CellRGB");
   rgb->SetNumberOfComponents(3);
   rgb->SetNumberOfTuples(mesh->GetNumberOfCells());
   rgb->Fill(100);
   cellColors->GetCellData()->AddArray(rgb);
-  ExpectEmptyWithError(Run(cellColors, 0.9,
-                           [](vtkColorHalfEdgeDecimation* f)
-                           {
-                             f->SetInputArrayToProcess(
-                               0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS,
-                               "CellRGB");
-                           }),
-                       "not a point-data array");
+  for (int association : { vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS,
+                           vtkDataObject::FIELD_ASSOCIATION_CELLS })
+  {
+    ExpectEmptyWithError(Run(cellColors, 0.9, ColorFrom(association, "CellRGB")),
+                         "not a point-data array");
+  }
 
-  auto noColors = vtkSmartPointer<vtkPolyData>::New();
-  noColors->DeepCopy(mesh);
+  auto noColors = Copy(mesh);
   noColors->GetPointData()->SetScalars(nullptr);
   RunResult run = Run(noColors, 0.9);
   CD_CHECK_MSG(run.Errors == 0 && run.HasWarning("No colour array"), "no colour array: a warning");
