@@ -440,46 +440,6 @@ CD_TEST_CASE(VerticesAndLines)
   CheckDecimatedMesh(mesh, r.Output, Expectation{ true, 2, 0, nullptr, true }, "verts+lines");
 }
 
-CD_TEST_CASE(NonManifoldEdge)
-{
-  // A fin: a third triangle on an interior edge (a, c) of a grid.
-  const int nx = 40, ny = 30;
-  auto grid = meshes::Grid(nx, ny, Pattern::SmoothGradient);
-  const vtkIdType a = 15 * (nx + 1) + 20, c = 16 * (nx + 1) + 21; // a diagonal (i,j)-(i+1,j+1)
-  double pa[3], pc[3];
-  grid->GetPoint(a, pa);
-  grid->GetPoint(c, pc);
-  const vtkIdType x = grid->GetPoints()->InsertNextPoint(
-    0.5 * (pa[0] + pc[0]), 0.5 * (pa[1] + pc[1]), 0.5 * (pa[2] + pc[2]) + 0.3);
-  const vtkIdType fin[3] = { a, c, x };
-  grid->GetPolys()->InsertNextCell(3, fin);
-  meshes::ApplyPattern(grid, Pattern::SmoothGradient);
-  Decorate(grid);
-  CD_CHECK(AnalyseTopology(GetTriangles(grid)).NonManifoldEdges == 1);
-
-  const RunResult r = Decimate(grid, 0.9);
-  CD_CHECK_MSG(r.Warnings == 1 && r.Errors == 0, r.WarningText() << r.ErrorText());
-  CD_CHECK(r.HasWarning("non-manifold"));
-  const std::set<vtkIdType> ids = OriginalIds(r.Output);
-  CD_CHECK(ids.count(a) && ids.count(c) && ids.count(x));
-  const std::vector<Tri> tris = GetOriginalTriangles(r.Output);
-  CD_CHECK(CanonicalSet(tris).count(Canonical({ a, c, x })) == 1);
-  int onEdge = 0;
-  for (const Tri& t : tris)
-  {
-    const bool hasA = t[0] == a || t[1] == a || t[2] == a;
-    const bool hasC = t[0] == c || t[1] == c || t[2] == c;
-    onEdge += hasA && hasC ? 1 : 0;
-  }
-  CD_CHECK(onEdge == 3);
-  const Topology topo = AnalyseTopology(tris);
-  CD_CHECK_MSG(topo.NonManifoldEdges == 1 && topo.MisorientedEdges == 0, topo);
-  CD_CHECK(std::abs(r.ActualReduction - 0.9) <= 0.01);
-  CD_CHECK(CheckPointDataCopied(grid, r.Output) == 0);
-  CD_CHECK(CheckCellDataCopied(grid, r.Output) == 0);
-  CD_CHECK(CountDegenerate(r.Output) == 0);
-}
-
 CD_TEST_CASE(BowTie)
 {
   // Two grids that touch at one corner: a bow-tie vertex.

@@ -197,55 +197,75 @@ double LargestCornerSine(vtkPolyData* mesh, const Tri& t)
 //------------------------------------------------------------------------------
 // Topology.
 
-/// An edge shared by three triangles (a fin on a grid's interior edge).
+/**
+ * A fin: a third triangle (a, b, apex) on the interior edge (a, b) of `grid`, `apex` a new
+ * point of colour `rgb`. Returns the apex's id.
+ */
+vtkIdType AddFin(vtkPolyData* grid, vtkIdType a, vtkIdType b, const double apex[3],
+                 const unsigned char rgb[3])
+{
+  const auto edge = std::make_pair(std::min(a, b), std::max(a, b));
+  CD_CHECK_MSG(EdgeUses(GetTriangles(grid))[edge] == 2, "the chosen edge is an interior grid edge");
+  const vtkIdType x = grid->GetPoints()->InsertNextPoint(apex);
+  vtkUnsignedCharArray::SafeDownCast(grid->GetPointData()->GetScalars())->InsertNextTypedTuple(rgb);
+  const vtkIdType fin[3] = { a, b, x };
+  grid->GetPolys()->InsertNextCell(3, fin);
+  return x;
+}
+
+/// The edge (a, b) with its fin up to `apex` is kept, the rest of the grid decimated.
+void CheckFin(vtkPolyData* mesh, vtkIdType a, vtkIdType b, vtkIdType apex, const std::string& label)
+{
+  Decorate(mesh);
+  CD_CHECK_MSG(AnalyseTopology(GetTriangles(mesh)).NonManifoldEdges == 1, label);
+  RunResult run = Run(mesh, 0.9);
+  CD_CHECK_MSG(run.Errors == 0 && run.Warnings == 1, label << ": " << run.WarningText());
+  CD_CHECK_MSG(run.HasWarning("non-manifold"), "a warning about the non-manifold edge");
+  const std::set<vtkIdType> ids = OriginalIds(run.Output);
+  CD_CHECK_MSG(ids.count(a) && ids.count(b) && ids.count(apex), label << ": the fin's points");
+  const Triangles tris = GetOriginalTriangles(run.Output);
+  CD_CHECK_MSG(CanonicalSet(tris).count(Canonical({ a, b, apex })) == 1, label << ": the fin");
+  const int kept = EdgeUses(tris)[{ std::min(a, b), std::max(a, b) }];
+  CD_CHECK_MSG(kept == 3,
+               label << ": the three triangles on the non-manifold edge are kept (" << kept << ")");
+  const Topology topology = AnalyseTopology(tris);
+  CD_CHECK_MSG(topology.NonManifoldEdges == 1 && topology.MisorientedEdges == 0,
+               label << ": " << topology);
+  CD_CHECK_MSG(std::abs(run.ActualReduction - 0.9) <= 0.01,
+               label << ": the rest of the grid is decimated (" << run.ActualReduction << ")");
+  CD_CHECK(CheckPointDataCopied(mesh, run.Output) == 0);
+  CD_CHECK(CheckCellDataCopied(mesh, run.Output) == 0);
+  CD_CHECK(CountDegenerate(run.Output) == 0);
+}
+
+/**
+ * An edge shared by three triangles (a fin on a grid's interior edge, a diagonal): on a
+ * sharp-coloured grid with a tall fin, small and large enough to be decimated renumbered
+ * (Decimator.h), and on a smooth-coloured grid with a low fin.
+ */
 CD_TEST_CASE(NonManifoldEdge)
 {
-  // The small grid, and one large enough to be decimated renumbered (Decimator.h).
   for (int size : { 30, 300 })
   {
     auto grid = colordecimation::meshes::Grid(size, size, Pattern::SharpRegions);
-    // Interior edge (a, b) of the grid: a diagonal of the cell in the middle.
     const vtkIdType a = (size / 2) * (size + 1) + size / 2, b = a + size + 1 + 1;
-    auto points = PointsOf(grid);
-    Triangles triangles = GetTriangles(grid);
-    int onEdge = 0;
-    for (const auto& t : triangles)
-    {
-      int hits = 0;
-      for (vtkIdType id : t)
-      {
-        hits += (id == a || id == b) ? 1 : 0;
-      }
-      onEdge += hits == 2 ? 1 : 0;
-    }
-    CD_CHECK_MSG(onEdge == 2, "the chosen edge is an interior grid edge");
-    points.push_back({ 0.0, 0.0, 1.0 });
-    triangles.push_back({ a, b, static_cast<vtkIdType>(points.size() - 1) });
-    auto mesh = Make(points, triangles);
-    // The fin's apex needs a colour too.
-    vtkNew<vtkUnsignedCharArray> rgb;
-    rgb->DeepCopy(grid->GetPointData()->GetScalars());
-    rgb->InsertNextTuple3(10, 20, 30);
-    mesh->GetPointData()->SetScalars(rgb);
-
-    RunResult run = Run(mesh, 0.9);
-    CD_CHECK_MSG(run.Errors == 0, "no error");
-    CD_CHECK_MSG(run.HasWarning("non-manifold"), "a warning about the non-manifold edge");
-    int kept = 0;
-    for (const auto& t : OriginalTriangles(run.Output))
-    {
-      int hits = 0;
-      for (vtkIdType id : t)
-      {
-        hits += (id == a || id == b) ? 1 : 0;
-      }
-      kept += hits == 2 ? 1 : 0;
-    }
-    CD_CHECK_MSG(kept == 3,
-                 "grid " << size << ": the three triangles on the non-manifold edge are kept ("
-                         << kept << ")");
-    CD_CHECK_MSG(run.ActualReduction > 0.5, "the rest of the grid is decimated");
+    const double apex[3] = { 0.0, 0.0, 1.0 };
+    const unsigned char rgb[3] = { 10, 20, 30 };
+    const vtkIdType x = AddFin(grid, a, b, apex, rgb);
+    CheckFin(grid, a, b, x, "grid " + std::to_string(size));
   }
+  const int nx = 40, ny = 30;
+  auto grid = colordecimation::meshes::Grid(nx, ny, Pattern::SmoothGradient);
+  const vtkIdType a = 15 * (nx + 1) + 20, b = 16 * (nx + 1) + 21; // (i,j)-(i+1,j+1)
+  double pa[3], pb[3];
+  grid->GetPoint(a, pa);
+  grid->GetPoint(b, pb);
+  const double apex[3] = { 0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]),
+                           0.5 * (pa[2] + pb[2]) + 0.3 };
+  unsigned char rgb[3];
+  colordecimation::meshes::PatternColor(Pattern::SmoothGradient, apex, rgb);
+  const vtkIdType x = AddFin(grid, a, b, apex, rgb);
+  CheckFin(grid, a, b, x, "grid 40 x 30, smooth");
 }
 
 /// Two grids that share one corner point: a bow-tie vertex.
