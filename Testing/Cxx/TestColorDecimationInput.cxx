@@ -440,60 +440,6 @@ CD_TEST_CASE(VerticesAndLines)
   CheckDecimatedMesh(mesh, r.Output, Expectation{ true, 2, 0, nullptr, true }, "verts+lines");
 }
 
-CD_TEST_CASE(BowTie)
-{
-  // Two grids that touch at one corner: a bow-tie vertex.
-  const int n = 20;
-  auto first = meshes::Grid(n, n, Pattern::Constant);
-  auto second = meshes::Grid(n, n, Pattern::Constant);
-  const vtkIdType shared = (n + 1) * (n + 1) - 1; // first's corner (1, 1)
-  const vtkIdType offset = first->GetNumberOfPoints() - 1;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (vtkIdType i = 0; i < first->GetNumberOfPoints(); ++i)
-  {
-    points->InsertNextPoint(first->GetPoint(i));
-  }
-  for (vtkIdType i = 1; i < second->GetNumberOfPoints(); ++i) // its corner 0 is `shared`
-  {
-    double p[3];
-    second->GetPoint(i, p);
-    points->InsertNextPoint(p[0] + 2, p[1] + 2, -p[2]);
-  }
-  vtkNew<vtkCellArray> polys;
-  for (const Tri& t : GetTriangles(first))
-  {
-    polys->InsertNextCell(3, t.data());
-  }
-  for (const Tri& t : GetTriangles(second))
-  {
-    Tri u;
-    for (int k = 0; k < 3; ++k)
-    {
-      u[k] = t[k] == 0 ? shared : t[k] + offset;
-    }
-    polys->InsertNextCell(3, u.data());
-  }
-  vtkNew<vtkPolyData> mesh;
-  mesh->SetPoints(points);
-  mesh->SetPolys(polys);
-  meshes::ApplyPattern(mesh, Pattern::SharpRegions);
-  Decorate(mesh);
-  CD_CHECK(AnalyseTopology(GetTriangles(mesh)).NonManifoldVertices == 1);
-
-  const RunResult r = Decimate(mesh, 0.9);
-  CD_CHECK_MSG(r.Warnings == 1 && r.Errors == 0, r.WarningText() << r.ErrorText());
-  CD_CHECK(OriginalIds(r.Output).count(shared) == 1);
-  const Topology topo = AnalyseTopology(GetOriginalTriangles(r.Output));
-  CD_CHECK_MSG(topo.NonManifoldVertices == 1 && topo.NonManifoldEdges == 0 &&
-                 topo.MisorientedEdges == 0 && topo.BoundaryLoops == 2,
-               topo);
-  CD_CHECK(std::abs(r.ActualReduction - 0.9) <= 0.01);
-  CD_CHECK(CheckPointDataCopied(mesh, r.Output) == 0);
-  CD_CHECK(CheckCellDataCopied(mesh, r.Output) == 0);
-  CD_CHECK(CountDegenerate(r.Output) == 0);
-}
-
 } // namespace
 
 int main(int argc, char* argv[])
