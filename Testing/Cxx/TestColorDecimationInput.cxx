@@ -313,28 +313,6 @@ CD_TEST_CASE(ColorArrayByName)
   CD_CHECK(std::abs(missing.ActualReduction - 0.9) <= 0.01);
 }
 
-CD_TEST_CASE(ColorNaN)
-{
-  // NaN colour values are measured as 0 (warning) and carried through bit-exactly.
-  auto mesh = meshes::Icosphere(4, Pattern::SmoothGradient);
-  vtkNew<vtkFloatArray> f;
-  f->SetName("Colour");
-  f->SetNumberOfComponents(3);
-  f->SetNumberOfTuples(mesh->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < 3 * mesh->GetNumberOfPoints(); ++i)
-  {
-    f->SetValue(i, RGB(mesh)->GetValue(i) / 255.0f);
-  }
-  f->SetValue(3 * 17 + 1, std::numeric_limits<float>::quiet_NaN());
-  f->SetValue(3 * 100, std::numeric_limits<float>::infinity());
-  SetColors(mesh, f);
-  Decorate(mesh);
-  const RunResult r = Decimate(mesh, 0.9);
-  CD_CHECK(r.Errors == 0 && r.Warnings == 1);
-  CD_CHECK(std::abs(r.ActualReduction - 0.9) <= 0.01);
-  CheckDecimatedMesh(mesh, r.Output, Expectation(), "NaN colours");
-}
-
 //------------------------------------------------------------------------------
 // Bad or unusual input.
 
