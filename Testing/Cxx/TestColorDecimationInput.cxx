@@ -316,21 +316,6 @@ CD_TEST_CASE(ColorArrayByName)
 //------------------------------------------------------------------------------
 // Bad or unusual input.
 
-CD_TEST_CASE(NoColorArray)
-{
-  auto mesh = meshes::Icosphere(5, Pattern::SharpRegions);
-  mesh->GetPointData()->Initialize();
-  Decorate(mesh); // normals, texture coordinates and others, but no scalars
-  const RunResult r = Decimate(mesh, 0.9);
-  CD_CHECK_MSG(r.Warnings == 1 && r.Errors == 0, r.WarningText() << r.ErrorText());
-  CD_CHECK(std::abs(r.ActualReduction - 0.9) <= 0.01);
-  CheckDecimatedMesh(mesh, r.Output, Expectation{ true, 2, 0, nullptr, true }, "no colour");
-  // The Geometry metric needs no colour: no warning.
-  const RunResult g = Decimate(mesh, 0.9, SetGeometry);
-  CD_CHECK_MSG(g.Warnings == 0 && g.Errors == 0, g.WarningText() << g.ErrorText());
-  CD_CHECK(std::abs(g.ActualReduction - 0.9) <= 0.01);
-}
-
 CD_TEST_CASE(Quads)
 {
   vtkNew<vtkPlaneSource> plane;

@@ -951,9 +951,30 @@ Configure ColorFrom(int association, const char* name)
 }
 
 /**
+ * No colour array: a warning, then geometry alone (every invariant of a decimated closed mesh);
+ * the Geometry metric needs no colour: no warning.
+ */
+void CheckNoColor(vtkPolyData* mesh, const std::string& label)
+{
+  Decorate(mesh); // normals, texture coordinates and others, but no scalars
+  RunResult run = Run(mesh, 0.9);
+  CD_CHECK_MSG(run.Errors == 0 && run.Warnings == 1 && run.HasWarning("No colour array"),
+               label << ": one warning: " << run.WarningText());
+  CD_CHECK_MSG(std::abs(run.ActualReduction - 0.9) <= 0.01,
+               label << ": reduction " << run.ActualReduction);
+  CheckDecimatedMesh(mesh, run.Output, Expectation{ true, 2, 0, nullptr, true }, label);
+  RunResult geometry =
+    Run(mesh, 0.9, [](vtkColorHalfEdgeDecimation* f) { f->SetErrorMetricToGeometry(); });
+  ExpectNoMessages(geometry);
+  CD_CHECK_MSG(std::abs(geometry.ActualReduction - 0.9) <= 0.01,
+               label << ": Geometry metric, reduction " << geometry.ActualReduction);
+}
+
+/**
  * Colour array of the wrong length (one tuple short as the scalars or selected by name, five
  * tuples long), or as cell data (selected as cell data, or as points then cells): errors,
- * empty output. No colour array: a warning, geometry alone.
+ * empty output. No colour array (no scalars, or no point data at all): a warning, geometry
+ * alone.
  */
 CD_TEST_CASE(BadColorArrays)
 {
@@ -996,11 +1017,12 @@ CD_TEST_CASE(BadColorArrays)
                          "not a point-data array");
   }
 
-  auto noColors = Copy(mesh);
-  noColors->GetPointData()->SetScalars(nullptr);
-  RunResult run = Run(noColors, 0.9);
-  CD_CHECK_MSG(run.Errors == 0 && run.HasWarning("No colour array"), "no colour array: a warning");
-  ExpectReached(run, 0.9);
+  auto noScalars = Copy(mesh); // the colours stay, as an array that is not the scalars
+  noScalars->GetPointData()->SetScalars(nullptr);
+  CheckNoColor(noScalars, "no scalars");
+  auto noPointData = colordecimation::meshes::Icosphere(5, Pattern::SharpRegions);
+  noPointData->GetPointData()->Initialize();
+  CheckNoColor(noPointData, "no point data");
 }
 
 /**
