@@ -1,6 +1,7 @@
 // Tests of vtkColorHalfEdgeDecimation's input handling: the colour array types and
-// selection, that the metric really uses colour, and bad or unusual input (each must give
-// a defined output, with the error or warning it announces).
+// selection, that the metric really uses colour, and cells other than triangles (each must
+// give a defined output, with the warning it announces). Bad input (empty, non-manifold,
+// invalid coordinates and ids, bad colour arrays, NaN colours) is tested in Testing/Hostile.
 #include "ColorDecimationTestUtilities.h"
 
 #include "ColorDecimationMeshes.h"
@@ -14,13 +15,11 @@
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkStripper.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <cmath>
 #include <iostream>
-#include <limits>
 #include <sstream>
 
 using namespace colordecimation;
@@ -314,7 +313,7 @@ CD_TEST_CASE(ColorArrayByName)
 }
 
 //------------------------------------------------------------------------------
-// Bad or unusual input.
+// Cells other than triangles.
 
 CD_TEST_CASE(Quads)
 {
