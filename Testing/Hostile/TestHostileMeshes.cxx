@@ -777,8 +777,7 @@ vtkSmartPointer<vtkPolyData> ColorMesh()
 vtkSmartPointer<vtkPolyData> WithColorType(vtkPolyData* mesh, int type, int components)
 {
   const auto rgb = RGBOf(mesh);
-  auto copy = vtkSmartPointer<vtkPolyData>::New();
-  copy->DeepCopy(mesh);
+  auto copy = Copy(mesh);
   auto array = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(type));
   array->SetName("Color");
   array->SetNumberOfComponents(components);

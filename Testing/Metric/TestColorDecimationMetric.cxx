@@ -961,8 +961,7 @@ template <typename ArrayT>
 vtkSmartPointer<vtkPolyData> WithColourArray(vtkPolyData* mesh, double offset, double scale,
                                              int components)
 {
-  auto copy = vtkSmartPointer<vtkPolyData>::New();
-  copy->DeepCopy(mesh);
+  auto copy = Copy(mesh);
   auto* uc = vtkUnsignedCharArray::SafeDownCast(mesh->GetPointData()->GetScalars());
   vtkNew<ArrayT> colours;
   colours->SetName("Colours");
