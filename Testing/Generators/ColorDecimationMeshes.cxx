@@ -28,30 +28,6 @@ unsigned char ToByte(double x)
   return static_cast<unsigned char>(std::lround(255.0 * x));
 }
 
-vtkSmartPointer<vtkPolyData> MakePolyData(const std::vector<double>& xyz,
-                                          const std::vector<vtkIdType>& triangles)
-{
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(xyz.size() / 3));
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-  {
-    points->SetPoint(i, &xyz[3 * i]);
-  }
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfValues(static_cast<vtkIdType>(triangles.size()));
-  for (size_t i = 0; i < triangles.size(); ++i)
-  {
-    connectivity->SetValue(static_cast<vtkIdType>(i), triangles[i]);
-  }
-  vtkNew<vtkCellArray> polys;
-  polys->SetData(3, connectivity);
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(polys);
-  return mesh;
-}
-
 /// The square sheet in [-1,1]^2 of Grid (waved) or FlatGrid (z = 0).
 vtkSmartPointer<vtkPolyData> MakeGrid(int nx, int ny, bool waved, Pattern pattern)
 {
@@ -78,11 +54,35 @@ vtkSmartPointer<vtkPolyData> MakeGrid(int nx, int ny, bool waved, Pattern patter
       tris.insert(tris.end(), quad, quad + 6);
     }
   }
-  auto mesh = MakePolyData(xyz, tris);
+  auto mesh = FromTriangles(xyz, tris);
   ApplyPattern(mesh, pattern);
   return mesh;
 }
 } // namespace
+
+vtkSmartPointer<vtkPolyData> FromTriangles(const std::vector<double>& xyz,
+                                           const std::vector<vtkIdType>& triangles)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(xyz.size() / 3));
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    points->SetPoint(i, &xyz[3 * i]);
+  }
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(static_cast<vtkIdType>(triangles.size()));
+  for (size_t i = 0; i < triangles.size(); ++i)
+  {
+    connectivity->SetValue(static_cast<vtkIdType>(i), triangles[i]);
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(3, connectivity);
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  return mesh;
+}
 
 void PatternColor(Pattern pattern, const double p[3], unsigned char rgb[3])
 {
@@ -197,7 +197,7 @@ vtkSmartPointer<vtkPolyData> Icosphere(int level, Pattern pattern)
     }
     tris.swap(next);
   }
-  auto mesh = MakePolyData(xyz, tris);
+  auto mesh = FromTriangles(xyz, tris);
   ApplyPattern(mesh, pattern);
   return mesh;
 }
@@ -252,7 +252,7 @@ vtkSmartPointer<vtkPolyData> Torus(int nu, int nv, Pattern pattern)
       tris.insert(tris.end(), quad, quad + 6);
     }
   }
-  auto mesh = MakePolyData(xyz, tris);
+  auto mesh = FromTriangles(xyz, tris);
   ApplyPattern(mesh, pattern);
   return mesh;
 }

@@ -22,6 +22,8 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <vector>
+
 namespace colordecimation
 {
 namespace meshes
@@ -51,6 +53,13 @@ vtkSmartPointer<vtkPolyData> Torus(int nu, int nv, Pattern pattern);
 vtkSmartPointer<vtkPolyData> Grid(int nx, int ny, Pattern pattern);
 /// Grid's points at z = 0 (every quadric of a flat mesh is singular), 2 nx ny triangles.
 vtkSmartPointer<vtkPolyData> FlatGrid(int nx, int ny, Pattern pattern);
+
+/**
+ * A mesh without colours of the points `xyz` (3 coordinates each, double) and the triangles
+ * `triangles` (3 point ids each), as the shapes above are made.
+ */
+vtkSmartPointer<vtkPolyData> FromTriangles(const std::vector<double>& xyz,
+                                           const std::vector<vtkIdType>& triangles);
 
 /// A UV sphere with about `triangles` triangles (for benchmarks at a given size).
 vtkSmartPointer<vtkPolyData> UVSphereWithTriangles(long long triangles, Pattern pattern);

@@ -104,25 +104,21 @@ void ExpectReached(const RunResult& run, double target, double slack = 0.02)
 //------------------------------------------------------------------------------
 // Meshes.
 
+/// meshes::FromTriangles of points and triangles held as triples.
 vtkSmartPointer<vtkPolyData> Make(const std::vector<std::array<double, 3>>& points,
                                   const Triangles& triangles)
 {
-  vtkNew<vtkPoints> pts;
-  pts->SetDataTypeToDouble();
+  std::vector<double> xyz;
   for (const auto& p : points)
   {
-    pts->InsertNextPoint(p.data());
+    xyz.insert(xyz.end(), p.begin(), p.end());
   }
-  vtkNew<vtkCellArray> polys;
+  std::vector<vtkIdType> ids;
   for (const auto& t : triangles)
   {
-    const vtkIdType ids[3] = { t[0], t[1], t[2] };
-    polys->InsertNextCell(3, ids);
+    ids.insert(ids.end(), t.begin(), t.end());
   }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(pts);
-  mesh->SetPolys(polys);
-  return mesh;
+  return colordecimation::meshes::FromTriangles(xyz, ids);
 }
 
 std::vector<std::array<double, 3>> PointsOf(vtkPolyData* mesh)
