@@ -707,6 +707,41 @@ int CheckDecimatedMesh(vtkPolyData* input, vtkPolyData* output, const Expectatio
 }
 
 //------------------------------------------------------------------------------
+void CheckDecimations(vtkPolyData* mesh, const Expectation& expected, const std::string& name,
+                      const Configure& configure)
+{
+  Decorate(mesh);
+  const vtkIdType input = mesh->GetNumberOfPolys();
+  for (double reduction : { 0.5, 0.9, 0.97 })
+  {
+    std::ostringstream label;
+    label << name << " at " << reduction;
+    const RunResult r = Decimate(mesh, reduction, configure);
+    const vtkIdType output = r.Output->GetNumberOfPolys();
+    std::cout << "  " << label.str() << ": " << input << " -> " << output << " triangles, "
+              << r.Collapses << " collapses, actual " << r.ActualReduction << std::endl;
+    CD_CHECK_MSG(r.Errors == 0 && r.Warnings == 0,
+                 label.str() << ": unexpected messages: " << r.ErrorText() << r.WarningText());
+    CD_CHECK_NEAR(r.ActualReduction, 1.0 - double(output) / double(input), 1e-12);
+    CD_CHECK_MSG(std::abs(r.ActualReduction - reduction) <= 0.01,
+                 label.str() << ": actual reduction " << r.ActualReduction);
+    // Each collapse removes one vertex and one (boundary) or two triangles.
+    CD_CHECK_MSG(r.Collapses == mesh->GetNumberOfPoints() - r.Output->GetNumberOfPoints(),
+                 label.str() << ": " << r.Collapses << " collapses, "
+                             << mesh->GetNumberOfPoints() - r.Output->GetNumberOfPoints()
+                             << " points removed");
+    CheckDecimatedMesh(mesh, r.Output, expected, label.str());
+    if (reduction == 0.5)
+    {
+      // Enough untouched triangles for the cell-data mapping to be checked on them.
+      long long untouched = 0;
+      CheckCellDataCopied(mesh, r.Output, &untouched);
+      CD_CHECK_MSG(untouched > output / 10, label.str() << ": " << untouched << " untouched");
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 Expectation ClosedSurface(long long euler, void (*normal)(const double*, double*))
 {
   Expectation e;

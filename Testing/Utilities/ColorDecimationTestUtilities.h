@@ -278,6 +278,15 @@ int CheckDecimatedMesh(vtkPolyData* input, vtkPolyData* output, const Expectatio
                        const std::string& label);
 
 /**
+ * Decorate `mesh`, decimate it at 0.5, 0.9 and 0.97 (`configure` may set anything else) and
+ * check every run: no message, the target met within 0.01 and ActualReduction exact, one
+ * collapse per point removed, CheckDecimatedMesh, and at 0.5 enough untouched triangles for
+ * the cell-data mapping to be checked on them.
+ */
+void CheckDecimations(vtkPolyData* mesh, const Expectation& expected, const std::string& name,
+                      const Configure& configure = nullptr);
+
+/**
  * Add arrays that the filter must carry through: point data "Normals" (float 3, set as
  * normals), "TCoords" (float 2), "Label" (int), "Bits" (double, with NaN, -0 and denormals);
  * cell data "SourceId" (vtkIdType, the cell id) and "Material" (float); field data
