@@ -1215,6 +1215,51 @@ CD_TEST_CASE(ExistingOriginalIds)
 }
 
 /**
+ * A colour array of `type` with `components` components, decimated with `configure`: no
+ * message, the target reached, the array keeps its type and width, and its values (moved ones
+ * too) stay inside the domain of the array's mapping to [0,1]: [0,1] for floating values
+ * already in it, otherwise the range of the colour components (alpha, copied, inside its own
+ * range).
+ */
+void CheckColorKept(int type, int components, const std::string& label, const Configure& configure)
+{
+  auto mesh = WithColorType(ColorMesh(), type, components);
+  RunResult run = Run(mesh, 0.9, configure);
+  ExpectNoMessages(run);
+  ExpectReached(run, 0.9);
+  vtkDataArray* in = mesh->GetPointData()->GetScalars();
+  vtkDataArray* out = run.Output->GetPointData()->GetArray("Color");
+  CD_CHECK_MSG(out && out->GetDataType() == type && out->GetNumberOfComponents() == components,
+               label << ": the colour array keeps its type and width");
+  const int used = components >= 3 ? 3 : 1;
+  double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
+  for (int k = 0; k < used; ++k)
+  {
+    double r[2];
+    in->GetRange(r, k);
+    lo = std::min(lo, r[0]);
+    hi = std::max(hi, r[1]);
+  }
+  if ((type == VTK_FLOAT || type == VTK_DOUBLE) && lo >= 0 && hi <= 1)
+  {
+    lo = 0;
+    hi = 1;
+  }
+  for (int k = 0; out && k < components; ++k)
+  {
+    double domain[2] = { lo, hi }, outRange[2];
+    if (k >= 3)
+    {
+      in->GetRange(domain, k);
+    }
+    out->GetRange(outRange, k);
+    CD_CHECK_MSG(outRange[0] >= domain[0] && outRange[1] <= domain[1],
+                 label << ": component " << k << " range [" << outRange[0] << ", " << outRange[1]
+                       << "] inside [" << domain[0] << ", " << domain[1] << "]");
+  }
+}
+
+/**
  * The comparison metrics on hostile input: ColorQuadric with half-edge collapses and with
  * OptimalPlacement (points and colours move), and the paper's metric in CIELab. Closed
  * surfaces keep their Euler characteristic at TargetReduction 1, flat grids stay unflipped,
@@ -1276,46 +1321,10 @@ CD_TEST_CASE(OtherMetrics)
     {
       for (int components : { 1, 3, 4 })
       {
-        auto mesh = WithColorType(ColorMesh(), type.first, components);
-        RunResult run = Run(mesh, 0.9, configure);
-        ExpectNoMessages(run);
-        ExpectReached(run, 0.9);
-        vtkDataArray* in = mesh->GetPointData()->GetScalars();
-        vtkDataArray* out = run.Output->GetPointData()->GetArray("Color");
-        CD_CHECK_MSG(out && out->GetDataType() == type.first &&
-                       out->GetNumberOfComponents() == components,
-                     setting.Name << ", " << type.second << " x " << components
-                                  << ": the colour array keeps its type and width");
-        // Moved colours stay inside the domain of the array's mapping to [0,1]: [0,1] for
-        // floating values already in it, otherwise the range of the colour components
-        // (alpha, copied, inside its own range).
-        const int used = components >= 3 ? 3 : 1;
-        double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
-        for (int k = 0; k < used; ++k)
-        {
-          double r[2];
-          in->GetRange(r, k);
-          lo = std::min(lo, r[0]);
-          hi = std::max(hi, r[1]);
-        }
-        if ((type.first == VTK_FLOAT || type.first == VTK_DOUBLE) && lo >= 0 && hi <= 1)
-        {
-          lo = 0;
-          hi = 1;
-        }
-        for (int k = 0; out && k < components; ++k)
-        {
-          double domain[2] = { lo, hi }, outRange[2];
-          if (k >= 3)
-          {
-            in->GetRange(domain, k);
-          }
-          out->GetRange(outRange, k);
-          CD_CHECK_MSG(outRange[0] >= domain[0] && outRange[1] <= domain[1],
-                       setting.Name << ", " << type.second << " x " << components << ": component "
-                                    << k << " range [" << outRange[0] << ", " << outRange[1]
-                                    << "] inside [" << domain[0] << ", " << domain[1] << "]");
-        }
+        CheckColorKept(type.first, components,
+                       std::string(setting.Name) + ", " + type.second + " x " +
+                         std::to_string(components),
+                       configure);
       }
     }
     auto nan = WithColorType(ColorMesh(), VTK_FLOAT, 3);
