@@ -25,43 +25,6 @@ using meshes::Pattern;
 
 namespace
 {
-const double Reductions[3] = { 0.5, 0.9, 0.97 };
-
-/// Decimate a decorated copy of `mesh` at 0.5, 0.9 and 0.97 and check every invariant.
-void CheckInvariants(vtkPolyData* mesh, const Expectation& expected, const std::string& name,
-                     const std::function<void(vtkColorHalfEdgeDecimation*)>& configure = nullptr)
-{
-  Decorate(mesh);
-  const vtkIdType input = mesh->GetNumberOfPolys();
-  for (double reduction : Reductions)
-  {
-    std::ostringstream label;
-    label << name << " at " << reduction;
-    const RunResult r = Decimate(mesh, reduction, configure);
-    const vtkIdType output = r.Output->GetNumberOfPolys();
-    std::cout << "  " << label.str() << ": " << input << " -> " << output << " triangles, "
-              << r.Collapses << " collapses, actual " << r.ActualReduction << std::endl;
-    CD_CHECK_MSG(r.Errors == 0 && r.Warnings == 0,
-                 label.str() << ": unexpected messages: " << r.ErrorText << r.WarningText);
-    CD_CHECK_NEAR(r.ActualReduction, 1.0 - double(output) / double(input), 1e-12);
-    CD_CHECK_MSG(std::abs(r.ActualReduction - reduction) <= 0.01,
-                 label.str() << ": actual reduction " << r.ActualReduction);
-    // Each collapse removes one vertex and one (boundary) or two triangles.
-    CD_CHECK_MSG(r.Collapses == mesh->GetNumberOfPoints() - r.Output->GetNumberOfPoints(),
-                 label.str() << ": " << r.Collapses << " collapses, "
-                             << mesh->GetNumberOfPoints() - r.Output->GetNumberOfPoints()
-                             << " points removed");
-    CheckDecimatedMesh(mesh, r.Output, expected, label.str());
-    if (reduction == 0.5)
-    {
-      // Enough untouched triangles for the cell-data mapping to be checked on them.
-      long long untouched = 0;
-      CheckCellDataCopied(mesh, r.Output, &untouched);
-      CD_CHECK_MSG(untouched > output / 10, label.str() << ": " << untouched << " untouched");
-    }
-  }
-}
-
 /// The same without the flip check, for tests about something else (the Invariants tests
 /// check flips).
 Expectation WithoutFlipCheck(Expectation e)
@@ -70,52 +33,52 @@ Expectation WithoutFlipCheck(Expectation e)
   return e;
 }
 
-void TestInvariantsIcosphereSharp()
+CD_TEST_CASE(InvariantsIcosphereSharp)
 {
-  CheckInvariants(meshes::Icosphere(5, Pattern::SharpRegions), ClosedSurface(2, SphereNormal),
-                  "Icosphere(5)");
+  CheckDecimations(meshes::Icosphere(5, Pattern::SharpRegions), ClosedSurface(2, SphereNormal),
+                   "Icosphere(5)");
 }
 
-void TestInvariantsUVSphereSmooth()
+CD_TEST_CASE(InvariantsUVSphereSmooth)
 {
-  CheckInvariants(meshes::UVSphere(100, Pattern::SmoothGradient), ClosedSurface(2, SphereNormal),
-                  "UVSphere(100)");
+  CheckDecimations(meshes::UVSphere(100, Pattern::SmoothGradient), ClosedSurface(2, SphereNormal),
+                   "UVSphere(100)");
 }
 
-void TestInvariantsTorusSharp()
+CD_TEST_CASE(InvariantsTorusSharp)
 {
   // Float points: their type and bits must be kept too.
   auto torus = WithFloatPoints(meshes::Torus(150, 60, Pattern::SharpRegions));
-  CheckInvariants(torus, ClosedSurface(0, TorusNormal), "Torus(150,60) float");
+  CheckDecimations(torus, ClosedSurface(0, TorusNormal), "Torus(150,60) float");
 }
 
-void TestInvariantsTorusFineDetail()
+CD_TEST_CASE(InvariantsTorusFineDetail)
 {
-  CheckInvariants(meshes::Torus(120, 48, Pattern::FineDetail), ClosedSurface(0, TorusNormal),
-                  "Torus(120,48)");
+  CheckDecimations(meshes::Torus(120, 48, Pattern::FineDetail), ClosedSurface(0, TorusNormal),
+                   "Torus(120,48)");
 }
 
-void TestInvariantsGridSmooth()
+CD_TEST_CASE(InvariantsGridSmooth)
 {
-  CheckInvariants(meshes::Grid(80, 60, Pattern::SmoothGradient), OpenSheet(), "Grid(80,60)");
+  CheckDecimations(meshes::Grid(80, 60, Pattern::SmoothGradient), OpenSheet(), "Grid(80,60)");
 }
 
-void TestInvariantsGridSharp()
+CD_TEST_CASE(InvariantsGridSharp)
 {
-  CheckInvariants(meshes::Grid(90, 70, Pattern::SharpRegions), OpenSheet(), "Grid(90,70)");
+  CheckDecimations(meshes::Grid(90, 70, Pattern::SharpRegions), OpenSheet(), "Grid(90,70)");
 }
 
 /// Meshes of more than Decimator::LargeMeshVertices points are decimated renumbered in a
 /// spatial order and with prefetching: the same invariants, in the input's ids.
-void TestInvariantsLargeTorus()
+CD_TEST_CASE(InvariantsLargeTorus)
 {
-  CheckInvariants(meshes::Torus(400, 180, Pattern::FineDetail), ClosedSurface(0, TorusNormal),
-                  "Torus(400,180)");
+  CheckDecimations(meshes::Torus(400, 180, Pattern::FineDetail), ClosedSurface(0, TorusNormal),
+                   "Torus(400,180)");
 }
 
-void TestInvariantsLargeGrid()
+CD_TEST_CASE(InvariantsLargeGrid)
 {
-  CheckInvariants(meshes::Grid(290, 260, Pattern::SharpRegions), OpenSheet(), "Grid(290,260)");
+  CheckDecimations(meshes::Grid(290, 260, Pattern::SharpRegions), OpenSheet(), "Grid(290,260)");
 }
 
 /// The Batched schedule keeps every invariant: the same rules decide each collapse.
@@ -125,23 +88,23 @@ void Batched(vtkColorHalfEdgeDecimation* f)
   f->SetNumberOfThreads(2);
 }
 
-void TestInvariantsBatchedTorus()
+CD_TEST_CASE(InvariantsBatchedTorus)
 {
-  CheckInvariants(meshes::Torus(150, 60, Pattern::SharpRegions), ClosedSurface(0, TorusNormal),
-                  "Torus(150,60) batched", Batched);
+  CheckDecimations(meshes::Torus(150, 60, Pattern::SharpRegions), ClosedSurface(0, TorusNormal),
+                   "Torus(150,60) batched", Batched);
 }
 
-void TestInvariantsBatchedSphere()
+CD_TEST_CASE(InvariantsBatchedSphere)
 {
-  CheckInvariants(meshes::UVSphere(100, Pattern::FineDetail), ClosedSurface(2, SphereNormal),
-                  "UVSphere(100) batched", Batched);
+  CheckDecimations(meshes::UVSphere(100, Pattern::FineDetail), ClosedSurface(2, SphereNormal),
+                   "UVSphere(100) batched", Batched);
 }
 
 /// Large enough to be renumbered, and to re-cost on both threads.
-void TestInvariantsBatchedLargeGrid()
+CD_TEST_CASE(InvariantsBatchedLargeGrid)
 {
-  CheckInvariants(meshes::Grid(290, 260, Pattern::SharpRegions), OpenSheet(),
-                  "Grid(290,260) batched", Batched);
+  CheckDecimations(meshes::Grid(290, 260, Pattern::SharpRegions), OpenSheet(),
+                   "Grid(290,260) batched", Batched);
 }
 
 //------------------------------------------------------------------------------
@@ -198,7 +161,7 @@ vtkSmartPointer<vtkPolyData> Jittered(vtkSmartPointer<vtkPolyData> mesh, double 
   return mesh;
 }
 
-void TestScaleTranslationInvariance()
+CD_TEST_CASE(ScaleTranslationInvariance)
 {
   auto sphere = Jittered(meshes::Icosphere(4, Pattern::SharpRegions), 5e-4);
   auto torus = Jittered(meshes::Torus(60, 24, Pattern::SmoothGradient), 5e-4);
@@ -212,10 +175,11 @@ void TestScaleTranslationInvariance()
 }
 
 //------------------------------------------------------------------------------
-void TestTargetReductionZero()
+CD_TEST_CASE(TargetReductionZero)
 {
-  for (auto mesh : { meshes::Icosphere(3, Pattern::SharpRegions),
-                     meshes::Grid(30, 20, Pattern::SmoothGradient) })
+  for (auto mesh :
+       { meshes::Icosphere(3, Pattern::SharpRegions), meshes::Torus(40, 20, Pattern::FineDetail),
+         meshes::Grid(30, 20, Pattern::SmoothGradient) })
   {
     Decorate(mesh);
     const RunResult r = Decimate(mesh, 0.0);
@@ -233,19 +197,25 @@ void TestTargetReductionZero()
   }
 }
 
-void TestTargetReductionOne()
+CD_TEST_CASE(TargetReductionOne)
 {
   struct Case
   {
     vtkSmartPointer<vtkPolyData> Mesh;
     Expectation Expected;
     const char* Name;
+    bool Exhausted; ///< decimating the result again finds no valid collapse
   };
+  // Torus(40,20): decimating its result again still finds a few collapses (3 with VTK 9.1).
   const Case cases[] = {
-    { meshes::Icosphere(3, Pattern::SharpRegions), ClosedSurface(2, SphereNormal), "Icosphere(3)" },
-    { meshes::Torus(40, 16, Pattern::SmoothGradient), ClosedSurface(0, TorusNormal),
-      "Torus(40,16)" },
-    { meshes::Grid(24, 18, Pattern::SharpRegions), OpenSheet(), "Grid(24,18)" }
+    { meshes::Icosphere(3, Pattern::SharpRegions), ClosedSurface(2, SphereNormal), "Icosphere(3)",
+      true },
+    { meshes::Torus(40, 16, Pattern::SmoothGradient), ClosedSurface(0, TorusNormal), "Torus(40,16)",
+      true },
+    { meshes::Torus(40, 20, Pattern::SmoothGradient), ClosedSurface(0, TorusNormal), "Torus(40,20)",
+      false },
+    { meshes::Grid(24, 18, Pattern::SharpRegions), OpenSheet(), "Grid(24,18)", true },
+    { meshes::Grid(30, 30, Pattern::FineDetail), OpenSheet(), "Grid(30,30) fine detail", true }
   };
   for (const Case& c : cases)
   {
@@ -259,13 +229,13 @@ void TestTargetReductionOne()
     CheckDecimatedMesh(c.Mesh, r.Output, WithoutFlipCheck(c.Expected), c.Name);
     // As far as it can go: decimating the result again finds no valid collapse.
     const RunResult again = Decimate(r.Output, 1.0);
-    CD_CHECK_MSG(again.Collapses == 0,
+    CD_CHECK_MSG(again.Collapses == 0 || !c.Exhausted,
                  c.Name << ": " << again.Collapses << " more collapses were possible");
   }
 }
 
 //------------------------------------------------------------------------------
-void TestPreserveBoundary()
+CD_TEST_CASE(PreserveBoundary)
 {
   auto grid = meshes::Grid(60, 40, Pattern::SharpRegions);
   Decorate(grid);
@@ -365,7 +335,7 @@ void CheckProgress(int schedule)
   CD_CHECK(!log.Values.empty() && log.Values.back() == 1.0);
 }
 
-void TestProgress()
+CD_TEST_CASE(Progress)
 {
   for (int schedule : { vtkColorHalfEdgeDecimation::Greedy, vtkColorHalfEdgeDecimation::Batched })
   {
@@ -403,7 +373,7 @@ void CheckAbort(int schedule)
   }
 }
 
-void TestAbort()
+CD_TEST_CASE(Abort)
 {
   for (int schedule : { vtkColorHalfEdgeDecimation::Greedy, vtkColorHalfEdgeDecimation::Batched })
   {
@@ -412,7 +382,7 @@ void TestAbort()
 }
 
 //------------------------------------------------------------------------------
-void TestPrintSelf()
+CD_TEST_CASE(PrintSelf)
 {
   vtkNew<vtkColorHalfEdgeDecimation> filter;
   filter->SetTargetReduction(0.25);
@@ -450,7 +420,7 @@ void TestPrintSelf()
   CD_CHECK(after.str().find("ErrorMetric: HalfEdgeColor") != std::string::npos);
 }
 
-void TestProperties()
+CD_TEST_CASE(Properties)
 {
   vtkNew<vtkColorHalfEdgeDecimation> f;
   CD_CHECK(f->GetTargetReduction() == 0.9);
@@ -555,24 +525,5 @@ void TestProperties()
 
 int main(int argc, char* argv[])
 {
-  return RunTestCases(argc, argv,
-                      { { "InvariantsIcosphereSharp", TestInvariantsIcosphereSharp },
-                        { "InvariantsUVSphereSmooth", TestInvariantsUVSphereSmooth },
-                        { "InvariantsTorusSharp", TestInvariantsTorusSharp },
-                        { "InvariantsTorusFineDetail", TestInvariantsTorusFineDetail },
-                        { "InvariantsGridSmooth", TestInvariantsGridSmooth },
-                        { "InvariantsGridSharp", TestInvariantsGridSharp },
-                        { "InvariantsLargeTorus", TestInvariantsLargeTorus },
-                        { "InvariantsLargeGrid", TestInvariantsLargeGrid },
-                        { "InvariantsBatchedTorus", TestInvariantsBatchedTorus },
-                        { "InvariantsBatchedSphere", TestInvariantsBatchedSphere },
-                        { "InvariantsBatchedLargeGrid", TestInvariantsBatchedLargeGrid },
-                        { "ScaleTranslationInvariance", TestScaleTranslationInvariance },
-                        { "TargetReductionZero", TestTargetReductionZero },
-                        { "TargetReductionOne", TestTargetReductionOne },
-                        { "PreserveBoundary", TestPreserveBoundary },
-                        { "Progress", TestProgress },
-                        { "Abort", TestAbort },
-                        { "PrintSelf", TestPrintSelf },
-                        { "Properties", TestProperties } });
+  return RunTestCases(argc, argv);
 }

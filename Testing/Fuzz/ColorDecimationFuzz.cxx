@@ -1,6 +1,6 @@
 #include "ColorDecimationFuzz.h"
 
-#include "ColorDecimationInvariants.h"
+#include "ColorDecimationTestUtilities.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -435,43 +435,28 @@ vtkSmartPointer<vtkPolyData> Build(ByteReader& in, Settings& settings)
   return mesh;
 }
 
-struct Result
+/// The filter with the settings, on `mesh`; the invariants are checked (RunFilter).
+colordecimation::testing::RunResult Decimate(vtkPolyData* mesh, const Settings& settings)
 {
-  vtkSmartPointer<vtkPolyData> Output;
-  vtkIdType Collapses = 0;
-  bool Error = false;
-  std::vector<std::string> Broken;
-};
-
-Result Decimate(vtkPolyData* mesh, const Settings& settings)
-{
-  vtkNew<vtkColorHalfEdgeDecimation> filter;
-  colordecimation::hostile::EventCounter events;
-  events.Observe(filter);
-  filter->SetInputData(mesh);
-  filter->SetErrorMetric(settings.Metric);
-  filter->SetColorSpace(settings.ColorSpace);
-  filter->SetOptimalPlacement(settings.OptimalPlacement);
-  filter->SetCollapseSchedule(settings.Schedule);
-  filter->SetColorWeight(settings.ColorWeight);
-  filter->SetPreserveBoundary(settings.PreserveBoundary);
-  filter->SetGenerateOriginalPointIds(settings.GenerateIds);
-  filter->SetTargetReduction(settings.TargetReduction);
-  filter->SetMaximumNormalAngle(settings.NormalAngle);
-  filter->SetGeometryWeight(settings.GeometryWeight);
-  if (settings.ColorByName)
-  {
-    filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS,
-                                   "Color");
-  }
-  filter->Update();
-  Result result;
-  result.Output = filter->GetOutput();
-  result.Collapses = filter->GetNumberOfCollapses();
-  result.Error = events.Errors > 0;
-  result.Broken =
-    colordecimation::hostile::CheckInvariants(mesh, filter, result.Output, result.Error);
-  return result;
+  return colordecimation::testing::RunFilter(
+    mesh, settings.TargetReduction,
+    [&settings](vtkColorHalfEdgeDecimation* filter)
+    {
+      filter->SetErrorMetric(settings.Metric);
+      filter->SetColorSpace(settings.ColorSpace);
+      filter->SetOptimalPlacement(settings.OptimalPlacement);
+      filter->SetCollapseSchedule(settings.Schedule);
+      filter->SetColorWeight(settings.ColorWeight);
+      filter->SetPreserveBoundary(settings.PreserveBoundary);
+      filter->SetGenerateOriginalPointIds(settings.GenerateIds);
+      filter->SetMaximumNormalAngle(settings.NormalAngle);
+      filter->SetGeometryWeight(settings.GeometryWeight);
+      if (settings.ColorByName)
+      {
+        filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS,
+                                       "Color");
+      }
+    });
 }
 
 } // namespace
@@ -488,14 +473,14 @@ std::vector<std::string> RunOne(const uint8_t* data, size_t size)
   Settings settings;
   vtkSmartPointer<vtkPolyData> mesh = Build(in, settings);
 
-  Result first = Decimate(mesh, settings);
+  const auto first = Decimate(mesh, settings);
   std::vector<std::string> broken = first.Broken;
 
   // The same input and settings must give the same output.
-  Result second = Decimate(mesh, settings);
-  const auto a = colordecimation::hostile::TrianglesOf(first.Output);
-  const auto b = colordecimation::hostile::TrianglesOf(second.Output);
-  if (a != b || first.Collapses != second.Collapses || first.Error != second.Error ||
+  const auto second = Decimate(mesh, settings);
+  const auto a = colordecimation::testing::GetTriangles(first.Output);
+  const auto b = colordecimation::testing::GetTriangles(second.Output);
+  if (a != b || first.Collapses != second.Collapses || first.Errors != second.Errors ||
       first.Output->GetNumberOfPoints() != second.Output->GetNumberOfPoints())
   {
     broken.push_back("two runs on the same input differ");

@@ -1,7 +1,8 @@
 /**
  * @file ColorDecimationFuzz.h
  * @brief The body of the fuzz target: bytes -> a small vtkPolyData and filter settings ->
- * vtkColorHalfEdgeDecimation -> the output invariants (ColorDecimationInvariants.h).
+ * vtkColorHalfEdgeDecimation -> the output invariants (Testing/Utilities,
+ * ColorDecimationInvariants.h).
  *
  * The same body is linked into the libFuzzer target (Clang builds with COLORDECIMATION_FUZZ)
  * and into ColorDecimationFuzzReplay, a plain executable that replays files (the committed

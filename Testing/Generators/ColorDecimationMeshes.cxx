@@ -28,8 +28,40 @@ unsigned char ToByte(double x)
   return static_cast<unsigned char>(std::lround(255.0 * x));
 }
 
-vtkSmartPointer<vtkPolyData> MakePolyData(const std::vector<double>& xyz,
-                                          const std::vector<vtkIdType>& triangles)
+/// The square sheet in [-1,1]^2 of Grid (waved) or FlatGrid (z = 0).
+vtkSmartPointer<vtkPolyData> MakeGrid(int nx, int ny, bool waved, Pattern pattern)
+{
+  std::vector<double> xyz;
+  xyz.reserve(3 * static_cast<size_t>(nx + 1) * (ny + 1));
+  for (int j = 0; j <= ny; ++j)
+  {
+    for (int i = 0; i <= nx; ++i)
+    {
+      const double x = -1.0 + 2.0 * i / nx, y = -1.0 + 2.0 * j / ny;
+      xyz.push_back(x);
+      xyz.push_back(y);
+      xyz.push_back(waved ? 0.15 * std::sin(2.0 * x) * std::cos(1.5 * y) : 0.0);
+    }
+  }
+  std::vector<vtkIdType> tris;
+  tris.reserve(6 * static_cast<size_t>(nx) * ny);
+  for (int j = 0; j < ny; ++j)
+  {
+    for (int i = 0; i < nx; ++i)
+    {
+      const vtkIdType a = j * (nx + 1) + i, b = a + 1, c = a + nx + 2, d = a + nx + 1;
+      const vtkIdType quad[6] = { a, b, c, a, c, d };
+      tris.insert(tris.end(), quad, quad + 6);
+    }
+  }
+  auto mesh = FromTriangles(xyz, tris);
+  ApplyPattern(mesh, pattern);
+  return mesh;
+}
+} // namespace
+
+vtkSmartPointer<vtkPolyData> FromTriangles(const std::vector<double>& xyz,
+                                           const std::vector<vtkIdType>& triangles)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -51,7 +83,6 @@ vtkSmartPointer<vtkPolyData> MakePolyData(const std::vector<double>& xyz,
   mesh->SetPolys(polys);
   return mesh;
 }
-} // namespace
 
 void PatternColor(Pattern pattern, const double p[3], unsigned char rgb[3])
 {
@@ -166,7 +197,7 @@ vtkSmartPointer<vtkPolyData> Icosphere(int level, Pattern pattern)
     }
     tris.swap(next);
   }
-  auto mesh = MakePolyData(xyz, tris);
+  auto mesh = FromTriangles(xyz, tris);
   ApplyPattern(mesh, pattern);
   return mesh;
 }
@@ -221,39 +252,19 @@ vtkSmartPointer<vtkPolyData> Torus(int nu, int nv, Pattern pattern)
       tris.insert(tris.end(), quad, quad + 6);
     }
   }
-  auto mesh = MakePolyData(xyz, tris);
+  auto mesh = FromTriangles(xyz, tris);
   ApplyPattern(mesh, pattern);
   return mesh;
 }
 
 vtkSmartPointer<vtkPolyData> Grid(int nx, int ny, Pattern pattern)
 {
-  std::vector<double> xyz;
-  xyz.reserve(3 * static_cast<size_t>(nx + 1) * (ny + 1));
-  for (int j = 0; j <= ny; ++j)
-  {
-    for (int i = 0; i <= nx; ++i)
-    {
-      const double x = -1.0 + 2.0 * i / nx, y = -1.0 + 2.0 * j / ny;
-      xyz.push_back(x);
-      xyz.push_back(y);
-      xyz.push_back(0.15 * std::sin(2.0 * x) * std::cos(1.5 * y));
-    }
-  }
-  std::vector<vtkIdType> tris;
-  tris.reserve(6 * static_cast<size_t>(nx) * ny);
-  for (int j = 0; j < ny; ++j)
-  {
-    for (int i = 0; i < nx; ++i)
-    {
-      const vtkIdType a = j * (nx + 1) + i, b = a + 1, c = a + nx + 2, d = a + nx + 1;
-      const vtkIdType quad[6] = { a, b, c, a, c, d };
-      tris.insert(tris.end(), quad, quad + 6);
-    }
-  }
-  auto mesh = MakePolyData(xyz, tris);
-  ApplyPattern(mesh, pattern);
-  return mesh;
+  return MakeGrid(nx, ny, true, pattern);
+}
+
+vtkSmartPointer<vtkPolyData> FlatGrid(int nx, int ny, Pattern pattern)
+{
+  return MakeGrid(nx, ny, false, pattern);
 }
 
 } // namespace meshes

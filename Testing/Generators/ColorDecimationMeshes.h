@@ -8,7 +8,8 @@
  * - UVSphere: vtkSphereSource's latitude-longitude sphere (closed, two high-valence poles),
  *   the benchmark's "coloured sphere";
  * - Torus: closed, genus 1 (radii 1 and 0.35);
- * - Grid: an open, gently waved square sheet in [-1,1]^2 with one boundary loop.
+ * - Grid: an open, gently waved square sheet in [-1,1]^2 with one boundary loop;
+ * - FlatGrid: the same sheet, flat (z = 0).
  * Colour patterns are functions of the position (so they are resolution-independent):
  * - SharpRegions: a few flat-coloured regions with sharp borders;
  * - SmoothGradient: a smooth colour ramp;
@@ -20,6 +21,8 @@
 
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+
+#include <vector>
 
 namespace colordecimation
 {
@@ -48,6 +51,15 @@ vtkSmartPointer<vtkPolyData> UVSphere(int resolution, Pattern pattern);
 vtkSmartPointer<vtkPolyData> Torus(int nu, int nv, Pattern pattern);
 /// 2 nx ny triangles.
 vtkSmartPointer<vtkPolyData> Grid(int nx, int ny, Pattern pattern);
+/// Grid's points at z = 0 (every quadric of a flat mesh is singular), 2 nx ny triangles.
+vtkSmartPointer<vtkPolyData> FlatGrid(int nx, int ny, Pattern pattern);
+
+/**
+ * A mesh without colours of the points `xyz` (3 coordinates each, double) and the triangles
+ * `triangles` (3 point ids each), as the shapes above are made.
+ */
+vtkSmartPointer<vtkPolyData> FromTriangles(const std::vector<double>& xyz,
+                                           const std::vector<vtkIdType>& triangles);
 
 /// A UV sphere with about `triangles` triangles (for benchmarks at a given size).
 vtkSmartPointer<vtkPolyData> UVSphereWithTriangles(long long triangles, Pattern pattern);

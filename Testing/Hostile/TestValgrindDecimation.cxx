@@ -5,46 +5,28 @@
  * invariants checked. Run under valgrind by .ci/valgrind.sh and the ctest test
  * ColorDecimation.Valgrind (label valgrind); it is an ordinary test in every other build.
  */
-#include "ColorDecimationInvariants.h"
 #include "ColorDecimationMeshes.h"
+#include "ColorDecimationTestUtilities.h"
 
 #include "vtkColorHalfEdgeDecimation.h"
-#include "vtkNew.h"
-#include "vtkPolyData.h"
 
 #include <iostream>
 
 int main()
 {
-  using colordecimation::meshes::Pattern;
-  auto mesh = colordecimation::meshes::Icosphere(5, Pattern::FineDetail);
-  int failures = 0;
+  using namespace colordecimation::testing;
+  auto mesh = colordecimation::meshes::Icosphere(5, colordecimation::meshes::Pattern::FineDetail);
   for (int metric :
        { vtkColorHalfEdgeDecimation::HalfEdgeColor, vtkColorHalfEdgeDecimation::Geometry })
   {
-    vtkNew<vtkColorHalfEdgeDecimation> filter;
-    colordecimation::hostile::EventCounter events;
-    events.Observe(filter);
-    filter->SetInputData(mesh);
-    filter->SetErrorMetric(metric);
-    filter->SetTargetReduction(0.9);
-    filter->Update();
-    vtkPolyData* output = filter->GetOutput();
-    std::cout << filter->GetErrorMetricAsString() << ": " << mesh->GetNumberOfPolys() << " -> "
-              << output->GetNumberOfPolys() << " triangles, " << filter->GetNumberOfCollapses()
-              << " collapses\n";
-    for (const std::string& broken :
-         colordecimation::hostile::CheckInvariants(mesh, filter, output, events.Errors > 0))
-    {
-      std::cout << "broken invariant: " << broken << "\n";
-      ++failures;
-    }
-    if (events.Errors || events.Warnings || filter->GetActualReduction() < 0.88)
-    {
-      std::cout << "unexpected: " << events.Errors << " errors, " << events.Warnings
-                << " warnings, reduction " << filter->GetActualReduction() << "\n";
-      ++failures;
-    }
+    // The output invariants are checked by Decimate.
+    const RunResult r = Decimate(
+      mesh, 0.9, [metric](vtkColorHalfEdgeDecimation* filter) { filter->SetErrorMetric(metric); });
+    std::cout << r.Filter->GetErrorMetricAsString() << ": " << mesh->GetNumberOfPolys() << " -> "
+              << r.Output->GetNumberOfPolys() << " triangles, " << r.Collapses << " collapses\n";
+    CD_CHECK_MSG(r.Errors == 0 && r.Warnings == 0 && r.ActualReduction >= 0.88,
+                 "unexpected: " << r.Errors << " errors, " << r.Warnings << " warnings, reduction "
+                                << r.ActualReduction);
   }
-  return failures == 0 ? 0 : 1;
+  return GetNumberOfFailures() == 0 ? 0 : 1;
 }

@@ -5,6 +5,7 @@
 // usage: TestFidelityMeasures TEMPDIR
 #include "ColorDecimationFidelity.h"
 #include "ColorDecimationMeshes.h"
+#include "ColorDecimationTestUtilities.h"
 
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -22,27 +23,10 @@
 
 namespace fid = colordecimation::fidelity;
 namespace meshes = colordecimation::meshes;
+using colordecimation::testing::Copy;
 
 namespace
 {
-
-int Failures = 0;
-
-void Check(bool condition, const std::string& what)
-{
-  std::cout << (condition ? "ok      " : "FAILED  ") << what << "\n";
-  if (!condition)
-  {
-    ++Failures;
-  }
-}
-
-vtkSmartPointer<vtkPolyData> Copy(vtkPolyData* mesh)
-{
-  auto copy = vtkSmartPointer<vtkPolyData>::New();
-  copy->DeepCopy(mesh);
-  return copy;
-}
 
 void SetConstantColor(vtkPolyData* mesh, int r, int g, int b)
 {
@@ -73,6 +57,7 @@ void ToFloatColors(vtkPolyData* mesh)
   mesh->GetPointData()->SetScalars(colors);
 }
 
+/// |a - b| <= tolerance (absolute).
 bool Near(double a, double b, double tolerance)
 {
   return std::fabs(a - b) <= tolerance;
@@ -95,15 +80,15 @@ int main(int argc, char* argv[])
   // 1. Identical meshes: nothing differs; PSNR is infinite.
   auto sphere = meshes::Icosphere(4, meshes::Pattern::SmoothGradient);
   fid::Result same = fid::CompareRenders(sphere, sphere, options);
-  Check(same.Ok, "identical meshes render");
-  Check(same.Unlit.All.CoveredPixels > 6 * 200 * 200 / 4, "the sphere covers its views");
-  Check(same.Unlit.Views.size() == 6 && same.Lit.Views.size() == 6, "six views per pass");
-  Check(same.Unlit.All.Rms == 0.0 && same.Lit.All.Rms == 0.0, "identical meshes: RMS 0");
-  Check(std::isinf(same.Unlit.All.Psnr), "identical meshes: PSNR +inf");
+  CD_CHECK_MSG(same.Ok, "identical meshes render");
+  CD_CHECK_MSG(same.Unlit.All.CoveredPixels > 6 * 200 * 200 / 4, "the sphere covers its views");
+  CD_CHECK_MSG(same.Unlit.Views.size() == 6 && same.Lit.Views.size() == 6, "six views per pass");
+  CD_CHECK_MSG(same.Unlit.All.Rms == 0.0 && same.Lit.All.Rms == 0.0, "identical meshes: RMS 0");
+  CD_CHECK_MSG(std::isinf(same.Unlit.All.Psnr), "identical meshes: PSNR +inf");
   const std::string json = fid::ToJson(same);
-  Check(json.find("\"psnr\": null") != std::string::npos &&
-          json.find("\"color_array\": \"RGB\"") != std::string::npos,
-        "JSON writes an infinite PSNR as null and names the colour array");
+  CD_CHECK_MSG(json.find("\"psnr\": null") != std::string::npos &&
+                 json.find("\"color_array\": \"RGB\"") != std::string::npos,
+               "JSON writes an infinite PSNR as null and names the colour array");
 
   // 2. A uniform colour shift of (10, -20, 5) on a constant mesh: every covered pixel is
   //    off by sqrt(525); the shape is unchanged.
@@ -116,9 +101,10 @@ int main(int argc, char* argv[])
   const double expectedPsnr = 10.0 * std::log10(255.0 * 255.0 / (525.0 / 3.0));
   std::cout << "        shift: unlit RMS " << shift.Unlit.All.Rms << " (expected " << expectedRms
             << "), PSNR " << shift.Unlit.All.Psnr << " (expected " << expectedPsnr << ")\n";
-  Check(Near(shift.Unlit.All.Rms, expectedRms, 0.05), "colour shift: RMS = sqrt(10^2+20^2+5^2)");
-  Check(Near(shift.Unlit.All.Psnr, expectedPsnr, 0.02), "colour shift: PSNR = 25.70 dB");
-  Check(shift.Lit.All.Rms == 0.0, "colour shift: the lit (shape) pass sees no change");
+  CD_CHECK_MSG(Near(shift.Unlit.All.Rms, expectedRms, 0.05),
+               "colour shift: RMS = sqrt(10^2+20^2+5^2)");
+  CD_CHECK_MSG(Near(shift.Unlit.All.Psnr, expectedPsnr, 0.02), "colour shift: PSNR = 25.70 dB");
+  CD_CHECK_MSG(shift.Lit.All.Rms == 0.0, "colour shift: the lit (shape) pass sees no change");
 
   // 3. A copy moved by a fifth of the radius: shape and colour both differ, and the pixels
   //    covered by either mesh outnumber those of one mesh.
@@ -133,9 +119,10 @@ int main(int argc, char* argv[])
   fid::Result move = fid::CompareRenders(sphere, moved, options);
   std::cout << "        moved: unlit RMS " << move.Unlit.All.Rms << ", lit RMS " << move.Lit.All.Rms
             << "\n";
-  Check(move.Unlit.All.Rms > 10.0 && move.Lit.All.Rms > 10.0, "moved copy: both passes differ");
-  Check(move.Unlit.All.CoveredPixels > same.Unlit.All.CoveredPixels,
-        "moved copy: the union of the silhouettes is counted");
+  CD_CHECK_MSG(move.Unlit.All.Rms > 10.0 && move.Lit.All.Rms > 10.0,
+               "moved copy: both passes differ");
+  CD_CHECK_MSG(move.Unlit.All.CoveredPixels > same.Unlit.All.CoveredPixels,
+               "moved copy: the union of the silhouettes is counted");
 
   // 4. Float colours in [0,1] are scaled to 0..255: same figures as unsigned char.
   auto floatA = Copy(constant);
@@ -143,32 +130,34 @@ int main(int argc, char* argv[])
   ToFloatColors(floatA);
   ToFloatColors(floatB);
   fid::Result floats = fid::CompareRenders(floatA, floatB, options);
-  Check(Near(floats.Unlit.All.Rms, shift.Unlit.All.Rms, 0.05), "float colours in [0,1]");
+  CD_CHECK_MSG(Near(floats.Unlit.All.Rms, shift.Unlit.All.Rms, 0.05), "float colours in [0,1]");
 
   // 5. Colours lost (the mesh renders white), then restored from the nearest points.
   auto bare = Copy(sphere);
   bare->GetPointData()->RemoveArray("RGB");
   fid::Result lost = fid::CompareRenders(sphere, bare, options);
-  Check(lost.Unlit.All.Rms > 50.0, "a mesh without colours is far from the original");
-  Check(fid::TransferNearestColors(sphere, bare), "TransferNearestColors succeeds");
+  CD_CHECK_MSG(lost.Unlit.All.Rms > 50.0, "a mesh without colours is far from the original");
+  CD_CHECK_MSG(fid::TransferNearestColors(sphere, bare), "TransferNearestColors succeeds");
   fid::Result restored = fid::CompareRenders(sphere, bare, options);
-  Check(restored.Unlit.All.Rms == 0.0, "nearest-point colours of the same points: RMS 0");
+  CD_CHECK_MSG(restored.Unlit.All.Rms == 0.0, "nearest-point colours of the same points: RMS 0");
 
   // 6. The per-view images and the snapshot.
   options.ImageDirectory = temporary;
   fid::CompareRenders(sphere, moved, options);
-  Check(std::ifstream(temporary + "/unlit_-Z_difference.png").good() &&
-          std::ifstream(temporary + "/lit_+X_original.png").good(),
-        "per-view images are written");
+  CD_CHECK_MSG(std::ifstream(temporary + "/unlit_-Z_difference.png").good() &&
+                 std::ifstream(temporary + "/lit_+X_original.png").good(),
+               "per-view images are written");
   const std::string snapshot = temporary + "/fidelity_snapshot.png";
   std::remove(snapshot.c_str());
-  Check(fid::WriteSnapshot(sphere, moved, snapshot, 100, {}, &why), "WriteSnapshot succeeds");
+  CD_CHECK_MSG(fid::WriteSnapshot(sphere, moved, snapshot, 100, {}, &why),
+               "WriteSnapshot succeeds");
   vtkNew<vtkPNGReader> reader;
   reader->SetFileName(snapshot.c_str());
   reader->Update();
   int dims[3];
   reader->GetOutput()->GetDimensions(dims);
-  Check(dims[0] == 2 * 100 + 2 && dims[1] == 2 * 100 + 2, "snapshot: 2 x 2 panels of 100 px");
+  CD_CHECK_MSG(dims[0] == 2 * 100 + 2 && dims[1] == 2 * 100 + 2,
+               "snapshot: 2 x 2 panels of 100 px");
   // Each panel shows the mesh: its centre pixel is not the black background.
   bool panelsDrawn = true;
   for (int px : { 50, 152 })
@@ -183,15 +172,16 @@ int main(int argc, char* argv[])
       panelsDrawn = panelsDrawn && sum > 30.0;
     }
   }
-  Check(panelsDrawn, "snapshot: the mesh is drawn in all four panels");
+  CD_CHECK_MSG(panelsDrawn, "snapshot: the mesh is drawn in all four panels");
 
   // 7. Errors are reported, not crashed on.
   fid::Options badArray = options;
   badArray.ColorArray = "NoSuchArray";
   fid::Result bad = fid::CompareRenders(sphere, sphere, badArray);
-  Check(!bad.Ok && !bad.Error.empty(), "an unknown colour array is an error");
-  Check(!fid::ReadMesh(temporary + "/missing.ply"), "ReadMesh of a missing file is null");
+  CD_CHECK_MSG(!bad.Ok && !bad.Error.empty(), "an unknown colour array is an error");
+  CD_CHECK_MSG(!fid::ReadMesh(temporary + "/missing.ply"), "ReadMesh of a missing file is null");
 
-  std::cout << (Failures ? "FAILED: " : "all passed: ") << Failures << " failure(s)\n";
-  return Failures ? 1 : 0;
+  const int failures = colordecimation::testing::GetNumberOfFailures();
+  std::cout << (failures ? "FAILED: " : "all passed: ") << failures << " failure(s)\n";
+  return failures ? 1 : 0;
 }

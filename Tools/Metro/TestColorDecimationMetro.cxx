@@ -3,9 +3,7 @@
 
 #include "ColorDecimationMeshes.h"
 
-#include "vtkCellArray.h"
 #include "vtkNew.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
@@ -39,31 +37,11 @@ void Near(double actual, double expected, double tolerance, const std::string& w
         what + " = " + std::to_string(actual) + ", expected " + std::to_string(expected));
 }
 
-/// Triangles over the given points (3 coordinates each).
-vtkSmartPointer<vtkPolyData> Mesh(std::initializer_list<double> xyz,
-                                  std::initializer_list<vtkIdType> triangles)
-{
-  vtkNew<vtkPoints> points;
-  const double* p = xyz.begin();
-  for (size_t i = 0; i + 2 < xyz.size(); i += 3)
-  {
-    points->InsertNextPoint(p[i], p[i + 1], p[i + 2]);
-  }
-  vtkNew<vtkCellArray> polys;
-  const vtkIdType* t = triangles.begin();
-  for (size_t i = 0; i + 2 < triangles.size(); i += 3)
-  {
-    polys->InsertNextCell(3, t + i);
-  }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  mesh->SetPolys(polys);
-  return mesh;
-}
-
+/// The unit square at height z, in two triangles.
 vtkSmartPointer<vtkPolyData> Square(double z)
 {
-  return Mesh({ 0, 0, z, 1, 0, z, 1, 1, z, 0, 1, z }, { 0, 1, 2, 0, 2, 3 });
+  return colordecimation::meshes::FromTriangles({ 0, 0, z, 1, 0, z, 1, 1, z, 0, 1, z },
+                                                { 0, 1, 2, 0, 2, 3 });
 }
 
 void TestIdentical()
@@ -84,7 +62,7 @@ void TestOffset()
   for (double d : { r.Forward.Mean, r.Forward.Rms, r.Forward.Max, r.Backward.Mean, r.Backward.Rms,
                     r.Backward.Max, r.Mean, r.Rms, r.Max })
   {
-    Near(d, 0.1, 1e-7, "offset distance"); // float points
+    Near(d, 0.1, 1e-7, "offset distance");
   }
   Near(r.Forward.Area, 1.0, 1e-12, "area");
   Near(r.MeanPercent, 100 * 0.1 / std::sqrt(2.0), 1e-6, "mean %");
@@ -98,7 +76,9 @@ void TestHalfSquare()
   // the whole square, half of those. The maximum is h, at the corner (0,1). Backwards: 0.
   Options options;
   options.Samples = 400000;
-  const Result r = Compare(Square(0), Mesh({ 0, 0, 0, 1, 0, 0, 1, 1, 0 }, { 0, 1, 2 }), options);
+  const Result r = Compare(
+    Square(0), colordecimation::meshes::FromTriangles({ 0, 0, 0, 1, 0, 0, 1, 1, 0 }, { 0, 1, 2 }),
+    options);
   const double h = 1.0 / std::sqrt(2.0);
   Check(r.Ok, "ok");
   Near(r.Forward.Mean, 0.5 * h / 3.0, 1e-3, "forward mean");

@@ -1,29 +1,37 @@
 /**
  * @file ColorDecimationTestUtilities.h
- * @brief Checks shared by the ColorDecimation C++ tests: a tiny test-case runner, an
- * error/warning observer, and mesh checks (topology, orientation, degeneracy, bit-exact
- * copies of point and cell data).
+ * @brief The one library of helpers of the ColorDecimation C++ tests (Testing/Utilities): the
+ * test-case runner and its checks, the recorder of warnings and errors, running the filter
+ * with the output invariants checked (ColorDecimationInvariants.h), and mesh checks
+ * (topology, Euler characteristic, orientation, degeneracy, bit-exact copies of point and
+ * cell data). The meshes themselves come from Testing/Generators (ColorDecimationMeshes.h).
  *
- * Every test executable holds several named cases; ctest runs one case per entry
- * (`exe CaseName`). A case reports failures with CD_CHECK*; the process exits non-zero if
- * any check failed.
+ * A test executable holds named cases, each written once, as `CD_TEST_CASE(Name)` alone on
+ * its line followed by the body; its main() returns RunTestCases(argc, argv). The CMake
+ * function colordecimation_add_test_cases() (Testing/Utilities/CMakeLists.txt) reads those
+ * lines and adds one ctest entry per case (`exe Name`). A case reports failures with
+ * CD_CHECK*; the process exits non-zero if any check failed.
  */
 #ifndef ColorDecimationTestUtilities_h
 #define ColorDecimationTestUtilities_h
 
-#include "vtkCommand.h"
+#include "vtkColorHalfEdgeDecimation.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <functional>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
-class vtkColorHalfEdgeDecimation;
+class vtkCallbackCommand;
+class vtkDataArray;
+class vtkObject;
 
 namespace colordecimation
 {
@@ -38,17 +46,24 @@ void ReportFailure(const char* file, int line, const char* condition, const std:
 /// Number of failed checks so far.
 int GetNumberOfFailures();
 
-struct TestCase
-{
-  const char* Name;
-  std::function<void()> Function;
-};
+/// Add a case to the executable's list (what CD_TEST_CASE does); returns true.
+bool RegisterTestCase(const char* name, void (*function)());
 
 /**
- * Run the case named by argv[1] (or every case with "all"; "--list" prints the names).
- * Returns the process exit code.
+ * Run the registered case named by argv[1] (or every case with "all"; "--list" prints the
+ * names). Returns the process exit code.
  */
-int RunTestCases(int argc, char* argv[], const std::vector<TestCase>& cases);
+int RunTestCases(int argc, char* argv[]);
+
+/**
+ * Define and register the test case `Name`: `CD_TEST_CASE(Name)` alone on its line, then the
+ * body in braces. The ctest entries are made from these lines (colordecimation_add_test_cases).
+ */
+#define CD_TEST_CASE(Name)                                                                         \
+  void CdTestCase##Name();                                                                         \
+  [[maybe_unused]] const bool CdTestCaseRegistered##Name =                                         \
+    colordecimation::testing::RegisterTestCase(#Name, CdTestCase##Name);                           \
+  void CdTestCase##Name()
 
 #define CD_CHECK(condition)                                                                        \
   do                                                                                               \
@@ -89,39 +104,68 @@ int RunTestCases(int argc, char* argv[], const std::vector<TestCase>& cases);
 //------------------------------------------------------------------------------
 // Errors and warnings.
 
-/// Counts the ErrorEvent and WarningEvent of the objects it observes (and keeps the texts).
-class EventRecorder : public vtkCommand
+/// The ErrorEvent and WarningEvent texts an object emitted.
+struct Messages
 {
-public:
-  static EventRecorder* New() { return new EventRecorder; }
-  void Execute(vtkObject* caller, unsigned long event, void* callData) override;
-  /// Observe ErrorEvent and WarningEvent of `object`.
-  void Watch(vtkObject* object);
-  void Clear();
-
   int Errors = 0;
   int Warnings = 0;
-  std::string ErrorText;
-  std::string WarningText;
+  std::vector<std::string> ErrorTexts;
+  std::vector<std::string> WarningTexts;
+
+  /// True if an error's text contains `part`.
+  bool HasError(const std::string& part) const;
+  /// True if a warning's text contains `part`.
+  bool HasWarning(const std::string& part) const;
+  /// All error texts, one after the other.
+  std::string ErrorText() const;
+  /// All warning texts, one after the other.
+  std::string WarningText() const;
+  void Clear();
+};
+
+/// Records the ErrorEvent and WarningEvent of the objects it watches (they are then not printed).
+class EventRecorder : public Messages
+{
+public:
+  EventRecorder();
+  ~EventRecorder();
+  EventRecorder(const EventRecorder&) = delete;
+  EventRecorder& operator=(const EventRecorder&) = delete;
+
+  /// Record the ErrorEvent and WarningEvent of `object`.
+  void Watch(vtkObject* object);
+  /// Stop recording those of `object`.
+  void Unwatch(vtkObject* object);
+
+private:
+  vtkSmartPointer<vtkCallbackCommand> Callback;
 };
 
 //------------------------------------------------------------------------------
 // Running the filter.
 
-struct RunResult
+/// A run of vtkColorHalfEdgeDecimation: the filter, its output and its messages.
+struct RunResult : Messages
 {
+  vtkSmartPointer<vtkColorHalfEdgeDecimation> Filter;
   vtkSmartPointer<vtkPolyData> Output;
   double ActualReduction = 0;
   long long Collapses = 0;
-  int Errors = 0;
-  int Warnings = 0;
-  std::string ErrorText;
-  std::string WarningText;
+  /// The output invariants of ColorDecimationInvariants.h that do not hold, and whether the
+  /// input was changed (empty when all is well).
+  std::vector<std::string> Broken;
 };
 
-/// Decimate `input` with `reduction` (configure may set anything else) and record events.
-RunResult Decimate(vtkPolyData* input, double reduction,
-                   const std::function<void(vtkColorHalfEdgeDecimation*)>& configure = nullptr);
+using Configure = std::function<void(vtkColorHalfEdgeDecimation*)>;
+
+/**
+ * Decimate `input` with `reduction` (`configure` may set anything else), recording the
+ * messages and the broken invariants. Checks nothing itself (the fuzz target uses it).
+ */
+RunResult RunFilter(vtkPolyData* input, double reduction, const Configure& configure = nullptr);
+
+/// RunFilter(), each broken invariant (and a changed input) reported as a failed check.
+RunResult Decimate(vtkPolyData* input, double reduction, const Configure& configure = nullptr);
 
 //------------------------------------------------------------------------------
 // Meshes.
@@ -135,6 +179,8 @@ std::vector<Tri> GetOriginalTriangles(vtkPolyData* output);
 /// Rotated so that the smallest id comes first (orientation kept).
 Tri Canonical(const Tri& t);
 std::set<Tri> CanonicalSet(const std::vector<Tri>& tris);
+/// The triangles made canonical and sorted (repeated triangles stay repeated).
+std::vector<Tri> CanonicalSorted(std::vector<Tri> tris);
 /// The set of input point ids that the output keeps (vtkOriginalPointIds).
 std::set<vtkIdType> OriginalIds(vtkPolyData* output);
 
@@ -149,11 +195,21 @@ struct Topology
   long long NonManifoldVertices = 0; ///< vertices whose triangles are not one fan
   long long RepeatedIdTriangles = 0;
   long long BoundaryLoops = 0;
+  /// The Euler characteristic V - E + F (of the triangles that repeat no id).
   long long Euler() const { return this->Vertices - this->Edges + this->Faces; }
 };
 std::ostream& operator<<(std::ostream& os, const Topology& t);
 
 Topology AnalyseTopology(const std::vector<Tri>& tris);
+
+/**
+ * True if the triangles use each directed edge at most once and no two of them use the same
+ * three points (in any order), and none repeats a point.
+ */
+bool IsOrientedSoup(const std::vector<Tri>& triangles);
+
+/// The number of triangles on each edge (a, b), a < b, of a triangle set.
+std::map<std::pair<vtkIdType, vtkIdType>, int> EdgeUses(const std::vector<Tri>& tris);
 
 /// Directed boundary edges (a, b) of a triangle set.
 std::set<std::pair<vtkIdType, vtkIdType>> BoundaryEdges(const std::vector<Tri>& tris);
@@ -172,6 +228,9 @@ long long CountFlipped(vtkPolyData* mesh,
 void SphereNormal(const double c[3], double n[3]);
 void TorusNormal(const double c[3], double n[3]); ///< major radius 1 (Meshes::Torus)
 void UpNormal(const double c[3], double n[3]);
+
+/// Tuple `i` of `a` has the bytes of tuple `j` of `b` (arrays of one type and width).
+bool SameTupleBytes(vtkDataArray* a, vtkIdType i, vtkDataArray* b, vtkIdType j);
 
 /**
  * Output point coordinates and every input point-data array copied bit-exactly from the
@@ -202,6 +261,8 @@ struct Expectation
   /// The outward normal of the input surface near a point (null: not checked).
   std::function<void(const double centroid[3], double n[3])> Normal;
   bool Decorated = true; ///< the input went through Decorate(): check cell and field data
+  /// Points may move (OptimalPlacement): their coordinates and point data are not compared.
+  bool PointsMove = false;
 };
 
 /// What a closed surface of Euler characteristic `euler` must keep (outward normal given).
@@ -212,11 +273,20 @@ Expectation OpenSheet();
 /**
  * Check every invariant of a decimated mesh: triangles only, manifold edges and vertices,
  * consistent orientation, Euler characteristic, boundary loops, no degenerate or flipped
- * triangle, every output point used, point data (and, if decorated, cell and field data)
- * copied bit-exactly. Returns the number of failed checks.
+ * triangle, every output point used, point data (unless points move; and, if decorated, cell
+ * and field data) copied bit-exactly. Returns the number of failed checks.
  */
 int CheckDecimatedMesh(vtkPolyData* input, vtkPolyData* output, const Expectation& expected,
                        const std::string& label);
+
+/**
+ * Decorate `mesh`, decimate it at 0.5, 0.9 and 0.97 (`configure` may set anything else) and
+ * check every run: no message, the target met within 0.01 and ActualReduction exact, one
+ * collapse per point removed, CheckDecimatedMesh, and at 0.5 enough untouched triangles for
+ * the cell-data mapping to be checked on them.
+ */
+void CheckDecimations(vtkPolyData* mesh, const Expectation& expected, const std::string& name,
+                      const Configure& configure = nullptr);
 
 /**
  * Add arrays that the filter must carry through: point data "Normals" (float 3, set as
@@ -225,6 +295,32 @@ int CheckDecimatedMesh(vtkPolyData* input, vtkPolyData* output, const Expectatio
  * "Provenance" (double) and "Note" (string).
  */
 void Decorate(vtkPolyData* mesh);
+
+/// A deep copy.
+vtkSmartPointer<vtkPolyData> Copy(vtkPolyData* mesh);
+
+//------------------------------------------------------------------------------
+// Meshes for the core (Filters/Core), which takes int32 triangles and float positions.
+
+/// Triangles (as int32), float positions and double points of a generated mesh.
+struct PlainMesh
+{
+  std::vector<int32_t> Triangles;
+  std::vector<float> Positions;
+  std::vector<double> Points;
+  int32_t NumberOfPoints() const { return static_cast<int32_t>(this->Points.size() / 3); }
+  int32_t NumberOfTriangles() const { return static_cast<int32_t>(this->Triangles.size() / 3); }
+};
+
+PlainMesh ToPlain(vtkPolyData* mesh);
+
+/**
+ * The square pyramid of the hand computations: apex 0 at (0,0,1), ring 1..4 at (1,0,0),
+ * (0,1,0), (-1,0,0), (0,-1,0); four triangles (0,i,i+1) seen counter-clockwise from above,
+ * no base (open, the ring is the boundary). Each test gives it its own colours.
+ */
+extern const double PyramidPoints[15];
+extern const int32_t PyramidTriangles[12];
 
 /// A deep copy whose points are scaled by `scale` and then translated.
 vtkSmartPointer<vtkPolyData> Transformed(vtkPolyData* mesh, double scale,

@@ -1,0 +1,308 @@
+#include "ColorDecimationInvariants.h"
+
+#include "ColorDecimationTestUtilities.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkColorHalfEdgeDecimation.h"
+#include "vtkDataArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+namespace colordecimation
+{
+namespace testing
+{
+namespace
+{
+
+using Broken = std::vector<std::string>;
+
+template <typename... T>
+std::string Say(const T&... parts)
+{
+  std::ostringstream os;
+  (void)std::initializer_list<int>{ ((os << parts), 0)... };
+  return os.str();
+}
+
+/// The filter's own statistics, and an error leaving the output empty.
+void CheckStatistics(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter, vtkPolyData* output,
+                     bool filterReportedError, Broken& broken)
+{
+  const vtkIdType numInPoints = input->GetNumberOfPoints();
+  const vtkIdType numOutPoints = output->GetNumberOfPoints();
+  const vtkIdType numOutCells = output->GetNumberOfCells();
+  if (filterReportedError && (numOutPoints != 0 || numOutCells != 0))
+  {
+    broken.push_back(Say("the filter reported an error but the output has ", numOutPoints,
+                         " points and ", numOutCells, " cells"));
+  }
+  if (filter->GetNumberOfCollapses() < 0 || filter->GetNumberOfCollapses() > numInPoints)
+  {
+    broken.push_back(Say("NumberOfCollapses = ", filter->GetNumberOfCollapses(), " for ",
+                         numInPoints, " input points"));
+  }
+  const double actual = filter->GetActualReduction();
+  if (!(actual >= 0.0 && actual <= 1.0))
+  {
+    broken.push_back(Say("ActualReduction = ", actual));
+  }
+}
+
+/// Triangles only, with valid and distinct ids; finite points.
+void CheckCellsAndPoints(vtkPolyData* output, Broken& broken)
+{
+  const vtkIdType numOutPoints = output->GetNumberOfPoints();
+  if (output->GetNumberOfVerts() || output->GetNumberOfLines() || output->GetNumberOfStrips())
+  {
+    broken.push_back(Say("the output has ", output->GetNumberOfVerts(), " vertex, ",
+                         output->GetNumberOfLines(), " line and ", output->GetNumberOfStrips(),
+                         " strip cells"));
+  }
+  if (output->GetPolys())
+  {
+    auto it = vtk::TakeSmartPointer(output->GetPolys()->NewIterator());
+    vtkIdType cell = 0;
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      if (n != 3)
+      {
+        broken.push_back(Say("output cell ", cell, " has ", n, " points"));
+        break;
+      }
+      bool inRange = true;
+      for (vtkIdType k = 0; k < n; ++k)
+      {
+        inRange = inRange && ids[k] >= 0 && ids[k] < numOutPoints;
+      }
+      if (!inRange)
+      {
+        broken.push_back(Say("output cell ", cell, " has a point id outside [0, ", numOutPoints,
+                             "): ", ids[0], " ", ids[1], " ", ids[2]));
+        break;
+      }
+      if (ids[0] == ids[1] || ids[1] == ids[2] || ids[0] == ids[2])
+      {
+        broken.push_back(
+          Say("output cell ", cell, " repeats a point: ", ids[0], " ", ids[1], " ", ids[2]));
+        break;
+      }
+    }
+  }
+  for (vtkIdType i = 0; i < numOutPoints; ++i)
+  {
+    double p[3];
+    output->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      broken.push_back(Say("output point ", i, " is not finite: ", p[0], " ", p[1], " ", p[2]));
+      break;
+    }
+  }
+}
+
+/// One tuple per point in every point array, one per cell in every cell array.
+void CheckTupleCounts(vtkPolyData* output, Broken& broken)
+{
+  const vtkIdType numOutPoints = output->GetNumberOfPoints();
+  const vtkIdType numOutCells = output->GetNumberOfCells();
+  vtkPointData* outPD = output->GetPointData();
+  for (int a = 0; a < outPD->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = outPD->GetAbstractArray(a);
+    if (array->GetNumberOfTuples() != numOutPoints)
+    {
+      broken.push_back(Say("output point array '", array->GetName() ? array->GetName() : "",
+                           "' has ", array->GetNumberOfTuples(), " tuples for ", numOutPoints,
+                           " points"));
+    }
+  }
+  vtkCellData* outCD = output->GetCellData();
+  for (int a = 0; a < outCD->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = outCD->GetAbstractArray(a);
+    if (array->GetNumberOfTuples() != numOutCells)
+    {
+      broken.push_back(Say("output cell array '", array->GetName() ? array->GetName() : "",
+                           "' has ", array->GetNumberOfTuples(), " tuples for ", numOutCells,
+                           " cells"));
+    }
+  }
+}
+
+/// The name of the colour array the filter used (the input's scalars unless asked by name).
+std::string ColorArrayName(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter)
+{
+  std::string colorName;
+  if (input->GetPointData()->GetScalars() && input->GetPointData()->GetScalars()->GetName())
+  {
+    colorName = input->GetPointData()->GetScalars()->GetName();
+  }
+  if (vtkInformation* info = filter->GetInputArrayInformation(0))
+  {
+    if (info->Has(vtkDataObject::FIELD_NAME()))
+    {
+      colorName = info->Get(vtkDataObject::FIELD_NAME());
+    }
+  }
+  return colorName;
+}
+
+/// Original ids distinct and in range; returns false if they are not.
+bool CheckOriginalIdValues(vtkIdTypeArray* original, vtkIdType numInPoints, Broken& broken)
+{
+  std::vector<char> seen(static_cast<size_t>(numInPoints), 0);
+  for (vtkIdType i = 0; i < original->GetNumberOfTuples(); ++i)
+  {
+    const vtkIdType j = original->GetValue(i);
+    if (j < 0 || j >= numInPoints || seen[j])
+    {
+      broken.push_back(
+        Say("original point id ", j, " of output point ", i, " is out of range or repeated"));
+      return false;
+    }
+    seen[j] = 1;
+  }
+  return true;
+}
+
+/// Output points bit-exact copies of the input points they come from.
+void CheckPointsCopied(vtkPolyData* input, vtkPolyData* output, vtkIdTypeArray* original,
+                       Broken& broken)
+{
+  vtkDataArray* inPoints = input->GetPoints() ? input->GetPoints()->GetData() : nullptr;
+  vtkDataArray* outPoints = output->GetPoints() ? output->GetPoints()->GetData() : nullptr;
+  if (!inPoints || !outPoints)
+  {
+    return;
+  }
+  if (inPoints->GetDataType() != outPoints->GetDataType())
+  {
+    broken.push_back("the output points' data type differs from the input's");
+    return;
+  }
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    if (!SameTupleBytes(outPoints, i, inPoints, original->GetValue(i)))
+    {
+      broken.push_back(Say("output point ", i, " is not input point ", original->GetValue(i)));
+      return;
+    }
+  }
+}
+
+/// One output point array a bit-exact copy of the input array of its name.
+void CheckPointArrayCopied(vtkDataArray* in, vtkDataArray* out, vtkIdTypeArray* original,
+                           vtkIdType numOutPoints, Broken& broken)
+{
+  if (in->GetDataType() != out->GetDataType() ||
+      in->GetNumberOfComponents() != out->GetNumberOfComponents())
+  {
+    broken.push_back(Say("output point array '", out->GetName(), "' changed its type or width"));
+    return;
+  }
+  for (vtkIdType i = 0; i < std::min(numOutPoints, out->GetNumberOfTuples()); ++i)
+  {
+    const vtkIdType j = original->GetValue(i);
+    if (j >= in->GetNumberOfTuples())
+    {
+      broken.push_back(Say("output point array '", out->GetName(), "' tuple ", i,
+                           " was copied from input tuple ", j, " but that array has only ",
+                           in->GetNumberOfTuples(), " tuples"));
+      return;
+    }
+    if (!SameTupleBytes(out, i, in, j))
+    {
+      broken.push_back(
+        Say("output point array '", out->GetName(), "' tuple ", i, " is not input tuple ", j));
+      return;
+    }
+  }
+}
+
+/**
+ * Original point ids, and bit-exact copies of the points and point data. With the
+ * ColorQuadric metric's OptimalPlacement, points move and take a new colour: their
+ * coordinates and the colour array are then not compared.
+ */
+void CheckOriginalIds(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter, vtkPolyData* output,
+                      Broken& broken)
+{
+  const vtkIdType numOutPoints = output->GetNumberOfPoints();
+  const char* idsName = filter->GetOriginalPointIdsArrayName();
+  if (!filter->GetGenerateOriginalPointIds() || !idsName || !*idsName || numOutPoints == 0)
+  {
+    return;
+  }
+  vtkPointData* outPD = output->GetPointData();
+  vtkIdTypeArray* original = vtkIdTypeArray::SafeDownCast(outPD->GetAbstractArray(idsName));
+  if (!original)
+  {
+    broken.push_back(Say("no vtkIdTypeArray '", idsName, "' in the output"));
+    return;
+  }
+  if (original->GetNumberOfTuples() != numOutPoints || original->GetNumberOfComponents() != 1 ||
+      !CheckOriginalIdValues(original, input->GetNumberOfPoints(), broken))
+  {
+    return;
+  }
+  const bool moves = filter->GetOptimalPlacement() &&
+    filter->GetErrorMetric() == vtkColorHalfEdgeDecimation::ColorQuadric;
+  if (!moves)
+  {
+    CheckPointsCopied(input, output, original, broken);
+  }
+  const std::string colorName = ColorArrayName(input, filter);
+  for (int a = 0; a < outPD->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* out = outPD->GetArray(a);
+    if (!out || !out->GetName() || std::strcmp(out->GetName(), idsName) == 0 ||
+        (moves && (out->GetName() == colorName || out == outPD->GetScalars())))
+    {
+      continue;
+    }
+    if (vtkDataArray* in = input->GetPointData()->GetArray(out->GetName()))
+    {
+      CheckPointArrayCopied(in, out, original, numOutPoints, broken);
+    }
+  }
+}
+
+} // namespace
+
+std::vector<std::string> CheckInvariants(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter,
+                                         vtkPolyData* output, bool filterReportedError)
+{
+  Broken broken;
+  CheckStatistics(input, filter, output, filterReportedError, broken);
+  CheckCellsAndPoints(output, broken);
+  CheckTupleCounts(output, broken);
+  CheckOriginalIds(input, filter, output, broken);
+
+  // Orientation: an oriented soup stays one.
+  const std::vector<Tri> inputTriangles = GetTriangles(input);
+  if (input->GetNumberOfStrips() == 0 &&
+      static_cast<vtkIdType>(inputTriangles.size()) == input->GetNumberOfPolys() &&
+      IsOrientedSoup(inputTriangles) && !IsOrientedSoup(GetTriangles(output)))
+  {
+    broken.push_back("the input triangles use each directed edge at most once (and no two share "
+                     "their three points) but the output triangles do not");
+  }
+  return broken;
+}
+
+} // namespace testing
+} // namespace colordecimation
