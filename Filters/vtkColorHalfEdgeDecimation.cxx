@@ -36,17 +36,22 @@ using colordecimation::adapter::InputMesh;
 /// NaN property values (the setters clamp the others) leave the output empty.
 bool CheckProperties(vtkColorHalfEdgeDecimation* self)
 {
-  for (const double value :
-       { self->GetTargetReduction(), self->GetMaximumNormalAngle(), self->GetGeometryWeight(),
-         self->GetColorWeight(), self->GetBoundaryWeight() })
+  const struct
   {
-    if (!std::isfinite(value))
+    const char* Name;
+    double Value;
+  } properties[] = { { "TargetReduction", self->GetTargetReduction() },
+                     { "MaximumNormalAngle", self->GetMaximumNormalAngle() },
+                     { "GeometryWeight", self->GetGeometryWeight() },
+                     { "ColorWeight", self->GetColorWeight() },
+                     { "BoundaryWeight", self->GetBoundaryWeight() },
+                     { "EdgeLengthWeight", self->GetEdgeLengthWeight() } };
+  for (const auto& property : properties)
+  {
+    if (!std::isfinite(property.Value))
     {
-      vtkErrorWithObjectMacro(
-        self, << "A property is NaN or infinite (TargetReduction " << self->GetTargetReduction()
-              << ", MaximumNormalAngle " << self->GetMaximumNormalAngle() << ", GeometryWeight "
-              << self->GetGeometryWeight() << ", ColorWeight " << self->GetColorWeight()
-              << ", BoundaryWeight " << self->GetBoundaryWeight() << "); output is empty.");
+      vtkErrorWithObjectMacro(self, << "The property " << property.Name
+                                    << " is NaN or infinite; output is empty.");
       return false;
     }
   }
@@ -191,6 +196,7 @@ colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, 
   const int metric = self->GetErrorMetric();
   options.Metric = metric == Filter::Geometry ? colordecimation::ErrorMetric::Geometry
     : metric == Filter::ColorQuadric          ? colordecimation::ErrorMetric::ColorQuadric
+    : metric == Filter::AttributeQuadric      ? colordecimation::ErrorMetric::AttributeQuadric
                                               : colordecimation::ErrorMetric::HalfEdgeColor;
   options.Space = self->GetColorSpace() == Filter::CIELab ? colordecimation::ColorSpace::CIELab
                                                           : colordecimation::ColorSpace::RGB;
@@ -202,6 +208,7 @@ colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, 
   options.KeepVertexState = false; // the output needs the mesh and the moved vertices only
   options.ColorWeight = self->GetColorWeight();
   options.BoundaryWeight = self->GetBoundaryWeight();
+  options.EdgeLengthWeight = self->GetEdgeLengthWeight();
   options.PreserveBoundary = self->GetPreserveBoundary() != 0;
   options.MaximumNormalAngle = self->GetMaximumNormalAngle();
   options.GeometryWeight = self->GetGeometryWeight();
@@ -230,6 +237,7 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   , OptimalPlacement(false)
   , ColorWeight(1.0)
   , BoundaryWeight(0.0)
+  , EdgeLengthWeight(0.0)
   , TargetReduction(0.9)
   , PreserveBoundary(false)
   , MaximumNormalAngle(90.0)
@@ -261,6 +269,8 @@ const char* vtkColorHalfEdgeDecimation::GetErrorMetricAsString()
       return "Geometry";
     case ColorQuadric:
       return "ColorQuadric";
+    case AttributeQuadric:
+      return "AttributeQuadric";
     default:
       return "HalfEdgeColor";
   }
@@ -383,6 +393,7 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OptimalPlacement: " << (this->OptimalPlacement ? "On" : "Off") << "\n";
   os << indent << "ColorWeight: " << this->ColorWeight << "\n";
   os << indent << "BoundaryWeight: " << this->BoundaryWeight << "\n";
+  os << indent << "EdgeLengthWeight: " << this->EdgeLengthWeight << "\n";
   os << indent << "TargetReduction: " << this->TargetReduction << "\n";
   os << indent << "PreserveBoundary: " << (this->PreserveBoundary ? "On" : "Off") << "\n";
   os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";

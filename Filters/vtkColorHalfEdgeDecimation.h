@@ -86,7 +86,8 @@ public:
   {
     HalfEdgeColor = 0,
     Geometry = 1,
-    ColorQuadric = 2
+    ColorQuadric = 2,
+    AttributeQuadric = 3
   };
 
   /**
@@ -105,11 +106,12 @@ public:
   /**
    * Set/Get the error metric (see ErrorMetrics). Default HalfEdgeColor.
    */
-  vtkSetClampMacro(ErrorMetric, int, HalfEdgeColor, ColorQuadric);
+  vtkSetClampMacro(ErrorMetric, int, HalfEdgeColor, AttributeQuadric);
   vtkGetMacro(ErrorMetric, int);
   void SetErrorMetricToHalfEdgeColor() { this->SetErrorMetric(HalfEdgeColor); }
   void SetErrorMetricToGeometry() { this->SetErrorMetric(Geometry); }
   void SetErrorMetricToColorQuadric() { this->SetErrorMetric(ColorQuadric); }
+  void SetErrorMetricToAttributeQuadric() { this->SetErrorMetric(AttributeQuadric); }
   const char* GetErrorMetricAsString();
   ///@}
 
@@ -165,6 +167,18 @@ public:
    */
   vtkSetClampMacro(BoundaryWeight, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(BoundaryWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the weight of the edge-length term (HalfEdgeColor, Geometry, AttributeQuadric):
+   * each triangle adds to its corners' quadrics EdgeLengthWeight times its area times the
+   * squared distance from the corner. On flat parts, where the planes cost nothing, the
+   * shortest collapses then go first and a vertex that absorbed others costs more to collapse
+   * into, so flat parts are decimated evenly instead of into fans of needles. Default 0.
+   */
+  vtkSetClampMacro(EdgeLengthWeight, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(EdgeLengthWeight, double);
   ///@}
 
   /**
@@ -296,6 +310,7 @@ protected:
   vtkTypeBool OptimalPlacement;
   double ColorWeight;
   double BoundaryWeight;
+  double EdgeLengthWeight;
   double TargetReduction;
   vtkTypeBool PreserveBoundary;
   double MaximumNormalAngle;

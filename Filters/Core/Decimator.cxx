@@ -1,6 +1,7 @@
 #include "Decimator.h"
 
 #include "engine/Engine.h"
+#include "metric/AttributeQuadric.h"
 #include "metric/ColorQuadricMetric.h"
 #include "schedule/Batched.h"
 #include "schedule/Greedy.h"
@@ -56,6 +57,8 @@ DecimatorStatistics Decimator::Run(const DecimatorInput& input, int64_t targetTr
       return this->RunWith<GeometryMetric>(input, targetTriangles, progress);
     case ErrorMetric::ColorQuadric:
       return this->RunWith<ColorQuadricMetric>(input, targetTriangles, progress);
+    case ErrorMetric::AttributeQuadric:
+      return this->RunWith<AttributeQuadricMetric>(input, targetTriangles, progress);
     default:
       return this->RunWith<HalfEdgeColorMetric>(input, targetTriangles, progress);
   }

@@ -450,8 +450,8 @@ CD_TEST_CASE(Properties)
   f->SetGeometryWeight(-3);
   CD_CHECK(f->GetGeometryWeight() == 0.0);
   f->SetErrorMetric(5);
-  CD_CHECK(f->GetErrorMetric() == vtkColorHalfEdgeDecimation::ColorQuadric); // the last one
-  CD_CHECK(std::string(f->GetErrorMetricAsString()) == "ColorQuadric");
+  CD_CHECK(f->GetErrorMetric() == vtkColorHalfEdgeDecimation::AttributeQuadric); // the last one
+  CD_CHECK(std::string(f->GetErrorMetricAsString()) == "AttributeQuadric");
   f->SetErrorMetric(1);
   CD_CHECK(std::string(f->GetErrorMetricAsString()) == "Geometry");
 

@@ -1369,7 +1369,7 @@ CD_TEST_CASE(ExtremeProperties)
   clamp->SetTargetReduction(2);
   CD_CHECK_MSG(clamp->GetTargetReduction() == 1.0, "TargetReduction is clamped to 1");
   clamp->SetErrorMetric(7);
-  CD_CHECK_MSG(clamp->GetErrorMetric() == vtkColorHalfEdgeDecimation::ColorQuadric,
+  CD_CHECK_MSG(clamp->GetErrorMetric() == vtkColorHalfEdgeDecimation::AttributeQuadric,
                "ErrorMetric clamped");
   clamp->SetColorSpace(5);
   CD_CHECK_MSG(clamp->GetColorSpace() == vtkColorHalfEdgeDecimation::CIELab, "ColorSpace clamped");

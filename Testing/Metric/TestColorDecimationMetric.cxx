@@ -7,6 +7,7 @@
 
 #include "Decimator.h"
 #include "mesh/HalfEdgeMesh.h"
+#include "metric/AttributeQuadric.h"
 #include "metric/ColorQuadric.h"
 #include "metric/ColorSpace.h"
 #include "metric/HalfEdgeColor.h"
@@ -19,6 +20,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -806,6 +808,155 @@ CD_TEST_CASE(InvariantsColorQuadric)
                    "ColorQuadric Grid(80,60)", configure);
 }
 
+/// One triangle (0,0,0), (1,0,0), (0,1,0) with the linear colour field R = x, G = y, B = 0.5.
+struct RampTriangle
+{
+  std::vector<int32_t> Triangles = { 0, 1, 2 };
+  std::vector<float> Positions = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+  std::vector<float> Colors = { 0, 0, 0.5f, 1, 0, 0.5f, 0, 1, 0.5f };
+  HalfEdgeMesh Mesh;
+  RampTriangle() { this->Mesh.Build(3, this->Triangles.data(), 1); }
+};
+
+CD_TEST_CASE(AttributeQuadricTriangle)
+{
+  // Centred at a corner, the quadric is area * (dz^2 + (dx - dR)^2 + (dy - dG)^2 + dB^2):
+  // the squared distance to the plane z = 0 plus the squared difference from the field.
+  RampTriangle t;
+  std::vector<AttributeQuadric> q;
+  InitializeAttributeQuadrics(t.Mesh, t.Positions.data(), 3, t.Colors.data(), 3, 1.0,
+                              AttributeQuadricWeights(), q);
+  CD_CHECK(q.size() == 3);
+  const double onField[3] = { 1, 0, 0 }, field[3] = { 1, 0, 0 };
+  const double up[3] = { 0, 0, 2 }, none[3] = { 0, 0, 0 };
+  const double step[3] = { 0.3, 0.2, 0 }, blue[3] = { 0, 0, 0.5 };
+  for (int v = 0; v < 3; ++v) // the field is linear: the same function at every corner
+  {
+    CD_CHECK_NEAR(q[v].Evaluate(onField, field), 0.0, 1e-12);
+    CD_CHECK_NEAR(q[v].Evaluate(up, none), 0.5 * 4.0, 1e-6);
+    CD_CHECK_NEAR(q[v].Evaluate(step, blue), 0.5 * (0.09 + 0.04 + 0.25), 1e-6);
+    CD_CHECK_NEAR(q[v].W, 0.5, 1e-7);
+  }
+  // Colour scaled by 2: the colour differences count twice, on a field twice as steep.
+  InitializeAttributeQuadrics(t.Mesh, t.Positions.data(), 3, t.Colors.data(), 3, 2.0,
+                              AttributeQuadricWeights(), q);
+  const double doubled[3] = { 0.6, 0.4, 0.0 }; // B is constant
+  CD_CHECK_NEAR(q[0].Evaluate(step, doubled), 0.0, 1e-6);
+  CD_CHECK_NEAR(q[0].Evaluate(step, blue), 0.5 * (0.36 + 0.16 + 0.25), 1e-6);
+}
+
+CD_TEST_CASE(AttributeQuadricWeights)
+{
+  // Vertex 0 lies on the boundary edges 0-1 (along x: its plane is y = 0) and 2-0 (x = 0),
+  // each of squared length 1: an in-plane offset on the field costs bw (dx^2 + dy^2). The
+  // edge-length term adds el * area * |d|^2; the geometry weight scales the plane term.
+  RampTriangle t;
+  std::vector<AttributeQuadric> q;
+  AttributeQuadricWeights weights;
+  weights.Boundary = 7.0;
+  InitializeAttributeQuadrics(t.Mesh, t.Positions.data(), 3, t.Colors.data(), 3, 1.0, weights, q);
+  const double step[3] = { 0.3, 0.2, 0 }, onField[3] = { 0.3, 0.2, 0 };
+  CD_CHECK_NEAR(q[0].Evaluate(step, onField), 7.0 * (0.09 + 0.04), 1e-6);
+  weights.Boundary = 0;
+  weights.EdgeLength = 2.0;
+  weights.Geometry = 3.0;
+  InitializeAttributeQuadrics(t.Mesh, t.Positions.data(), 3, t.Colors.data(), 3, 1.0, weights, q);
+  const double lifted[3] = { 0.3, 0.2, 0.5 };
+  CD_CHECK_NEAR(q[0].Evaluate(lifted, onField), 0.5 * (3.0 * 0.25 + 2.0 * (0.09 + 0.04 + 0.25)),
+                1e-6);
+}
+
+CD_TEST_CASE(AttributeQuadricShift)
+{
+  // AddShifted re-centres: (r + q shifted by d)(e) = r(e) + q(e + d), for any offsets.
+  RampTriangle t;
+  std::vector<AttributeQuadric> q;
+  std::vector<float> colors = { 0.1f, 0.7f, 0.2f, 0.9f, 0.3f, 0.4f, 0.5f, 0.5f, 0.8f };
+  std::vector<float> positions = { 0, 0, 0, 1, 0.2f, 0.1f, 0.3f, 1, -0.2f };
+  InitializeAttributeQuadrics(t.Mesh, positions.data(), 3, colors.data(), 3, 1.0,
+                              AttributeQuadricWeights(), q);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> offset(-1.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    double dx[3], ds[3], ex[3], es[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      dx[k] = offset(random);
+      ds[k] = offset(random);
+      ex[k] = offset(random);
+      es[k] = offset(random);
+    }
+    AttributeQuadric sum = q[1];
+    sum.AddShifted(q[0], dx, ds);
+    const double shifted[3] = { ex[0] + dx[0], ex[1] + dx[1], ex[2] + dx[2] };
+    const double shiftedColor[3] = { es[0] + ds[0], es[1] + ds[1], es[2] + ds[2] };
+    CD_CHECK_NEAR(sum.Evaluate(ex, es),
+                  q[1].Evaluate(ex, es) + q[0].Evaluate(shifted, shiftedColor), 1e-5);
+  }
+}
+
+/// The area of the output's triangles whose corners' red channel differs (on both sides of a
+/// colour step), as a fraction of the output's area.
+double StraddlingArea(vtkPolyData* mesh)
+{
+  vtkDataArray* colors = mesh->GetPointData()->GetScalars();
+  double straddling = 0, total = 0;
+  vtkCellArray* polys = mesh->GetPolys();
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    polys->GetCellAtId(c, ids);
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      mesh->GetPoint(ids->GetId(k), p[k]);
+    }
+    const double area = TriangleArea3(p[0], p[1], p[2]);
+    const double r0 = colors->GetComponent(ids->GetId(0), 0);
+    const bool mixed =
+      colors->GetComponent(ids->GetId(1), 0) != r0 || colors->GetComponent(ids->GetId(2), 0) != r0;
+    straddling += mixed ? area : 0;
+    total += area;
+  }
+  return total > 0 ? straddling / total : 0;
+}
+
+CD_TEST_CASE(AttributeQuadricSeesColor)
+{
+  // A flat sheet whose colour jumps along a line: the geometric quadric cannot see the jump,
+  // the attribute quadric keeps triangles from straddling it.
+  auto sheet = meshes::FlatGrid(60, 60, Pattern::SharpRegions);
+  auto run = [&sheet](int metric)
+  {
+    vtkNew<vtkColorHalfEdgeDecimation> f;
+    f->SetInputData(sheet);
+    f->SetErrorMetric(metric);
+    f->SetBoundaryWeight(10);
+    f->SetEdgeLengthWeight(0.001);
+    f->SetTargetReduction(0.9);
+    f->Update();
+    vtkSmartPointer<vtkPolyData> out = f->GetOutput();
+    return out;
+  };
+  const double geometry = StraddlingArea(run(vtkColorHalfEdgeDecimation::Geometry));
+  const double attribute = StraddlingArea(run(vtkColorHalfEdgeDecimation::AttributeQuadric));
+  std::cout << "straddling area: Geometry " << geometry << ", AttributeQuadric " << attribute
+            << "\n";
+  CD_CHECK_MSG(attribute < 0.5 * geometry, "the attribute quadric keeps the colour steps");
+}
+
+CD_TEST_CASE(InvariantsAttributeQuadric)
+{
+  auto configure = [](vtkColorHalfEdgeDecimation* f) { f->SetErrorMetricToAttributeQuadric(); };
+  CheckDecimations(meshes::Icosphere(5, Pattern::SharpRegions), ClosedSurface(2, SphereNormal),
+                   "AttributeQuadric Icosphere(5)", configure);
+  CheckDecimations(meshes::Torus(120, 48, Pattern::FineDetail), ClosedSurface(0, TorusNormal),
+                   "AttributeQuadric Torus(120,48)", configure);
+  CheckDecimations(meshes::Grid(80, 60, Pattern::SmoothGradient), OpenSheet(),
+                   "AttributeQuadric Grid(80,60)", configure);
+}
+
 CD_TEST_CASE(InvariantsColorQuadricPlacement)
 {
   struct Case
@@ -1259,7 +1410,9 @@ CD_TEST_CASE(Properties)
   CD_CHECK(f->GetErrorMetric() == 2);
   CD_CHECK(std::string(f->GetErrorMetricAsString()) == "ColorQuadric");
   f->SetErrorMetric(7);
-  CD_CHECK(f->GetErrorMetric() == vtkColorHalfEdgeDecimation::ColorQuadric);
+  CD_CHECK(f->GetErrorMetric() == vtkColorHalfEdgeDecimation::AttributeQuadric);
+  f->SetErrorMetricToAttributeQuadric();
+  CD_CHECK(std::string(f->GetErrorMetricAsString()) == "AttributeQuadric");
   f->SetErrorMetricToGeometry();
   CD_CHECK(std::string(f->GetErrorMetricAsString()) == "Geometry");
   f->SetColorSpaceToCIELab();

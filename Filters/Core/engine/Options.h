@@ -19,9 +19,10 @@ namespace colordecimation
 
 enum class ErrorMetric
 {
-  HalfEdgeColor = 0, ///< (1 + Q)(1 + I)(1 + C): the paper's metric (section 4)
-  Geometry = 1,      ///< Q alone (half-edge QEM), colour ignored
-  ColorQuadric = 2   ///< Garland-Heckbert's 6-D colour quadric (section 9)
+  HalfEdgeColor = 0,   ///< (1 + Q)(1 + I)(1 + C): the paper's metric (section 4)
+  Geometry = 1,        ///< Q alone (half-edge QEM), colour ignored
+  ColorQuadric = 2,    ///< Garland-Heckbert's 6-D colour quadric (section 9)
+  AttributeQuadric = 3 ///< Hoppe's attribute quadric at the kept vertex (section 12)
 };
 
 /// The order in which collapses are made.
@@ -52,6 +53,9 @@ struct DecimatorOptions
   /// Weight of Garland-Heckbert's boundary constraint planes (0: none, the paper's metric;
   /// section 3).
   double BoundaryWeight = 0.0;
+  /// Weight of the edge-length term of the quadrics (0: none, the paper's metric; section 3):
+  /// flat parts are decimated evenly instead of into fans. Not ColorQuadric.
+  double EdgeLengthWeight = 0.0;
   /// Key vertices of more than LargeRing neighbours by a lower bound until they reach the top
   /// of the heap (section 6: the same result, less work; off only to test that claim).
   bool BoundHighValence = true;

@@ -69,10 +69,17 @@ void CollapseColorErrors(const double p0[3], const double c0[3], Ring& ring, dou
 
 namespace
 {
+/// The weights of the terms a face adds besides its plane.
+struct QuadricWeights
+{
+  double Boundary;   ///< of the boundary planes
+  double EdgeLength; ///< of the isotropic edge-length term
+};
+
 /// The plane terms of face f (eq. 8, and the boundary planes) added to those of its corners
 /// that lie in [first, last).
 void AddFacePlanes(const HalfEdgeMesh& mesh, const float* positions, int positionStride,
-                   double boundaryWeight, int32_t f, int32_t first, int32_t last,
+                   const QuadricWeights& weights, int32_t f, int32_t first, int32_t last,
                    VertexMetric* metrics)
 {
   int32_t tri[3];
@@ -100,13 +107,19 @@ void AddFacePlanes(const HalfEdgeMesh& mesh, const float* positions, int positio
     x /= length;
   }
   // The plane passes through the corner, where the quadric is centred: only A is non-zero.
+  // The edge-length term, weight times the area times the squared distance from the corner.
   for (int k = 0; k < 3; ++k)
   {
     if (owned(tri[k]))
     {
       metrics[tri[k]].Q.AddPlaneThroughCentre(n, area);
+      if (weights.EdgeLength > 0)
+      {
+        metrics[tri[k]].Q.AddIsotropic(weights.EdgeLength * area);
+      }
     }
   }
+  const double boundaryWeight = weights.Boundary;
   if (!(boundaryWeight > 0))
   {
     return;
@@ -205,14 +218,13 @@ struct FaceWalk
 
 /// eq. 8: each triangle's plane, weighted by its area, on each of its corners it owns.
 void AddAllFacePlanes(const HalfEdgeMesh& mesh, const float* positions, int positionStride,
-                      double boundaryWeight, const FaceWalk& walk, VertexMetric* state)
+                      const QuadricWeights& weights, const FaceWalk& walk, VertexMetric* state)
 {
   for (int32_t f = walk.From(0); f < walk.NumFaces; f = walk.From(f + 1))
   {
     if (mesh.IsFaceAlive(f))
     {
-      AddFacePlanes(mesh, positions, positionStride, boundaryWeight, f, walk.First, walk.Last,
-                    state);
+      AddFacePlanes(mesh, positions, positionStride, weights, f, walk.First, walk.Last, state);
     }
   }
 }
@@ -272,8 +284,9 @@ void AddVisualImportance(const HalfEdgeMesh& mesh, const float* colors, int colo
 
 void InitializeVertexMetrics(const HalfEdgeMesh& mesh, const float* positions, const float* colors,
                              VertexMetric* state, int positionStride, int colorStride,
-                             double boundaryWeight, int threads)
+                             double boundaryWeight, int threads, double edgeLengthWeight)
 {
+  const QuadricWeights weights{ boundaryWeight, edgeLengthWeight };
   // Each thread owns a range of vertices and walks the faces and edges in their order (those
   // that may touch its vertices), adding to its own vertices only: every vertex sees the same
   // sums in the same order as with one thread. With several threads, the faces are taken in
@@ -284,13 +297,13 @@ void InitializeVertexMetrics(const HalfEdgeMesh& mesh, const float* positions, c
   const std::vector<int32_t> chunkRange = ChunkVertexRanges(mesh, numChunks, threads);
   const int32_t* ranges = chunkRange.data();
   ParallelFor(static_cast<size_t>(mesh.GetNumberOfVertices()), threads,
-              [&mesh, positions, colors, state, positionStride, colorStride, boundaryWeight,
-               numFaces, ranges, numChunks](size_t begin, size_t end, int)
+              [&mesh, positions, colors, state, positionStride, colorStride, weights, numFaces,
+               ranges, numChunks](size_t begin, size_t end, int)
               {
                 const FaceWalk walk{ ranges, numChunks, static_cast<int32_t>(begin),
                                      static_cast<int32_t>(end), numFaces };
                 std::fill(state + begin, state + end, VertexMetric());
-                AddAllFacePlanes(mesh, positions, positionStride, boundaryWeight, walk, state);
+                AddAllFacePlanes(mesh, positions, positionStride, weights, walk, state);
                 if (colors)
                 {
                   AddVisualImportance(mesh, colors, colorStride, walk, state);
@@ -300,11 +313,24 @@ void InitializeVertexMetrics(const HalfEdgeMesh& mesh, const float* positions, c
 
 void InitializeVertexMetrics(const HalfEdgeMesh& mesh, const float* positions, const float* colors,
                              std::vector<VertexMetric>& metrics, int positionStride,
-                             int colorStride, double boundaryWeight, int threads)
+                             int colorStride, double boundaryWeight, int threads,
+                             double edgeLengthWeight)
 {
   metrics.resize(static_cast<size_t>(mesh.GetNumberOfVertices()));
   InitializeVertexMetrics(mesh, positions, colors, metrics.data(), positionStride, colorStride,
-                          boundaryWeight, threads);
+                          boundaryWeight, threads, edgeLengthWeight);
+}
+
+bool ColorsVary(const Buffer<HotVertex>& hot)
+{
+  for (size_t v = 1; v < hot.size(); ++v)
+  {
+    if (hot[v].C[0] != hot[0].C[0] || hot[v].C[1] != hot[0].C[1] || hot[v].C[2] != hot[0].C[2])
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 COLORDECIMATION_VECTOR_CLONES

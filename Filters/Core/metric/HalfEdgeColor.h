@@ -88,6 +88,12 @@ VTKCOLORDECIMATION_EXPORT void CollapseColorErrors(const double p0[3], const dou
  * by boundaryWeight times the edge's squared length (Garland and Heckbert's boundary
  * constraint): collapses that pull a boundary inwards or cut its corners then cost more.
  *
+ * With edgeLengthWeight > 0 (not in the paper; section 3), each triangle also adds to its
+ * corners edgeLengthWeight times its area times the squared distance from the corner: on flat
+ * parts, where the planes cost nothing, the shortest collapses go first and a vertex that
+ * absorbed others costs more to collapse into, so flat parts are decimated evenly instead of
+ * into fans of needles.
+ *
  * On `threads` threads, each owning a range of vertices and adding to them the faces and
  * edges in the same order as one thread would: the result is the same for any number.
  */
@@ -95,15 +101,15 @@ VTKCOLORDECIMATION_EXPORT void InitializeVertexMetrics(const HalfEdgeMesh& mesh,
                                                        const float* positions, const float* colors,
                                                        std::vector<VertexMetric>& metrics,
                                                        int positionStride = 3, int colorStride = 3,
-                                                       double boundaryWeight = 0.0,
-                                                       int threads = 1);
+                                                       double boundaryWeight = 0.0, int threads = 1,
+                                                       double edgeLengthWeight = 0.0);
 /// The same into metrics[0, mesh.GetNumberOfVertices()), every record written (the threads
 /// clear their own first, so that a fresh array is first touched by all of them).
 VTKCOLORDECIMATION_EXPORT void InitializeVertexMetrics(const HalfEdgeMesh& mesh,
                                                        const float* positions, const float* colors,
                                                        VertexMetric* metrics, int positionStride,
                                                        int colorStride, double boundaryWeight,
-                                                       int threads);
+                                                       int threads, double edgeLengthWeight = 0.0);
 /**
  * The cost of every member j of the ring of v0 (hot0: its record, m0: its state), written to
  * costs[0, ring.PaddedSize()): with colorTerms the paper's (1 + wQ)(1 + I)(1 + C), where C is 0
@@ -112,6 +118,9 @@ VTKCOLORDECIMATION_EXPORT void InitializeVertexMetrics(const HalfEdgeMesh& mesh,
 VTKCOLORDECIMATION_EXPORT void CostHalfEdgeRing(const HotVertex& hot0, const VertexMetric& m0,
                                                 double weight, bool colorTerms, bool withColorError,
                                                 Ring& ring, double* costs);
+
+/// Whether the records' colours are not all the same.
+VTKCOLORDECIMATION_EXPORT bool ColorsVary(const Buffer<HotVertex>& hot);
 
 /**
  * The half-edge metrics as the engine's policy (engine/Engine.h): the state (48 bytes a
@@ -138,20 +147,22 @@ public:
   explicit HalfEdgeMetric(const DecimatorOptions& options)
     : GeometryWeight(options.GeometryWeight)
     , BoundaryWeight(std::max(options.BoundaryWeight, 0.0))
+    , EdgeLengthWeight(std::max(options.EdgeLengthWeight, 0.0))
     , BoundHighValence(options.BoundHighValence)
   {
   }
 
-  /// The initial state of every vertex (eq. 8 and 14), on `threads` threads.
+  /// The initial state of every vertex (eq. 8 and 14), on `threads` threads. Colours that do
+  /// not vary make I and C zero everywhere: then they are not computed at all.
   void Initialize(const HalfEdgeMesh& mesh, const Frame&, Buffer<HotVertex>& hot, bool useColor,
                   int threads)
   {
     this->Hot = &hot;
-    this->UseColor = useColor;
+    this->UseColor = useColor && ColorsVary(hot);
     this->States.resize(hot.size()); // written by the threads
     InitializeVertexMetrics(mesh, hot.empty() ? nullptr : hot[0].P,
-                            useColor && !hot.empty() ? hot[0].C : nullptr, this->States.data(),
-                            HotStride, HotStride, this->BoundaryWeight, threads);
+                            this->UseColor ? hot[0].C : nullptr, this->States.data(), HotStride,
+                            HotStride, this->BoundaryWeight, threads, this->EdgeLengthWeight);
   }
 
   /// Whether v0, of ringSize neighbours, is keyed by the lower bound of its cost.
@@ -163,7 +174,7 @@ public:
   void CostRing(int32_t v0, bool withColorError, Ring& ring, double* costs, Scratch&) const
   {
     CostHalfEdgeRing((*this->Hot)[v0], this->States[v0], this->GeometryWeight, ColorTerms,
-                     withColorError, ring, costs);
+                     withColorError && this->UseColor, ring, costs);
   }
 
   /// Hint that v's state is about to be read: both ends of its record, since a 48-byte record
@@ -211,6 +222,7 @@ public:
 private:
   double GeometryWeight;
   double BoundaryWeight;
+  double EdgeLengthWeight;
   bool BoundHighValence;
   bool UseColor = false;
   Buffer<HotVertex>* Hot = nullptr;

@@ -32,6 +32,14 @@ struct Quadric
     this->A22 = static_cast<float>(this->A22 + weight * n[2] * n[2]);
   }
 
+  /// Add `weight * I`: weight times the squared distance from the centre.
+  void AddIsotropic(double weight)
+  {
+    this->A00 = static_cast<float>(this->A00 + weight);
+    this->A11 = static_cast<float>(this->A11 + weight);
+    this->A22 = static_cast<float>(this->A22 + weight);
+  }
+
   /// Q evaluated at offset d from the centre.
   double Evaluate(const double d[3]) const
   {

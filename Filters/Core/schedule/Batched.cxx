@@ -1,5 +1,6 @@
 #include "schedule/Batched.h"
 
+#include "metric/AttributeQuadric.h"
 #include "metric/ColorQuadricMetric.h"
 #include "metric/HalfEdgeColor.h"
 #include "schedule/Blocks.h"
@@ -463,6 +464,8 @@ template void CollapseInBatches(Engine<HalfEdgeColorMetric>&, DecimatorStatistic
 template void CollapseInBatches(Engine<GeometryMetric>&, DecimatorStatistics&,
                                 const ProgressFunction&);
 template void CollapseInBatches(Engine<ColorQuadricMetric>&, DecimatorStatistics&,
+                                const ProgressFunction&);
+template void CollapseInBatches(Engine<AttributeQuadricMetric>&, DecimatorStatistics&,
                                 const ProgressFunction&);
 
 } // namespace colordecimation

@@ -1,5 +1,6 @@
 #include "schedule/Greedy.h"
 
+#include "metric/AttributeQuadric.h"
 #include "metric/ColorQuadricMetric.h"
 #include "metric/HalfEdgeColor.h"
 #include "schedule/VertexHeap.h"
@@ -208,6 +209,8 @@ template void CollapseGreedily(Engine<HalfEdgeColorMetric>&, DecimatorStatistics
 template void CollapseGreedily(Engine<GeometryMetric>&, DecimatorStatistics&,
                                const ProgressFunction&);
 template void CollapseGreedily(Engine<ColorQuadricMetric>&, DecimatorStatistics&,
+                               const ProgressFunction&);
+template void CollapseGreedily(Engine<AttributeQuadricMetric>&, DecimatorStatistics&,
                                const ProgressFunction&);
 
 } // namespace colordecimation

@@ -1,0 +1,267 @@
+#include "metric/AttributeQuadric.h"
+
+#include "mesh/HalfEdgeMesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace colordecimation
+{
+namespace
+{
+constexpr double Axis[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+} // namespace
+
+double AttributeQuadric::Evaluate(const double dx[3], const double ds[3]) const
+{
+  const double ax = this->A00 * dx[0] + this->A01 * dx[1] + this->A02 * dx[2];
+  const double ay = this->A01 * dx[0] + this->A11 * dx[1] + this->A12 * dx[2];
+  const double az = this->A02 * dx[0] + this->A12 * dx[1] + this->A22 * dx[2];
+  double q = dx[0] * ax + dx[1] * ay + dx[2] * az + this->C;
+  for (int i = 0; i < 3; ++i)
+  {
+    const double gx = this->G[i][0] * dx[0] + this->G[i][1] * dx[1] + this->G[i][2] * dx[2];
+    q += ds[i] * (this->W * ds[i] - 2.0 * gx - 2.0 * this->D[i]) + 2.0 * this->B[i] * dx[i];
+  }
+  return q;
+}
+
+void AttributeQuadric::AddShifted(const AttributeQuadric& other, const double dx[3],
+                                  const double ds[3])
+{
+  // other(y + d): the same quadratic part; B' = B + A dx - sum_k ds_k G_k,
+  // D'_k = D_k + G_k . dx - W ds_k, C' = other(d).
+  const double ax = other.A00 * dx[0] + other.A01 * dx[1] + other.A02 * dx[2];
+  const double ay = other.A01 * dx[0] + other.A11 * dx[1] + other.A12 * dx[2];
+  const double az = other.A02 * dx[0] + other.A12 * dx[1] + other.A22 * dx[2];
+  double b[3] = { other.B[0] + ax, other.B[1] + ay, other.B[2] + az };
+  for (int k = 0; k < 3; ++k)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      b[i] -= ds[k] * other.G[k][i];
+    }
+    const double gx = other.G[k][0] * dx[0] + other.G[k][1] * dx[1] + other.G[k][2] * dx[2];
+    this->D[k] = static_cast<float>(this->D[k] + other.D[k] + gx - other.W * ds[k]);
+    for (int i = 0; i < 3; ++i)
+    {
+      this->G[k][i] += other.G[k][i];
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    this->B[i] = static_cast<float>(this->B[i] + b[i]);
+  }
+  this->C = static_cast<float>(this->C + other.Evaluate(dx, ds));
+  this->A00 += other.A00;
+  this->A01 += other.A01;
+  this->A02 += other.A02;
+  this->A11 += other.A11;
+  this->A12 += other.A12;
+  this->A22 += other.A22;
+  this->W += other.W;
+}
+
+void AttributeQuadric::AddPlane(const double m[3], double weight)
+{
+  this->A00 = static_cast<float>(this->A00 + weight * m[0] * m[0]);
+  this->A01 = static_cast<float>(this->A01 + weight * m[0] * m[1]);
+  this->A02 = static_cast<float>(this->A02 + weight * m[0] * m[2]);
+  this->A11 = static_cast<float>(this->A11 + weight * m[1] * m[1]);
+  this->A12 = static_cast<float>(this->A12 + weight * m[1] * m[2]);
+  this->A22 = static_cast<float>(this->A22 + weight * m[2] * m[2]);
+}
+
+void AttributeQuadric::AddTriangle(const double n[3], const double g[3][3], double area,
+                                   const AttributeQuadricWeights& weights)
+{
+  this->AddPlane(n, weights.Geometry * area);
+  if (weights.EdgeLength > 0)
+  {
+    for (const double* axis : { Axis[0], Axis[1], Axis[2] })
+    {
+      this->AddPlane(axis, weights.EdgeLength * area);
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    this->AddPlane(g[k], area);
+    for (int i = 0; i < 3; ++i)
+    {
+      this->G[k][i] = static_cast<float>(this->G[k][i] + area * g[k][i]);
+    }
+  }
+  this->W = static_cast<float>(this->W + area);
+}
+
+namespace
+{
+/// The gradients of the three channels over the triangle (x: corners, s: their colours), by
+/// barycentric coordinates; false for a degenerate triangle.
+bool ColorGradients(const double x[3][3], const double s[3][3], double g[3][3])
+{
+  double e1[3], e2[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    e1[i] = x[1][i] - x[0][i];
+    e2[i] = x[2][i] - x[0][i];
+  }
+  const double d00 = e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2];
+  const double d01 = e1[0] * e2[0] + e1[1] * e2[1] + e1[2] * e2[2];
+  const double d11 = e2[0] * e2[0] + e2[1] * e2[1] + e2[2] * e2[2];
+  const double denom = d00 * d11 - d01 * d01;
+  if (!(denom > 0))
+  {
+    return false;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    const double a1 = s[1][k] - s[0][k], a2 = s[2][k] - s[0][k];
+    for (int i = 0; i < 3; ++i)
+    {
+      const double u = (d11 * e1[i] - d01 * e2[i]) / denom; // gradient of the 1st coordinate
+      const double v = (d00 * e2[i] - d01 * e1[i]) / denom; // of the 2nd
+      g[k][i] = u * a1 + v * a2;
+    }
+  }
+  return true;
+}
+
+/// The boundary edges of face f: the plane through each, perpendicular to the face.
+void AddBoundaryPlanes(const HalfEdgeMesh& mesh, int32_t f, const int32_t tri[3],
+                       const double x[3][3], const double n[3], double boundaryWeight,
+                       std::vector<AttributeQuadric>& quadrics)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    if (mesh.Twin(3 * f + c) >= 0)
+    {
+      continue;
+    }
+    const double* a = x[c];
+    const double* b = x[(c + 1) % 3];
+    const double e[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    double m[3] = { e[1] * n[2] - e[2] * n[1], e[2] * n[0] - e[0] * n[2],
+                    e[0] * n[1] - e[1] * n[0] };
+    const double length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    if (!(length > 0.0))
+    {
+      continue;
+    }
+    for (double& component : m)
+    {
+      component /= length;
+    }
+    const double weight = boundaryWeight * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    quadrics[tri[c]].AddPlane(m, weight);
+    quadrics[tri[(c + 1) % 3]].AddPlane(m, weight);
+  }
+}
+} // namespace
+
+void InitializeAttributeQuadrics(const HalfEdgeMesh& mesh, const float* positions,
+                                 int positionStride, const float* colors, int colorStride,
+                                 double colorScale, const AttributeQuadricWeights& weights,
+                                 std::vector<AttributeQuadric>& quadrics)
+{
+  quadrics.assign(mesh.GetNumberOfVertices(), AttributeQuadric());
+  for (int32_t f = 0; f < mesh.GetNumberOfFaceSlots(); ++f)
+  {
+    if (!mesh.IsFaceAlive(f))
+    {
+      continue;
+    }
+    int32_t tri[3];
+    mesh.GetFace(f, tri);
+    double x[3][3], s[3][3];
+    for (int c = 0; c < 3; ++c)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        x[c][k] = positions[size_t(positionStride) * tri[c] + k];
+        s[c][k] = colors ? colorScale * colors[size_t(colorStride) * tri[c] + k] : 0.0;
+      }
+    }
+    const double e1[3] = { x[1][0] - x[0][0], x[1][1] - x[0][1], x[1][2] - x[0][2] };
+    const double e2[3] = { x[2][0] - x[0][0], x[2][1] - x[0][1], x[2][2] - x[0][2] };
+    double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                    e1[0] * e2[1] - e1[1] * e2[0] };
+    const double twiceArea = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    double g[3][3];
+    if (!(twiceArea > 0.0) || !ColorGradients(x, s, g))
+    {
+      continue;
+    }
+    for (double& component : n)
+    {
+      component /= twiceArea;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      quadrics[tri[c]].AddTriangle(n, g, 0.5 * twiceArea, weights);
+    }
+    if (weights.Boundary > 0.0)
+    {
+      AddBoundaryPlanes(mesh, f, tri, x, n, weights.Boundary, quadrics);
+    }
+  }
+}
+
+AttributeQuadricMetric::AttributeQuadricMetric(const DecimatorOptions& options)
+  : ColorWeight(std::max(options.ColorWeight, 0.0))
+  , Weights{ std::max(options.BoundaryWeight, 0.0), std::max(options.EdgeLengthWeight, 0.0),
+             std::max(options.GeometryWeight, 0.0) }
+{
+}
+
+void AttributeQuadricMetric::Initialize(const HalfEdgeMesh& mesh, const Frame&,
+                                        Buffer<HotVertex>& hot, bool useColor, int)
+{
+  this->Hot = &hot;
+  this->UseColor = useColor;
+  InitializeAttributeQuadrics(mesh, hot.empty() ? nullptr : hot[0].P, HotStride,
+                              useColor && !hot.empty() ? hot[0].C : nullptr, HotStride,
+                              this->ColorWeight, this->Weights, this->States);
+}
+
+void AttributeQuadricMetric::Offset(int32_t v0, int32_t v1, double dx[3], double ds[3]) const
+{
+  const HotVertex& a = (*this->Hot)[v0];
+  const HotVertex& b = (*this->Hot)[v1];
+  for (int k = 0; k < 3; ++k)
+  {
+    dx[k] = double(b.P[k]) - a.P[k];
+    ds[k] = this->ColorWeight * (double(b.C[k]) - a.C[k]);
+  }
+}
+
+void AttributeQuadricMetric::CostRing(int32_t v0, bool, Ring& ring, double* costs, Scratch&) const
+{
+  const HotVertex& hot0 = (*this->Hot)[v0];
+  const AttributeQuadric& q0 = this->States[v0];
+  const double w = this->ColorWeight;
+  for (int j = 0; j < ring.Size; ++j)
+  {
+    const double dx[3] = { ring.X[j] - hot0.P[0], ring.Y[j] - hot0.P[1], ring.Z[j] - hot0.P[2] };
+    const double ds[3] = { w * (ring.R[j] - hot0.C[0]), w * (ring.G[j] - hot0.C[1]),
+                           w * (ring.B[j] - hot0.C[2]) };
+    // (Q(v0) + Q(j))(xj): Q(j) is centred at xj, so it contributes its constant.
+    costs[j] = std::max(0.0, q0.Evaluate(dx, ds) + ring.QC[j]);
+  }
+  for (int j = ring.Size; j < ring.PaddedSize(); ++j)
+  {
+    costs[j] = 0.0;
+  }
+}
+
+void AttributeQuadricMetric::Merge(int32_t v0, int32_t v1, bool, const Placement&)
+{
+  double dx[3], ds[3];
+  this->Offset(v0, v1, dx, ds);
+  AttributeQuadric& q1 = this->States[v1];
+  q1.AddShifted(this->States[v0], dx, ds);
+  (*this->Hot)[v1].QC = q1.C;
+}
+
+} // namespace colordecimation

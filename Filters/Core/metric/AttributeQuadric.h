@@ -1,0 +1,129 @@
+/**
+ * @file AttributeQuadric.h
+ * @brief Hoppe's quadric for appearance attributes ("New quadric metric for simplifying
+ * meshes with appearance attributes", 1999), evaluated at the kept vertex of a half-edge
+ * collapse (docs/ALGORITHM.md, section 12).
+ *
+ * For a triangle of area a, with unit normal n and, for each colour channel k, the gradient
+ * g_k of the channel interpolated linearly over it, the quadric of a point x with colour s is
+ *   a * ( (n.(x - x0))^2 + sum_k (s0_k + g_k.(x - x0) - s_k)^2 )
+ * (x0, s0: a corner): the squared distance to the triangle's plane plus the squared difference
+ * from the triangle's colour at x. A vertex holds the sum over its triangles. Positions are in
+ * the normalised frame (mean edge length 1, section 2), colours times ColorWeight: a colour
+ * difference of 1 / ColorWeight weighs as a distance of one mean edge length, whatever the
+ * mesh's units.
+ *
+ * As a quadric of R^6 it has the structure [[A, -G^T], [-G, w I]]: 23 floats (92 bytes) instead
+ * of the 28 of the general colour quadric. It is stored centred at its vertex's own point of
+ * R^6, so the initial quadric has no linear and constant terms.
+ */
+#ifndef colordecimation_AttributeQuadric_h
+#define colordecimation_AttributeQuadric_h
+
+#include "engine/Frame.h"
+#include "engine/Options.h"
+#include "metric/Ring.h"
+#include "util/Buffer.h"
+#include "util/Prefetch.h"
+#include "vtkColorDecimationModule.h" // for export macro
+
+#include <cstdint>
+#include <vector>
+
+namespace colordecimation
+{
+class HalfEdgeMesh;
+
+/// The weights of a triangle's terms (section 12).
+struct AttributeQuadricWeights
+{
+  double Boundary = 0;   ///< the boundary planes, times the squared edge length
+  double EdgeLength = 0; ///< the isotropic edge-length term, times the area
+  double Geometry = 1;   ///< the plane term, times the area
+};
+
+/// Q(dx, ds) = dx^T A dx - 2 sum_k ds_k (G_k . dx) + W |ds|^2 + 2 B . dx - 2 D . ds + C, for the
+/// offset (dx, ds) from the centre.
+struct VTKCOLORDECIMATION_EXPORT AttributeQuadric
+{
+  float A00 = 0, A01 = 0, A02 = 0, A11 = 0, A12 = 0, A22 = 0;
+  float G[3][3] = {}; ///< G[k]: the area-weighted gradient of channel k
+  float W = 0;        ///< the area (the colour block is W I)
+  float B[3] = {};
+  float D[3] = {};
+  float C = 0;
+
+  double Evaluate(const double dx[3], const double ds[3]) const;
+  /// Add `other`, whose centre lies at offset (dx, ds) from this one's (dx = x_this - x_other).
+  void AddShifted(const AttributeQuadric& other, const double dx[3], const double ds[3]);
+  /// Add weight * m m^T to the geometric block (a plane through the centre).
+  void AddPlane(const double m[3], double weight);
+  /// A triangle's terms at its corner (the plane and the colour field pass through it):
+  /// area * (geometry n n^T + edgeLength I + sum_k g_k g_k^T), area * g_k, area.
+  void AddTriangle(const double n[3], const double g[3][3], double area,
+                   const AttributeQuadricWeights& weights);
+};
+static_assert(sizeof(AttributeQuadric) == 92, "23 floats per vertex");
+
+/**
+ * The initial quadrics of the vertices (colours times colorScale; colors may be null), with
+ * Garland and Heckbert's boundary planes and the edge-length term as weighted.
+ */
+VTKCOLORDECIMATION_EXPORT void InitializeAttributeQuadrics(const HalfEdgeMesh& mesh,
+                                                           const float* positions,
+                                                           int positionStride, const float* colors,
+                                                           int colorStride, double colorScale,
+                                                           const AttributeQuadricWeights& weights,
+                                                           std::vector<AttributeQuadric>& quadrics);
+
+/// The attribute quadric as the engine's policy: half-edge collapses at cost (Q0 + Q1)(x1).
+class VTKCOLORDECIMATION_EXPORT AttributeQuadricMetric
+{
+public:
+  struct Placement
+  {
+  };
+  struct Scratch
+  {
+  };
+  static constexpr bool ReadsColor = true;
+
+  explicit AttributeQuadricMetric(const DecimatorOptions& options);
+
+  void Initialize(const HalfEdgeMesh& mesh, const Frame& frame, Buffer<HotVertex>& hot,
+                  bool useColor, int threads);
+  static constexpr bool KeysByBound(int) { return false; }
+  void CostRing(int32_t v0, bool withColorError, Ring& ring, double* costs, Scratch&) const;
+  void Prefetch(int32_t v) const { COLORDECIMATION_PREFETCH(this->States.data() + v); }
+
+  static constexpr bool MovesVertices() { return false; }
+  bool Place(int32_t, int32_t, Placement&, double[3]) const { return false; }
+  bool RingPlacement(int32_t, int, const Scratch&, double[3]) const { return false; }
+  bool IsMoved(int32_t) const { return false; }
+  bool AnyMoved() const { return false; }
+  /// v1 takes over v0's quadric, re-centred at v1's point.
+  void Merge(int32_t v0, int32_t v1, bool, const Placement&);
+
+  static constexpr size_t BytesPerVertex() { return sizeof(AttributeQuadric); }
+  void Release() { this->States = std::vector<AttributeQuadric>(); }
+  template <typename Map>
+  void Restore(const Map& restore)
+  {
+    restore(this->States);
+  }
+
+  std::vector<AttributeQuadric> States;
+
+private:
+  /// The offset of v1's point of R^6 from v0's.
+  void Offset(int32_t v0, int32_t v1, double dx[3], double ds[3]) const;
+
+  Buffer<HotVertex>* Hot = nullptr;
+  double ColorWeight;
+  AttributeQuadricWeights Weights;
+  bool UseColor = false;
+};
+
+} // namespace colordecimation
+
+#endif
