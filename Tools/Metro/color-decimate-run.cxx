@@ -4,6 +4,7 @@
 // meshopt_simplify; writes the result and, as JSON, the time, the peak memory and the
 // metric's bytes per vertex.
 #include "CommandLine.h"
+#include "IndexedMesh.h"
 #include "JsonOutput.h"
 #include "MeshColors.h"
 #include "MeshIO.h"
@@ -217,7 +218,7 @@ vtkSmartPointer<vtkPolyData> Simplify(vtkPolyData* input, const Settings& settin
 #if COLORDECIMATION_WITH_MESHOPTIMIZER
   else
   {
-    output = MakeMeshOptimizerOutput(input, SimplifyWithMeshOptimizer(input, settings.Reduction));
+    output = MeshOnKeptTriangles(input, SimplifyWithMeshOptimizer(input, settings.Reduction));
     // meshopt_simplify keeps a quadric of 11 floats per vertex (and other per-vertex
     // tables: remap, kind, adjacency).
     figures.MetricBytesPerVertex = 44;
