@@ -22,7 +22,6 @@
 #include <iterator>
 #include <spawn.h>
 #include <sstream>
-#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
