@@ -1,8 +1,9 @@
 /**
  * @file ColorDecimateBench.cxx
  * @brief color-decimate-bench: time and peak memory of vtkColorHalfEdgeDecimation against
- * vtkQuadricDecimation (and meshoptimizer, when built with it) on the same meshes, in one
- * process, plus a scale sweep of generated spheres.
+ * vtkQuadricDecimation (and meshoptimizer: the native library when built with it, and the
+ * current version's attribute-aware simplifiers in WebAssembly when node and the npm package
+ * are there) on the same meshes, plus a scale sweep of generated spheres.
  *
  * Run `color-decimate-bench --help` for the options. With --markdown FILE it writes the
  * whole report (docs/BENCHMARK.md) so that the figures can be regenerated in one command.
@@ -10,6 +11,7 @@
 #include "ColorDecimationMeshes.h"
 #include "CommandLine.h"
 #include "MeshIO.h"
+#include "MeshOptimizerJS.h"
 #include "ProcessMemory.h"
 #include "QuadricPeer.h"
 
@@ -77,8 +79,35 @@ enum Method
   QuadricAttributes,
   QuadricGeometry,
   MeshOptimizer,
+  MeshOptimizerJSAttributes, // meshoptimizer's WebAssembly build, run by node
+  MeshOptimizerJSUpdate,
+  MeshOptimizerJSPrune,
   NumberOfMethods
 };
+
+bool IsWebAssembly(int method)
+{
+  return method >= MeshOptimizerJSAttributes && method <= MeshOptimizerJSPrune;
+}
+
+MeshOptimizerJSMode ModeOf(int method)
+{
+  return method == MeshOptimizerJSUpdate ? MeshOptimizerJSMode::Update
+    : method == MeshOptimizerJSPrune     ? MeshOptimizerJSMode::Prune
+                                         : MeshOptimizerJSMode::Attributes;
+}
+
+/// "meshoptimizer 0.18 meshopt_simplify (geometry only)", with the version built in.
+const char* NativeMeshOptimizerName()
+{
+#if COLORDECIMATION_WITH_MESHOPTIMIZER
+  static const std::string name = std::string("meshoptimizer ") +
+    colordecimation::tools::MeshOptimizerVersion() + " meshopt_simplify (geometry only)";
+  return name.c_str();
+#else
+  return "meshoptimizer meshopt_simplify (geometry only)";
+#endif
+}
 
 const char* MethodName(int method)
 {
@@ -95,7 +124,13 @@ const char* MethodName(int method)
     case QuadricGeometry:
       return "vtkQuadricDecimation, AttributeErrorMetric off";
     case MeshOptimizer:
-      return "meshoptimizer meshopt_simplify (geometry only)";
+      return NativeMeshOptimizerName();
+    case MeshOptimizerJSAttributes:
+      return "meshoptimizer 1.3 simplifyWithAttributes (WebAssembly)";
+    case MeshOptimizerJSUpdate:
+      return "meshoptimizer 1.3 simplifyWithUpdate (WebAssembly)";
+    case MeshOptimizerJSPrune:
+      return "meshoptimizer 1.3 simplifyWithAttributes + Prune (WebAssembly)";
     default:
       return "?";
   }
@@ -117,6 +152,12 @@ const char* MethodShortName(int method)
       return "vtkQD attr off";
     case MeshOptimizer:
       return "meshopt";
+    case MeshOptimizerJSAttributes:
+      return "meshopt 1.3 attributes (wasm)";
+    case MeshOptimizerJSUpdate:
+      return "meshopt 1.3 update (wasm)";
+    case MeshOptimizerJSPrune:
+      return "meshopt 1.3 prune (wasm)";
     default:
       return "?";
   }
@@ -150,6 +191,7 @@ struct RunResult
   long long PeakBytes = -1; // largest over the repeats, above the resident memory before
   long long StateBytes = -1;
   bool PeakReset = true;
+  double RoundTripSeconds = 0; // WebAssembly: the whole call, node's start included; median
 };
 
 struct CaseResult
@@ -172,7 +214,10 @@ std::string Description()
          ", and meshoptimizer's meshopt_simplify (geometry only, for reference)"
 #endif
          ",\n"
-         "in one process on the same input. For each run it prints the filter's own time\n"
+         "in one process on the same input, and meshoptimizer 1.3's simplifyWithAttributes,\n"
+         "simplifyWithUpdate and Prune mode (the npm package's WebAssembly build, run by node\n"
+         "and timed inside node; left out when node or the package is missing: npm ci\n"
+         "--prefix Tools/MeshOptimizerJS). For each run it prints the filter's own time\n"
          "(wall clock and CPU), the output triangles, vtkQuadricDecimation's time divided by\n"
          "the run's time, and the peak resident memory of the run above the memory before it\n"
          "(VmHWM after resetting it through /proc/self/clear_refs).";
@@ -310,6 +355,8 @@ struct Single
   double CpuSeconds = 0;
   long long OutputTriangles = 0;
   long long StateBytes = -1;
+  long long PeakBytes = -1; // measured by the run itself (node's), instead of the probe's
+  double RoundTripSeconds = 0;
   bool Ok = true;
   std::string Error;
 };
@@ -378,8 +425,30 @@ Single RunMeshOptimizer(vtkPolyData* mesh, double reduction)
 }
 #endif
 
+/// meshoptimizer's WebAssembly build: its times are node's, around the simplify call.
+Single RunMeshOptimizerJS(vtkPolyData* mesh, int method, double reduction)
+{
+  MeshOptimizerJSSettings settings;
+  settings.Mode = ModeOf(method);
+  settings.Reduction = reduction;
+  const MeshOptimizerJSResult run = SimplifyWithMeshOptimizerJS(mesh, settings);
+  Single result;
+  result.Seconds = run.Seconds;
+  result.CpuSeconds = run.CpuSeconds;
+  result.OutputTriangles = static_cast<long long>(run.Triangles.size() / 3);
+  result.PeakBytes = run.PeakBytes;
+  result.RoundTripSeconds = run.RoundTripSeconds;
+  result.Ok = run.Error.empty();
+  result.Error = run.Error;
+  return result;
+}
+
 bool MethodAvailable(int method)
 {
+  if (IsWebAssembly(method))
+  {
+    return MeshOptimizerJSUnavailable().empty();
+  }
 #if COLORDECIMATION_WITH_MESHOPTIMIZER
   return method >= 0 && method < NumberOfMethods;
 #else
@@ -387,11 +456,36 @@ bool MethodAvailable(int method)
 #endif
 }
 
+/// One run of `method` on `mesh`.
+Single RunMethod(int method, vtkPolyData* mesh, double reduction)
+{
+  switch (method)
+  {
+    case OursColor:
+      return RunOurs(mesh, vtkColorHalfEdgeDecimation::HalfEdgeColor, reduction);
+    case OursGeometry:
+      return RunOurs(mesh, vtkColorHalfEdgeDecimation::Geometry, reduction);
+    case OursBatched:
+      return RunOurs(mesh, vtkColorHalfEdgeDecimation::HalfEdgeColor, reduction,
+                     vtkColorHalfEdgeDecimation::Batched);
+    case QuadricAttributes:
+      return RunQuadric(mesh, true, reduction);
+    case QuadricGeometry:
+      return RunQuadric(mesh, false, reduction);
+#if COLORDECIMATION_WITH_MESHOPTIMIZER
+    case MeshOptimizer:
+      return RunMeshOptimizer(mesh, reduction);
+#endif
+    default:
+      return RunMeshOptimizerJS(mesh, method, reduction);
+  }
+}
+
 /// One method's runs on one mesh, gathered over the rounds of RunCase.
 struct Measurement
 {
   RunResult Result;
-  std::vector<double> Times, CpuTimes;
+  std::vector<double> Times, CpuTimes, RoundTrips;
   vtkSmartPointer<vtkPolyData> Mesh; // the mesh as given, or its cleaned copy (see below)
 };
 
@@ -417,35 +511,9 @@ void MeasureOnce(int method, vtkPolyData* given, const Options& options, const s
     bool reset = true;
     {
       PeakMemoryProbe probe;
-      vtkPolyData* mesh = m.Mesh;
-      switch (method)
-      {
-        case OursColor:
-          single = RunOurs(mesh, vtkColorHalfEdgeDecimation::HalfEdgeColor, options.Reduction);
-          break;
-        case OursGeometry:
-          single = RunOurs(mesh, vtkColorHalfEdgeDecimation::Geometry, options.Reduction);
-          break;
-        case OursBatched:
-          single = RunOurs(mesh, vtkColorHalfEdgeDecimation::HalfEdgeColor, options.Reduction,
-                           vtkColorHalfEdgeDecimation::Batched);
-          break;
-        case QuadricAttributes:
-          single = RunQuadric(mesh, true, options.Reduction);
-          break;
-        case QuadricGeometry:
-          single = RunQuadric(mesh, false, options.Reduction);
-          break;
-#if COLORDECIMATION_WITH_MESHOPTIMIZER
-        case MeshOptimizer:
-          single = RunMeshOptimizer(mesh, options.Reduction);
-          break;
-#endif
-        default:
-          break;
-      }
-      peak = probe.PeakAboveBaseline();
-      reset = probe.PeakWasReset();
+      single = RunMethod(method, m.Mesh, options.Reduction);
+      peak = single.PeakBytes >= 0 ? single.PeakBytes : probe.PeakAboveBaseline();
+      reset = single.PeakBytes >= 0 || probe.PeakWasReset();
     }
     std::fprintf(stderr, " %.3f s (CPU %.3f s)\n", single.Seconds, single.CpuSeconds);
     if (!single.Ok && method == QuadricAttributes && m.Mesh == given)
@@ -473,6 +541,7 @@ void MeasureOnce(int method, vtkPolyData* given, const Options& options, const s
     }
     m.Times.push_back(single.Seconds);
     m.CpuTimes.push_back(single.CpuSeconds);
+    m.RoundTrips.push_back(single.RoundTripSeconds);
     result.OutputTriangles = single.OutputTriangles;
     result.StateBytes = single.StateBytes;
     result.PeakBytes = std::max(result.PeakBytes, peak);
@@ -480,6 +549,7 @@ void MeasureOnce(int method, vtkPolyData* given, const Options& options, const s
     result.Ran = true;
     result.Seconds = Median(m.Times);
     result.CpuSeconds = Median(m.CpuTimes);
+    result.RoundTripSeconds = Median(m.RoundTrips);
     return;
   }
 }
@@ -497,7 +567,9 @@ CaseResult RunCase(const std::string& name, const std::string& description, vtkP
   {
     if (!MethodAvailable(method))
     {
-      result.Runs[method].Skipped = "not built (meshoptimizer not found)";
+      result.Runs[method].Skipped = IsWebAssembly(method)
+        ? "not run (" + MeshOptimizerJSUnavailable() + ")"
+        : "not built (meshoptimizer not found)";
     }
     else if ((method == QuadricAttributes || method == QuadricGeometry) && !runQuadric)
     {
@@ -538,6 +610,30 @@ std::string Ratio(const RunResult& quadric, const RunResult& run)
   return Format("%.1f", quadric.Seconds / run.Seconds);
 }
 
+/// The WebAssembly rows' whole calls, node's start included, or "".
+std::string RoundTripNote(const CaseResult& c)
+{
+  std::string times;
+  for (int m = MeshOptimizerJSAttributes; m <= MeshOptimizerJSPrune; ++m)
+  {
+    const RunResult& r = c.Runs[m];
+    if (r.Ran && r.Error.empty())
+    {
+      times += std::string(times.empty() ? "" : ", ") + Format("%.3f", r.RoundTripSeconds) +
+        " s (" + MeshOptimizerJSFunction(ModeOf(m)) + ")";
+    }
+  }
+  if (times.empty())
+  {
+    return "";
+  }
+  return "\n- meshoptimizer 1.3 (WebAssembly): *seconds* and *CPU seconds* measured inside "
+         "node around the simplify call, the module compiled before it; peak memory: node's "
+         "peak resident memory above its level before the call. The whole calls (the arrays "
+         "and files, node's start, loading the module, reading the result back) took " +
+    times + ".\n";
+}
+
 std::string CaseTable(const CaseResult& c, double reduction)
 {
   std::ostringstream os;
@@ -551,11 +647,11 @@ std::string CaseTable(const CaseResult& c, double reduction)
   for (int m = 0; m < NumberOfMethods; ++m)
   {
     const RunResult& r = c.Runs[m];
-    if (m == MeshOptimizer && !MethodAvailable(m))
+    if ((m == MeshOptimizer || IsWebAssembly(m)) && !MethodAvailable(m))
     {
       continue;
     }
-    os << "| " << MethodName(m) << (r.Error.empty() ? "" : " (VTK error, see below)")
+    os << "| " << MethodName(m) << (r.Error.empty() ? "" : " (error, see below)")
        << (r.Note.empty() ? "" : " (cleaned input, see below)") << " | ";
     if (!r.Ran)
     {
@@ -578,12 +674,13 @@ std::string CaseTable(const CaseResult& c, double reduction)
     }
     if (r.Ran && !r.Error.empty())
     {
-      os << "\n- " << MethodName(m) << ": VTK reported the error \"" << r.Error
-         << "\"; it returned " << WithThousands(r.OutputTriangles) << " triangles after "
-         << Format("%.3f", r.Seconds)
+      os << "\n- " << MethodName(m) << ": " << (IsWebAssembly(m) ? "node" : "VTK")
+         << " reported the error \"" << r.Error << "\"; it returned "
+         << WithThousands(r.OutputTriangles) << " triangles after " << Format("%.3f", r.Seconds)
          << " s. Its time is not a valid reference, so no ratio to it is given.\n";
     }
   }
+  os << RoundTripNote(c);
   return os.str();
 }
 
@@ -707,9 +804,9 @@ std::string LoadAverage()
   return "?";
 }
 
-std::string Report(const Options& options, const std::vector<CaseResult>& cases,
-                   const std::vector<CaseResult>& sweep, const std::string& date,
-                   double totalSeconds, const std::string& loadBefore, const std::string& loadAfter)
+/// The report's title and the lines on the run, the machine and the software.
+std::string ReportHeader(const Options& options, const std::string& date, double totalSeconds,
+                         const std::string& loadBefore, const std::string& loadAfter)
 {
   std::ostringstream os;
   os << "# Benchmark: vtkColorHalfEdgeDecimation against vtkQuadricDecimation\n\n"
@@ -736,6 +833,11 @@ std::string Report(const Options& options, const std::vector<CaseResult>& cases,
 #else
      << "; meshoptimizer not built in"
 #endif
+     << "\n"
+     << "- "
+     << (MeshOptimizerJSUnavailable().empty()
+           ? MeshOptimizerJSDescription()
+           : "meshoptimizer 1.3 (WebAssembly) not run: " + MeshOptimizerJSUnavailable())
      << "\n";
   const std::string commit =
     ReadFirstLine("git -C \"" COLORDECIMATION_SOURCE_DIR
@@ -755,6 +857,15 @@ std::string Report(const Options& options, const std::vector<CaseResult>& cases,
                             : "")
      << "\n\n";
 
+  return os.str();
+}
+
+std::string Report(const Options& options, const std::vector<CaseResult>& cases,
+                   const std::vector<CaseResult>& sweep, const std::string& date,
+                   double totalSeconds, const std::string& loadBefore, const std::string& loadAfter)
+{
+  std::ostringstream os;
+  os << ReportHeader(options, date, totalSeconds, loadBefore, loadAfter);
   os << "## What is measured\n\n"
         "- Every method runs in this one process on the very same vtkPolyData (triangles; "
         "polygons and strips would be triangulated once beforehand), one after the other.\n"
@@ -764,6 +875,14 @@ std::string Report(const Options& options, const std::vector<CaseResult>& cases,
         "meshoptimizer: copying the points to float and the ids to 32 "
         "bits, then `meshopt_simplify` (target error 1, i.e. unbounded, so that it stops at "
         "the triangle target; no vtkPolyData is built from its result).\n"
+        "- meshoptimizer 1.3 (WebAssembly): the npm package `meshoptimizer` (pinned in "
+        "Tools/MeshOptimizerJS), same algorithm as the native library, run by node (V8) with "
+        "the module compiled by the optimising compiler before the call, which "
+        "Tools/MeshOptimizerJS/simplify.mjs times inside node (`performance.now()`, "
+        "`process.cpuUsage()`); the colour as 3 attributes in [0,1] of weight 1, target error "
+        "FLT_MAX (the triangle target governs), LockBorder off; its peak memory is node's "
+        "(maxRSS above the RSS before the call). The whole call, node's start included, is "
+        "below each table.\n"
         "- *vtkQD attr on ÷ this*, *vtkQD attr off ÷ this*: vtkQuadricDecimation's time "
         "(AttributeErrorMetric on with the colour array as the only attribute, resp. off) "
         "divided by the row's time: how many times faster the row is.\n"
@@ -950,6 +1069,11 @@ int RunBenchmark(const Options& options)
   const auto start = std::chrono::steady_clock::now();
   const std::string date = Now();
   const std::string loadBefore = LoadAverage();
+  if (!MeshOptimizerJSUnavailable().empty())
+  {
+    std::fprintf(stderr, "[bench] meshoptimizer 1.3 (WebAssembly) rows left out: %s\n",
+                 MeshOptimizerJSUnavailable().c_str());
+  }
   std::vector<CaseResult> cases;
   if (!RunCases(options, cases))
   {

@@ -10,7 +10,6 @@
 #define ColorDecimationMeshOptimizer_h
 
 #include "vtkPolyData.h"
-#include "vtkSmartPointer.h"
 
 #include <vector>
 
@@ -22,14 +21,10 @@ namespace tools
 /**
  * Copies the points to float and the triangle ids to 32 bits (what a VTK user has to do
  * first), then runs meshopt_simplify (geometry only, no error bound: target error 1, so it
- * stops at the triangle target). Returns the kept triangles as 3 ids each into mesh's points.
+ * stops at the triangle target). Returns the kept triangles as 3 ids each into mesh's points
+ * (MeshOnKeptTriangles() of IndexedMesh.h makes the vtkPolyData).
  */
 std::vector<unsigned int> SimplifyWithMeshOptimizer(vtkPolyData* mesh, double reduction);
-
-/// The triangles returned by SimplifyWithMeshOptimizer() as a vtkPolyData on the points
-/// they use, with every point-data array of those points.
-vtkSmartPointer<vtkPolyData> MakeMeshOptimizerOutput(vtkPolyData* mesh,
-                                                     const std::vector<unsigned int>& triangles);
 
 /// meshoptimizer's version, as "0.18".
 const char* MeshOptimizerVersion();

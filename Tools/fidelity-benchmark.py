@@ -13,9 +13,13 @@ and the runner reports the time, the peak memory and the metric's bytes per vert
 Methods: vtkColorHalfEdgeDecimation's HalfEdgeColor (the paper's metric, the default), the
 same with BoundaryWeight (the option this study proposes), HalfEdgeColor in CIELab, the
 Geometry metric, Garland-Heckbert's ColorQuadric (half-edge, optimal placement, CIELab),
-vtkQuadricDecimation with its attribute error metric on and off, and meshoptimizer 0.18's
-meshopt_simplify (geometry only). On meshes whose colour does not vary, the methods that
-differ only in how they treat colour are left out.
+vtkQuadricDecimation with its attribute error metric on and off, meshoptimizer 0.18's
+meshopt_simplify (geometry only; Debian's native library), and meshoptimizer 1.3's
+simplifyWithAttributes, simplifyWithUpdate and simplifyWithAttributes with the Prune flag (the
+colour as 3 attributes; the npm package's WebAssembly build, run by node: its times are
+measured inside node; these are left out, with the reason, when node or the package is
+missing: npm ci --prefix Tools/MeshOptimizerJS). On meshes whose colour does not vary, the
+methods that differ only in how they treat colour are left out.
 
 Writes docs/RESULTS.md (tables in the shape of the paper's Tables 1-3) and
 docs/images/psnr_vs_ratio.png (PSNR against compression ratio, as Fig. 1 of Yildiz et al.),
@@ -59,7 +63,17 @@ METHODS = [
      ["--method", "vtk-quadric", "--attributes", "--clean"], True),
     ("vtkqd", "vtkQuadricDecimation, attributes off", ["--method", "vtk-quadric"], False),
     ("meshopt", "meshoptimizer 0.18 meshopt_simplify", ["--method", "meshopt"], False),
+    # meshoptimizer's current attribute modes, the colour as 3 attributes of weight 1
+    # (WebAssembly: the times are node's).
+    ("meshopt-attr", "meshoptimizer 1.3 simplifyWithAttributes (WebAssembly)",
+     ["--method", "meshopt-attr"], True),
+    ("meshopt-update", "meshoptimizer 1.3 simplifyWithUpdate (WebAssembly)",
+     ["--method", "meshopt-update"], True),
+    ("meshopt-prune", "meshoptimizer 1.3 simplifyWithAttributes + Prune (WebAssembly)",
+     ["--method", "meshopt-prune"], True),
 ]
+# color-decimate-run's exit status when a method's peer (node, the npm package) is missing.
+MISSING_PEER = 4
 METHOD_LABEL = {m[0]: m[1] for m in METHODS}
 ANALYSIS_BEGIN = "<!-- analysis: kept when the script rewrites this file -->"
 ANALYSIS_END = "<!-- end of analysis -->"
@@ -232,7 +246,12 @@ def measure(args, mesh, name, reduction, method_id, method_args, log):
         proc, _ = run([tool(args.build, "color-decimate-run"), mesh, out_mesh, "--reduction",
                        str(reduction), "--json", run_json] + method_args)
         if proc.returncode != 0:
-            record["error"] = (proc.stderr.strip().splitlines() or ["failed"])[-1]
+            message = (proc.stderr.strip().splitlines() or ["failed"])[-1]
+            if proc.returncode == MISSING_PEER:
+                record["unavailable"] = message
+                log(f"  {method_id}: skipped: {message}")
+                return record
+            record["error"] = message
             log(f"  {method_id}: FAILED: {record['error']}")
             return record
     record["run"] = load(run_json)
@@ -411,6 +430,41 @@ def plot(args, records, coloured, reductions, methods):
     print(f"fidelity-benchmark: wrote {args.plot}")
 
 
+def mesh_name(path):
+    return os.path.splitext(os.path.basename(path))[0]
+
+
+def run_meshes(args, meshes, reductions, methods, log):
+    """Every method on every mesh and reduction: the records, the mesh names, those of the
+    coloured meshes, and what was left out."""
+    records, names, coloured, skipped = [], [], [], []
+    skip = set(args.skip)
+    unavailable = set()  # methods whose peer is missing: tried once, then left out
+    for mesh in meshes:
+        name = mesh_name(mesh)
+        names.append(name)
+        varies = colour_varies(mesh)
+        if varies:
+            coloured.append(name)
+        for red in reductions:
+            log(f"{name} at {red:g} ({'coloured' if varies else 'no varying colour'}):")
+            for mid in methods:
+                spec = next(m for m in METHODS if m[0] == mid)
+                if (spec[3] and not varies) or mid in unavailable:
+                    continue
+                if f"{name}:{red:g}:{mid}" in skip:
+                    skipped.append(f"{METHOD_LABEL[mid]} on {name} at {red:.0%} (--skip)")
+                    log(f"  {mid}: skipped")
+                    continue
+                record = measure(args, mesh, name, red, mid, spec[2], log)
+                if "unavailable" in record:
+                    unavailable.add(mid)
+                    skipped.append(f"{METHOD_LABEL[mid]} ({record['unavailable']})")
+                    continue
+                records.append(record)
+    return records, names, coloured, skipped
+
+
 def main():
     args = parse_args()
 
@@ -431,7 +485,6 @@ def main():
         sys.exit("fidelity-benchmark: no mesh")
     # Large meshes last, so that a time-out leaves the small ones done.
     meshes.sort(key=lambda p: os.path.getsize(p))
-    skip = set(args.skip)
     os.makedirs(args.work, exist_ok=True)
     log_path = os.path.join(args.work, "log.txt")
     log_file = open(log_path, "a")
@@ -442,33 +495,13 @@ def main():
         log_file.flush()
 
     start = time.time()
-    records, names, coloured, skipped = [], [], [], []
     if args.rewrite_from:
         # Only the report: from an earlier run's results.
-        records = load(args.rewrite_from) or []
-        for mesh in meshes:
-            name = os.path.splitext(os.path.basename(mesh))[0]
-            names.append(name)
-            if colour_varies(mesh):
-                coloured.append(name)
-        meshes = []
-    for mesh in meshes:
-        name = os.path.splitext(os.path.basename(mesh))[0]
-        names.append(name)
-        varies = colour_varies(mesh)
-        if varies:
-            coloured.append(name)
-        for red in reductions:
-            log(f"{name} at {red:g} ({'coloured' if varies else 'no varying colour'}):")
-            for mid in methods:
-                spec = next(m for m in METHODS if m[0] == mid)
-                if spec[3] and not varies:
-                    continue
-                if f"{name}:{red:g}:{mid}" in skip:
-                    skipped.append(f"{METHOD_LABEL[mid]} on {name} at {red:.0%} (--skip)")
-                    log(f"  {mid}: skipped")
-                    continue
-                records.append(measure(args, mesh, name, red, mid, spec[2], log))
+        records, skipped = load(args.rewrite_from) or [], []
+        names = [mesh_name(mesh) for mesh in meshes]
+        coloured = [mesh_name(mesh) for mesh in meshes if colour_varies(mesh)]
+    else:
+        records, names, coloured, skipped = run_meshes(args, meshes, reductions, methods, log)
     elapsed = time.time() - start
     meta_path = os.path.join(os.path.dirname(args.rewrite_from or os.path.join(args.work, "x")),
                              "meta.json")

@@ -27,6 +27,14 @@ if [ "$flavour" = both ]; then
 fi
 
 ensure_flavour "$flavour"
+# The benchmarks' meshoptimizer 1.3 (WebAssembly): the pinned npm package, when node and npm
+# are there and it is not installed yet; if npm fails (no registry), its tests are skipped.
+if command -v node >/dev/null && command -v npm >/dev/null &&
+  [ ! -d Tools/MeshOptimizerJS/node_modules/meshoptimizer ]; then
+  npm ci --prefix Tools/MeshOptimizerJS --no-audit --no-fund --fetch-retries=1 \
+    --fetch-timeout=60000 ||
+    echo "== npm ci failed: the meshoptimizer 1.3 (WebAssembly) tests will be skipped"
+fi
 build="build-test-$flavour"
 echo "== configure and build ($flavour) in $build"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON \

@@ -1,12 +1,15 @@
 // color-decimate-run: one simplification of a mesh by one method, for the fidelity benchmark
 // (Tools/fidelity-benchmark.py): vtkColorHalfEdgeDecimation with any of its metrics and
-// options, vtkQuadricDecimation (attribute error metric on or off) or meshoptimizer's
-// meshopt_simplify; writes the result and, as JSON, the time, the peak memory and the
-// metric's bytes per vertex.
+// options, vtkQuadricDecimation (attribute error metric on or off), meshoptimizer's
+// meshopt_simplify (the native library) or its current attribute-aware simplifiers (the npm
+// package's WebAssembly build, run with node: MeshOptimizerJS.h); writes the result and, as
+// JSON, the time, the peak memory and the metric's bytes per vertex.
 #include "CommandLine.h"
+#include "IndexedMesh.h"
 #include "JsonOutput.h"
 #include "MeshColors.h"
 #include "MeshIO.h"
+#include "MeshOptimizerJS.h"
 #include "ProcessMemory.h"
 #include "QuadricPeer.h"
 
@@ -25,9 +28,13 @@
 #include "MeshOptimizer.h"
 #endif
 
+#include <array>
 #include <chrono>
 #include <iostream>
+#include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace colordecimation::tools;
 
@@ -43,8 +50,21 @@ const char* const Methods =
   "  vtk-quadric       vtkQuadricDecimation (--attributes: its attribute error metric on,\n"
   "                    with the colours as scalars; without, the output has no colour and\n"
   "                    gets the colour of the nearest input vertex, after the timing)\n"
-  "  meshopt           meshoptimizer's meshopt_simplify (geometry only; the output keeps\n"
-  "                    input vertices, with all their point data)";
+  "  meshopt           meshoptimizer's meshopt_simplify, the native library (geometry only;\n"
+  "                    the output keeps input vertices, with all their point data)\n"
+  "  meshopt-attr      meshoptimizer 1.3's simplifyWithAttributes, the colour (RGB in [0,1])\n"
+  "                    as 3 attributes (--attribute-weights); the output keeps input vertices\n"
+  "  meshopt-update    meshoptimizer 1.3's simplifyWithUpdate: the same, and the kept\n"
+  "                    vertices' positions and colours are moved\n"
+  "  meshopt-prune     meshopt-attr with the Prune flag (small disconnected pieces may be\n"
+  "                    removed whole)\n"
+  "meshopt-attr, -update and -prune run the npm package meshoptimizer (WebAssembly) with\n"
+  "node; their \"seconds\" is the time of the simplify call measured inside node. They need\n"
+  "node on PATH and the package (npm ci --prefix Tools/MeshOptimizerJS); without, the tool\n"
+  "says why and exits with status 4.";
+
+/// Exit status when node or the npm package of meshopt-attr, -update and -prune is missing.
+const int MissingPeer = 4;
 
 struct Settings
 {
@@ -61,6 +81,7 @@ struct Settings
   bool Attributes = false;
   bool PreserveBoundary = false;
   bool Clean = false;
+  std::array<double, 3> AttributeWeights = { { 1.0, 1.0, 1.0 } };
 };
 
 struct Figures
@@ -73,11 +94,61 @@ struct Figures
   double MetricBytesPerVertex = 0;
   std::string MetricBytesNote;
   long long InputPoints = 0, InputTriangles = 0, OutputPoints = 0, OutputTriangles = 0;
+  Json Extra = Json::object(); // the method's own figures
 };
 
 bool IsOurs(const std::string& method)
 {
   return method == "half-edge-color" || method == "geometry" || method == "color-quadric";
+}
+
+/// The methods of meshoptimizer's WebAssembly build and their modes.
+const std::pair<const char*, MeshOptimizerJSMode> JSMethods[] = {
+  { "meshopt-attr", MeshOptimizerJSMode::Attributes },
+  { "meshopt-update", MeshOptimizerJSMode::Update },
+  { "meshopt-prune", MeshOptimizerJSMode::Prune },
+};
+
+bool IsMeshOptimizerJS(const std::string& method, MeshOptimizerJSMode* mode = nullptr)
+{
+  for (const auto& m : JSMethods)
+  {
+    if (method == m.first)
+    {
+      if (mode)
+      {
+        *mode = m.second;
+      }
+      return true;
+    }
+  }
+  return false;
+}
+
+/// --attribute-weights W or W,W,W (red, green, blue): finite numbers >= 0.
+bool ParseWeights(const std::string& text, std::array<double, 3>& weights)
+{
+  std::vector<double> values;
+  std::istringstream items(text);
+  std::string item;
+  double w = 0;
+  while (std::getline(items, item, ','))
+  {
+    if (!ParseNumber(item, w) || w < 0)
+    {
+      return false;
+    }
+    values.push_back(w);
+  }
+  if (values.size() != 1 && values.size() != 3)
+  {
+    return false;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    weights[k] = values[values.size() == 3 ? k : 0];
+  }
+  return true;
 }
 
 /// INPUT, OUTPUT, the method and the JSON.
@@ -94,7 +165,8 @@ void AddRunOptions(CLI::App& app, Settings& settings)
     [&settings](const std::string& method)
     {
       settings.Method = method;
-      return IsOurs(method) || method == "vtk-quadric" || method == "meshopt";
+      return IsOurs(method) || method == "vtk-quadric" || method == "meshopt" ||
+        IsMeshOptimizerJS(method);
     },
     [](const std::string& method) { return "unknown method '" + method + "'"; },
     "the simplifier (default half-edge-color; see Methods below)")
@@ -125,6 +197,13 @@ void AddMethodOptions(CLI::App& app, Settings& settings)
   app.add_flag("--preserve-boundary", settings.PreserveBoundary,
                "PreserveBoundary (vtkColorHalfEdgeDecimation)");
   app.add_flag("--attributes", settings.Attributes, "vtk-quadric: AttributeErrorMetric on");
+  AddValue(
+    app, "--attribute-weights",
+    [&settings](const std::string& text) { return ParseWeights(text, settings.AttributeWeights); },
+    BadValueComplaint("--attribute-weights"),
+    "meshopt-attr, -update, -prune: weight of each colour attribute,\n"
+    "one for all or R,G,B (default 1)")
+    ->type_name("W[,W,W]");
   app.add_flag("--clean", settings.Clean,
                "vtk-quadric: merge coincident points and drop the triangles that\n"
                "become degenerate first (vtkCleanPolyData, not timed)");
@@ -199,10 +278,49 @@ vtkSmartPointer<vtkPolyData> SimplifyWithQuadric(vtkPolyData* input, const Setti
   return filter->GetOutput();
 }
 
+/// meshopt-attr, -update or -prune: its figures are node's (the simplify call timed inside node,
+/// node's peak memory); null and the message printed when it failed.
+vtkSmartPointer<vtkPolyData> SimplifyWithJS(vtkPolyData* input, const Settings& settings,
+                                            Figures& figures)
+{
+  MeshOptimizerJSSettings js;
+  IsMeshOptimizerJS(settings.Method, &js.Mode);
+  js.Reduction = settings.Reduction;
+  js.Weights = settings.AttributeWeights;
+  const MeshOptimizerJSResult result = SimplifyWithMeshOptimizerJS(input, js);
+  if (!result.Error.empty())
+  {
+    std::cerr << Program << ": " << settings.Method << ": " << result.Error << "\n";
+    return nullptr;
+  }
+  figures.Seconds = result.Seconds;
+  figures.PeakBytes = result.PeakBytes;
+  // meshoptimizer's simplifier keeps per vertex a position quadric and an attribute quadric
+  // of 11 floats each and a gradient of 4 floats per attribute.
+  figures.MetricBytesPerVertex = 4 * (11 + 11 + 4 * 3);
+  figures.MetricBytesNote = "34 floats (position and attribute quadrics, 3 gradients)";
+  Json& extra = figures.Extra;
+  extra["peer"] = MeshOptimizerJSDescription();
+  extra["function"] = MeshOptimizerJSFunction(js.Mode);
+  extra["seconds_measured"] =
+    "inside node around the simplify call (WebAssembly, compiled before it)";
+  extra["cpu_seconds"] = result.CpuSeconds;
+  extra["round_trip_seconds"] = result.RoundTripSeconds;
+  extra["peak_measured"] = "node's peak RSS above its RSS before the call";
+  extra["attribute_weights"] = settings.AttributeWeights;
+  extra["target_error"] = result.TargetError;
+  extra["result_error"] = result.ResultError;
+  return MakeMeshOptimizerJSOutput(input, result);
+}
+
 /// The method's run, timed, with its peak memory.
 vtkSmartPointer<vtkPolyData> Simplify(vtkPolyData* input, const Settings& settings,
                                       Figures& figures)
 {
+  if (IsMeshOptimizerJS(settings.Method))
+  {
+    return SimplifyWithJS(input, settings, figures);
+  }
   vtkSmartPointer<vtkPolyData> output;
   PeakMemoryProbe probe;
   const auto start = std::chrono::steady_clock::now();
@@ -217,7 +335,7 @@ vtkSmartPointer<vtkPolyData> Simplify(vtkPolyData* input, const Settings& settin
 #if COLORDECIMATION_WITH_MESHOPTIMIZER
   else
   {
-    output = MakeMeshOptimizerOutput(input, SimplifyWithMeshOptimizer(input, settings.Reduction));
+    output = MeshOnKeptTriangles(input, SimplifyWithMeshOptimizer(input, settings.Reduction));
     // meshopt_simplify keeps a quadric of 11 floats per vertex (and other per-vertex
     // tables: remap, kind, adjacency).
     figures.MetricBytesPerVertex = 44;
@@ -244,6 +362,7 @@ Json ToJson(const Figures& f)
   json["input_triangles"] = f.InputTriangles;
   json["output_points"] = f.OutputPoints;
   json["output_triangles"] = f.OutputTriangles;
+  json.update(f.Extra);
   return json;
 }
 
@@ -260,6 +379,10 @@ int Run(const Settings& settings)
   figures.InputPoints = input->GetNumberOfPoints();
   figures.InputTriangles = input->GetNumberOfPolys();
   vtkSmartPointer<vtkPolyData> output = Simplify(input, settings, figures);
+  if (!output)
+  {
+    return 1;
+  }
   if (settings.Method == "vtk-quadric" && !settings.Attributes)
   {
     TransferNearestColors(input, output);
@@ -303,6 +426,12 @@ int main(int argc, char* argv[])
   {
     std::cerr << Program << ": built without meshoptimizer\n";
     return 3;
+  }
+  if (IsMeshOptimizerJS(settings.Method) && !MeshOptimizerJSUnavailable().empty())
+  {
+    std::cerr << Program << ": " << settings.Method << " not run: " << MeshOptimizerJSUnavailable()
+              << "\n";
+    return MissingPeer;
   }
   return Run(settings);
 }
