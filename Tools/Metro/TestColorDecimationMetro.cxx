@@ -1,7 +1,9 @@
 // Tests of the Metro-style surface distance (ColorDecimationMetro) against closed forms.
+// Every case (CD_TEST_CASE(<Case>) below) is its own ctest entry ColorDecimation.Metro.<Case>.
 #include "ColorDecimationMetro.h"
 
 #include "ColorDecimationMeshes.h"
+#include "ColorDecimationTestUtilities.h"
 
 #include "vtkNew.h"
 #include "vtkPolyData.h"
@@ -9,33 +11,12 @@
 #include "vtkTransformPolyDataFilter.h"
 
 #include <cmath>
-#include <cstring>
-#include <functional>
-#include <iostream>
-#include <string>
 
 namespace
 {
 using colordecimation::metro::Compare;
 using colordecimation::metro::Options;
 using colordecimation::metro::Result;
-
-int Failures = 0;
-
-void Check(bool condition, const std::string& what)
-{
-  if (!condition)
-  {
-    std::cerr << "check failed: " << what << std::endl;
-    ++Failures;
-  }
-}
-
-void Near(double actual, double expected, double tolerance, const std::string& what)
-{
-  Check(std::abs(actual - expected) <= tolerance,
-        what + " = " + std::to_string(actual) + ", expected " + std::to_string(expected));
-}
 
 /// The unit square at height z, in two triangles.
 vtkSmartPointer<vtkPolyData> Square(double z)
@@ -44,31 +25,31 @@ vtkSmartPointer<vtkPolyData> Square(double z)
                                                 { 0, 1, 2, 0, 2, 3 });
 }
 
-void TestIdentical()
+CD_TEST_CASE(Identical)
 {
   auto sphere = colordecimation::meshes::Icosphere(3, colordecimation::meshes::Pattern::Constant);
   const Result r = Compare(sphere, sphere);
-  Check(r.Ok, "ok");
-  Near(r.Mean, 0, 1e-9, "mean");
-  Near(r.Max, 0, 1e-9, "max");
-  Near(r.Diagonal, 2 * std::sqrt(3.0), 1e-6, "diagonal");
+  CD_CHECK(r.Ok);
+  CD_CHECK_NEAR(r.Mean, 0, 1e-9);
+  CD_CHECK_NEAR(r.Max, 0, 1e-9);
+  CD_CHECK_NEAR(r.Diagonal, 2 * std::sqrt(3.0), 1e-6);
 }
 
-void TestOffset()
+CD_TEST_CASE(Offset)
 {
   // Two parallel unit squares 0.1 apart: every distance is 0.1, both ways.
   const Result r = Compare(Square(0), Square(0.1));
-  Check(r.Ok, "ok");
+  CD_CHECK(r.Ok);
   for (double d : { r.Forward.Mean, r.Forward.Rms, r.Forward.Max, r.Backward.Mean, r.Backward.Rms,
                     r.Backward.Max, r.Mean, r.Rms, r.Max })
   {
-    Near(d, 0.1, 1e-7, "offset distance");
+    CD_CHECK_NEAR(d, 0.1, 1e-7);
   }
-  Near(r.Forward.Area, 1.0, 1e-12, "area");
-  Near(r.MeanPercent, 100 * 0.1 / std::sqrt(2.0), 1e-6, "mean %");
+  CD_CHECK_NEAR(r.Forward.Area, 1.0, 1e-12);
+  CD_CHECK_NEAR(r.MeanPercent, 100 * 0.1 / std::sqrt(2.0), 1e-6);
 }
 
-void TestHalfSquare()
+CD_TEST_CASE(HalfSquare)
 {
   // The simplified surface keeps the half (0,0)-(1,0)-(1,1) of the unit square. From the
   // missing half, the distance is the distance to the diagonal y = x: over that triangle
@@ -80,17 +61,17 @@ void TestHalfSquare()
     Square(0), colordecimation::meshes::FromTriangles({ 0, 0, 0, 1, 0, 0, 1, 1, 0 }, { 0, 1, 2 }),
     options);
   const double h = 1.0 / std::sqrt(2.0);
-  Check(r.Ok, "ok");
-  Near(r.Forward.Mean, 0.5 * h / 3.0, 1e-3, "forward mean");
-  Near(r.Forward.Rms, std::sqrt(0.5 * h * h / 6.0), 1e-3, "forward rms");
-  Near(r.Forward.Max, h, 1e-12, "forward max (the vertex (0,1))");
-  Near(r.Backward.Max, 0.0, 1e-12, "backward max");
-  Near(r.Mean, r.Forward.Mean, 0, "two-sided mean");
-  Near(r.Backward.Area, 0.5, 1e-12, "backward area");
-  Check(r.OriginalTriangles == 2 && r.SimplifiedTriangles == 1, "triangle counts");
+  CD_CHECK(r.Ok);
+  CD_CHECK_NEAR(r.Forward.Mean, 0.5 * h / 3.0, 1e-3);
+  CD_CHECK_NEAR(r.Forward.Rms, std::sqrt(0.5 * h * h / 6.0), 1e-3);
+  CD_CHECK_NEAR(r.Forward.Max, h, 1e-12);
+  CD_CHECK_NEAR(r.Backward.Max, 0.0, 1e-12);
+  CD_CHECK_NEAR(r.Mean, r.Forward.Mean, 0);
+  CD_CHECK_NEAR(r.Backward.Area, 0.5, 1e-12);
+  CD_CHECK(r.OriginalTriangles == 2 && r.SimplifiedTriangles == 1);
 }
 
-void TestSphere()
+CD_TEST_CASE(Sphere)
 {
   // An icosphere against itself scaled by 1.01 about its centre: the faces move out by
   // 1 % of their distance to the centre (0.9995 for level 4), so every distance is about
@@ -103,40 +84,15 @@ void TestSphere()
   transform->SetTransform(scale);
   transform->Update();
   const Result r = Compare(sphere, transform->GetOutput());
-  Check(r.Ok, "ok");
-  Near(r.Forward.Mean, 0.01, 2e-4, "forward mean");
-  Near(r.Backward.Mean, 0.01, 2e-4, "backward mean");
-  Near(r.Max, 0.0101, 2e-4, "max");
-  Near(r.RmsPercent, 100 * 0.01 / (2 * std::sqrt(3.0)), 0.01, "rms %");
+  CD_CHECK(r.Ok);
+  CD_CHECK_NEAR(r.Forward.Mean, 0.01, 2e-4);
+  CD_CHECK_NEAR(r.Backward.Mean, 0.01, 2e-4);
+  CD_CHECK_NEAR(r.Max, 0.0101, 2e-4);
+  CD_CHECK_NEAR(r.RmsPercent, 100 * 0.01 / (2 * std::sqrt(3.0)), 0.01);
 }
 } // namespace
 
 int main(int argc, char* argv[])
 {
-  const std::string name = argc > 1 ? argv[1] : "all";
-  const struct
-  {
-    const char* Name;
-    void (*Run)();
-  } cases[] = { { "Identical", TestIdentical },
-                { "Offset", TestOffset },
-                { "HalfSquare", TestHalfSquare },
-                { "Sphere", TestSphere } };
-  bool found = false;
-  for (const auto& c : cases)
-  {
-    if (name == "all" || name == c.Name)
-    {
-      found = true;
-      const int before = Failures;
-      c.Run();
-      std::cout << (Failures == before ? "PASS " : "FAIL ") << c.Name << std::endl;
-    }
-  }
-  if (!found)
-  {
-    std::cerr << "unknown case " << name << std::endl;
-    return 2;
-  }
-  return Failures == 0 ? 0 : 1;
+  return colordecimation::testing::RunTestCases(argc, argv);
 }
