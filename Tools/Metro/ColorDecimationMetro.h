@@ -17,6 +17,15 @@
  * percentage of the ORIGINAL's bounding-box diagonal.
  *
  * Sampling is deterministic (a fixed seed): the same meshes give the same figures.
+ *
+ * A point field (Options::Field: a one-component point-data array of both meshes, such as a
+ * temperature) is compared on the same samples: at each sample of A, the field interpolated
+ * linearly in A's triangle, minus the field interpolated linearly (barycentric coordinates of
+ * the closest point) in the triangle of B that holds the closest point. The mean and RMS of
+ * the absolute differences are taken over the area-uniform samples, the maximum over those
+ * and the vertices, as for distances; the two-sided figures are the larger side's, and they
+ * are also given as percentages of the field's range on the ORIGINAL. Arrays of more than one
+ * component are refused (Result::Error).
  */
 #ifndef ColorDecimationMetro_h
 #define ColorDecimationMetro_h
@@ -39,6 +48,16 @@ struct Options
   uint64_t Seed = 0x6d6574726fULL;
   /// Also measure at the sampled surface's vertices (for the maximum only; at most Samples).
   bool SampleVertices = true;
+  /// A one-component point array of both meshes to compare on the samples ("": none).
+  std::string Field;
+};
+
+/// Absolute differences of the field between one surface and the other.
+struct FieldDifference
+{
+  double Mean = 0; ///< over the area-uniform samples
+  double Rms = 0;  ///< root mean square over them
+  double Max = 0;  ///< over the samples and the vertices
 };
 
 /// Distances from one surface to the other.
@@ -49,6 +68,18 @@ struct OneSided
   double Mean = 0;       ///< mean distance over the area-uniform samples
   double Rms = 0;        ///< root mean square over them
   double Max = 0;        ///< maximum over the samples and the vertices
+  FieldDifference Field; ///< when Options::Field names an array of both surfaces
+};
+
+/// The field compared on both sides.
+struct FieldComparison
+{
+  std::string Name;                ///< the array ("": no field compared)
+  double Range[2] = { 0, 0 };      ///< its range on the original
+  FieldDifference Forward;         ///< samples on the original
+  FieldDifference Backward;        ///< samples on the simplified surface
+  FieldDifference TwoSided;        ///< the larger of the two sides
+  FieldDifference TwoSidedPercent; ///< TwoSided as percentages of the range's width
 };
 
 struct Result
@@ -64,12 +95,17 @@ struct Result
   double Mean = 0, Rms = 0, Max = 0;
   /// The same as percentages of Diagonal.
   double MeanPercent = 0, RmsPercent = 0, MaxPercent = 0;
+  FieldComparison Field; ///< when Options::Field is set
 };
 
-/// Distances from `from` to `to` (both triangulated here if needed).
+/**
+ * Distances from `from` to `to` (both triangulated here if needed), and the differences of
+ * Options::Field when it names a one-component point array of both (Compare checks that).
+ */
 OneSided SampleDistance(vtkPolyData* from, vtkPolyData* to, const Options& options);
 
-/// Both sides and the two-sided figures.
+/// Both sides and the two-sided figures; an error when Options::Field is not a one-component
+/// point array of both meshes.
 Result Compare(vtkPolyData* original, vtkPolyData* simplified, const Options& options = {});
 
 /// The result as a JSON object (non-finite numbers as null), without a final newline.

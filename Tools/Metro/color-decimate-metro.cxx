@@ -1,7 +1,7 @@
 // color-decimate-metro: two-sided surface distance between an original mesh and a simplified
 // one by Metro's method (area-uniform sampling, closest-point distances both ways): mean, RMS
-// and maximum, also as a percentage of the original's bounding-box diagonal. See
-// ColorDecimationMetro.h.
+// and maximum, also as a percentage of the original's bounding-box diagonal; with --field, the
+// difference of a one-component point array on the same samples. See ColorDecimationMetro.h.
 #include "ColorDecimationMetro.h"
 
 #include "CommandLine.h"
@@ -47,6 +47,12 @@ void AddOptions(CLI::App& app, Settings& settings)
     FixedComplaint("--samples wants a positive whole number"),
     "points sampled uniformly by area on each surface (default 200000)")
     ->type_name("N");
+  app
+    .add_option("--field", settings.Metro.Field,
+                "also compare the one-component point array NAME of both meshes on the same "
+                "samples (mean, RMS and max of the absolute difference, also as % of its range "
+                "on the ORIGINAL)")
+    ->type_name("NAME");
   app.add_option("--json", settings.JsonPath, "also write the JSON to FILE")->type_name("FILE");
   app.add_flag("--quiet", settings.Quiet, "print no JSON on standard output");
 }
@@ -97,12 +103,17 @@ int main(int argc, char* argv[])
     "Two-sided surface distance (Metro's method): N points sampled uniformly by area on each\n"
     "surface, the distance of each to the closest point of the other surface; mean, RMS and\n"
     "max per side and two-sided (the larger side), in the meshes' units and as % of the\n"
-    "ORIGINAL's bounding-box diagonal. The maximum also looks at every vertex. Prints JSON on\n"
-    "standard output (and writes it to FILE with --json).\n"
+    "ORIGINAL's bounding-box diagonal. The maximum also looks at every vertex. With --field\n"
+    "NAME, the point array NAME (one component, on both meshes) is interpolated in the\n"
+    "triangles at each sample and at its closest point, and the absolute differences are\n"
+    "summed the same way (\"field\" in the JSON). Prints JSON on standard output (and writes\n"
+    "it to FILE with --json).\n"
     "Meshes: .ply .vtp .vtu .vtk .obj .stl, or demo: specifications (see color-decimate).",
     Program);
   SetUpCommandLine(
-    app, "Usage: color-decimate-metro ORIGINAL SIMPLIFIED [--samples N] [--json FILE] [--quiet]");
+    app,
+    "Usage: color-decimate-metro ORIGINAL SIMPLIFIED [--samples N] [--field NAME] [--json FILE]\n"
+    "       [--quiet]");
   Settings settings;
   AddOptions(app, settings);
   const int status = ParseCommandLine(app, argc, argv);
