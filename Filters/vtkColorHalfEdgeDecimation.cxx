@@ -261,6 +261,21 @@ vtkColorHalfEdgeDecimation::~vtkColorHalfEdgeDecimation()
 }
 
 //------------------------------------------------------------------------------
+void vtkColorHalfEdgeDecimation::SetPaperDefaults()
+{
+  this->SetErrorMetric(HalfEdgeColor);
+  this->SetCollapseSchedule(Greedy);
+  this->SetBoundaryWeight(0.0);
+  this->SetEdgeLengthWeight(0.0);
+  this->SetGeometryWeight(1.0);
+  this->SetColorSpace(RGB);
+  this->SetColorWeight(1.0);
+  this->SetOptimalPlacement(false);
+  this->SetMaximumNormalAngle(90.0);
+  this->SetPreserveBoundary(false);
+}
+
+//------------------------------------------------------------------------------
 const char* vtkColorHalfEdgeDecimation::GetErrorMetricAsString()
 {
   switch (this->ErrorMetric)

@@ -102,6 +102,15 @@ public:
     CIELab = 1
   };
 
+  /**
+   * Set every property of the method to the paper's (Kim, Choi and Lee): the HalfEdgeColor
+   * metric, the Greedy schedule, no boundary planes (BoundaryWeight 0), no edge-length term,
+   * GeometryWeight 1, RGB colours, MaximumNormalAngle 90, PreserveBoundary off (and
+   * ColorWeight 1, OptimalPlacement off, which the paper's metric does not read).
+   * TargetReduction, NumberOfThreads and the original point ids are left as they are.
+   */
+  void SetPaperDefaults();
+
   ///@{
   /**
    * Set/Get the error metric (see ErrorMetrics). Default HalfEdgeColor.

@@ -26,8 +26,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -38,19 +40,17 @@ using namespace colordecimation::tools;
 
 const char* const Program = "color-decimate";
 
+/// A filter property set from the command line (after --paper, in the order given).
+using FilterSetting = std::function<void(vtkColorHalfEdgeDecimation*)>;
+
 struct Options
 {
   std::string Input;
   std::string Output;
   bool Demo = false;
-  double Reduction = 0.9;
-  int Metric = vtkColorHalfEdgeDecimation::HalfEdgeColor;
+  bool Paper = false;
+  std::vector<FilterSetting> Settings;
   std::string Array;
-  bool PreserveBoundary = false;
-  double MaxNormalAngle = 90.0;
-  double GeometryWeight = 1.0;
-  int Schedule = vtkColorHalfEdgeDecimation::Greedy;
-  int Threads = 0;
   std::string Stats;
   std::string Snapshot;
   int SnapshotSize = 512;
@@ -60,14 +60,94 @@ struct Options
 
 const char* MetricName(int metric)
 {
-  return metric == vtkColorHalfEdgeDecimation::HalfEdgeColor ? "half-edge-color"
-    : metric == vtkColorHalfEdgeDecimation::Geometry         ? "geometry"
-                                                             : "color-quadric";
+  switch (metric)
+  {
+    case vtkColorHalfEdgeDecimation::HalfEdgeColor:
+      return "half-edge-color";
+    case vtkColorHalfEdgeDecimation::Geometry:
+      return "geometry";
+    case vtkColorHalfEdgeDecimation::ColorQuadric:
+      return "color-quadric";
+    default:
+      return "attribute-quadric";
+  }
 }
 
 const char* ScheduleName(int schedule)
 {
   return schedule == vtkColorHalfEdgeDecimation::Batched ? "batched" : "greedy";
+}
+
+/// A filter at its defaults, for the defaults the help states.
+vtkColorHalfEdgeDecimation* Defaults()
+{
+  static vtkNew<vtkColorHalfEdgeDecimation> defaults;
+  return defaults;
+}
+
+std::string Number(double value)
+{
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+/// --NAME X: a filter property from lo to hi, set with `set`.
+CLI::Option* AddFilterNumber(CLI::App& app, Options& options, const std::string& name, double lo,
+                             double hi, void (vtkColorHalfEdgeDecimation::*set)(double),
+                             const std::string& rule, const std::string& help)
+{
+  return AddValue(
+    app, name,
+    [&options, lo, hi, set](const std::string& text)
+    {
+      double value = 0;
+      if (!ParseNumber(text, value) || value < lo || value > hi)
+      {
+        return false;
+      }
+      options.Settings.push_back([set, value](vtkColorHalfEdgeDecimation* f) { (f->*set)(value); });
+      return true;
+    },
+    RuleComplaint(rule), help);
+}
+
+/// --NAME WORD: a filter property given by name, set with `set`.
+CLI::Option* AddFilterChoice(CLI::App& app, Options& options, const std::string& name,
+                             std::vector<std::pair<std::string, int>> choices,
+                             void (vtkColorHalfEdgeDecimation::*set)(int), const std::string& rule,
+                             const std::string& help)
+{
+  return AddValue(
+    app, name,
+    [&options, choices, set](const std::string& text)
+    {
+      for (const auto& choice : choices)
+      {
+        if (choice.first == text)
+        {
+          const int value = choice.second;
+          options.Settings.push_back([set, value](vtkColorHalfEdgeDecimation* f)
+                                     { (f->*set)(value); });
+          return true;
+        }
+      }
+      return false;
+    },
+    RuleComplaint(rule), help);
+}
+
+/// --NAME: a switch of the filter, set with `set`.
+void AddFilterFlag(CLI::App& app, Options& options, const std::string& name,
+                   void (vtkColorHalfEdgeDecimation::*set)(vtkTypeBool), vtkTypeBool value,
+                   const std::string& help)
+{
+  app.add_flag_callback(
+    name,
+    [&options, set, value]() {
+      options.Settings.push_back([set, value](vtkColorHalfEdgeDecimation* f) { (f->*set)(value); });
+    },
+    help);
 }
 
 /// INPUT, OUTPUT and --demo.
@@ -88,29 +168,73 @@ void AddInputOptions(CLI::App& app, Options& options)
   app.add_flag("--demo", options.Demo, "INPUT is the built-in demo mesh (the same as demo:)");
 }
 
-/// The filter's settings.
+/// The filter's settings: which cost, and its weights.
+void AddMetricOptions(CLI::App& app, Options& options)
+{
+  vtkColorHalfEdgeDecimation* d = Defaults();
+  using F = vtkColorHalfEdgeDecimation;
+  app.add_flag("--paper", options.Paper,
+               "the paper's method: every setting below at the paper's value\n"
+               "(half-edge-color, greedy, no boundary or edge-length term, RGB);\n"
+               "the options given with it still apply on top");
+  AddFilterChoice(app, options, "--metric",
+                  { { "half-edge-color", F::HalfEdgeColor },
+                    { "half-edge-colour", F::HalfEdgeColor },
+                    { "geometry", F::Geometry },
+                    { "color-quadric", F::ColorQuadric },
+                    { "colour-quadric", F::ColorQuadric },
+                    { "attribute-quadric", F::AttributeQuadric } },
+                  &F::SetErrorMetric,
+                  "--metric must be half-edge-color, geometry, color-quadric or attribute-quadric",
+                  std::string("attribute-quadric (Hoppe's quadric of position and colour),\n"
+                              "half-edge-color (the paper's (1+Q)(1+I)(1+C)), geometry (quadric\n"
+                              "error only) or color-quadric (Garland-Heckbert's 6-D quadric)\n"
+                              "(default ") +
+                    MetricName(d->GetErrorMetric()) + ")")
+    ->type_name("M");
+  AddFilterNumber(app, options, "--color-weight", 0, std::numeric_limits<double>::infinity(),
+                  &F::SetColorWeight, "--color-weight must be a number >= 0",
+                  "weight of colour against geometry (attribute-quadric and\n"
+                  "color-quadric; default " +
+                    Number(d->GetColorWeight()) + ")")
+    ->type_name("W");
+  AddFilterNumber(app, options, "--geometry-weight", 0, std::numeric_limits<double>::infinity(),
+                  &F::SetGeometryWeight, "--geometry-weight must be a number >= 0",
+                  "weight of the geometric term, >= 0 (default " + Number(d->GetGeometryWeight()) +
+                    ")")
+    ->type_name("W");
+  AddFilterNumber(app, options, "--boundary-weight", 0, std::numeric_limits<double>::infinity(),
+                  &F::SetBoundaryWeight, "--boundary-weight must be a number >= 0",
+                  "weight of the boundary planes that keep open boundaries in place\n"
+                  "(0: none; default " +
+                    Number(d->GetBoundaryWeight()) + ")")
+    ->type_name("W");
+  AddFilterNumber(app, options, "--edge-length-weight", 0, std::numeric_limits<double>::infinity(),
+                  &F::SetEdgeLengthWeight, "--edge-length-weight must be a number >= 0",
+                  "weight of the edge-length term that decimates flat parts evenly\n"
+                  "(0: none; default " +
+                    Number(d->GetEdgeLengthWeight()) + ")")
+    ->type_name("W");
+  AddFilterChoice(app, options, "--color-space",
+                  { { "rgb", F::RGB }, { "cielab", F::CIELab }, { "lab", F::CIELab } },
+                  &F::SetColorSpace, "--color-space must be rgb or cielab",
+                  std::string("where colour differences are measured: rgb or cielab (default ") +
+                    (d->GetColorSpace() == F::CIELab ? "cielab" : "rgb") + ")")
+    ->type_name("S");
+  AddFilterFlag(app, options, "--placement", &F::SetOptimalPlacement, 1,
+                "color-quadric: full collapses that move the survivor (its\n"
+                "point and colour are then new)");
+}
+
+/// The filter's settings: the target, the rules and the colour array.
 void AddFilterOptions(CLI::App& app, Options& options)
 {
-  AddNumber(app, "--reduction", options.Reduction, 0, 1,
-            RuleComplaint("--reduction must be a number from 0 to 1"),
-            "fraction of the triangles to remove, 0 to 1 (default 0.9, which\n"
-            "keeps 10 %)")
+  using F = vtkColorHalfEdgeDecimation;
+  AddFilterNumber(app, options, "--reduction", 0, 1, &F::SetTargetReduction,
+                  "--reduction must be a number from 0 to 1",
+                  "fraction of the triangles to remove, 0 to 1 (default " +
+                    Number(Defaults()->GetTargetReduction()) + ")")
     ->type_name("R");
-  AddChoice(app, "--metric", options.Metric,
-            { { "half-edge-color", vtkColorHalfEdgeDecimation::HalfEdgeColor },
-              { "half-edge-colour", vtkColorHalfEdgeDecimation::HalfEdgeColor },
-              { "halfedgecolor", vtkColorHalfEdgeDecimation::HalfEdgeColor },
-              { "color", vtkColorHalfEdgeDecimation::HalfEdgeColor },
-              { "colour", vtkColorHalfEdgeDecimation::HalfEdgeColor },
-              { "geometry", vtkColorHalfEdgeDecimation::Geometry },
-              { "color-quadric", vtkColorHalfEdgeDecimation::ColorQuadric },
-              { "colour-quadric", vtkColorHalfEdgeDecimation::ColorQuadric },
-              { "colorquadric", vtkColorHalfEdgeDecimation::ColorQuadric } },
-            RuleComplaint("--metric must be half-edge-color, geometry or color-quadric"),
-            "half-edge-color (default: the paper's colour-aware cost),\n"
-            "geometry (quadric error only, colours ignored) or color-quadric\n"
-            "(Garland-Heckbert's 6-D colour quadric, as a half-edge collapse)")
-    ->type_name("M");
   AddValue(
     app, "--array",
     [&options](const std::string& name)
@@ -122,32 +246,40 @@ void AddFilterOptions(CLI::App& app, Options& options)
     "point array holding the colours (default: the active scalars,\n"
     "e.g. the RGB array read from a PLY file)")
     ->type_name("NAME");
-  app.add_flag("--preserve-boundary", options.PreserveBoundary,
-               "never remove vertices on open boundaries");
-  AddNumber(app, "--max-normal-angle", options.MaxNormalAngle, 0, 180,
-            RuleComplaint("--max-normal-angle must be a number of degrees from 0 to 180"),
-            "largest turn of a triangle normal a collapse may cause, 0 to 180\n"
-            "(default 90)")
+  AddFilterFlag(app, options, "--preserve-boundary", &F::SetPreserveBoundary, 1,
+                "never remove vertices on open boundaries");
+  AddFilterNumber(app, options, "--max-normal-angle", 0, 180, &F::SetMaximumNormalAngle,
+                  "--max-normal-angle must be a number of degrees from 0 to 180",
+                  "largest turn of a triangle normal a collapse may cause, 0 to 180\n"
+                  "(default " +
+                    Number(Defaults()->GetMaximumNormalAngle()) + ")")
     ->type_name("DEG");
-  AddNumber(app, "--geometry-weight", options.GeometryWeight, 0,
-            std::numeric_limits<double>::infinity(),
-            RuleComplaint("--geometry-weight must be a number >= 0"),
-            "weight of the geometric term, >= 0 (default 1; larger keeps shape\n"
-            "better, smaller keeps colour better)")
-    ->type_name("W");
+  AddFilterFlag(app, options, "--no-original-ids", &F::SetGenerateOriginalPointIds, 0,
+                "do not add the vtkOriginalPointIds point array");
+  AddValue(
+    app, "--original-ids-name",
+    [&options](const std::string& name)
+    {
+      options.Settings.push_back([name](vtkColorHalfEdgeDecimation* f)
+                                 { f->SetOriginalPointIdsArrayName(name.c_str()); });
+      return !name.empty();
+    },
+    FixedComplaint("--original-ids-name needs a non-empty array name"),
+    "name of the array of original point ids (default vtkOriginalPointIds)")
+    ->type_name("NAME");
 }
 
 /// How the collapses are scheduled, on how many threads.
 void AddScheduleOptions(CLI::App& app, Options& options)
 {
-  AddChoice(app, "--schedule", options.Schedule,
-            { { "greedy", vtkColorHalfEdgeDecimation::Greedy },
-              { "batched", vtkColorHalfEdgeDecimation::Batched } },
-            RuleComplaint("--schedule must be greedy or batched"),
-            "greedy (default: one collapse at a time, cheapest first, as in\n"
-            "the paper) or batched (passes of independent collapses, cheapest\n"
-            "first within each: faster on large meshes, close to greedy's\n"
-            "result but not the same)")
+  using F = vtkColorHalfEdgeDecimation;
+  AddFilterChoice(app, options, "--schedule",
+                  { { "greedy", F::Greedy }, { "batched", F::Batched } }, &F::SetCollapseSchedule,
+                  "--schedule must be greedy or batched",
+                  std::string("batched (passes of independent collapses by blocks of the\n"
+                              "mesh, on all cores) or greedy (one collapse at a time, always\n"
+                              "the cheapest: the paper's order) (default ") +
+                    ScheduleName(Defaults()->GetCollapseSchedule()) + ")")
     ->type_name("S");
   AddValue(
     app, "--threads",
@@ -156,11 +288,16 @@ void AddScheduleOptions(CLI::App& app, Options& options)
       double count = 0;
       const bool ok =
         ParseNumber(text, count) && count >= 0 && count <= 1024 && count == std::floor(count);
-      options.Threads = ok ? static_cast<int>(count) : options.Threads;
+      const int threads = static_cast<int>(count);
+      if (ok)
+      {
+        options.Settings.push_back([threads](vtkColorHalfEdgeDecimation* f)
+                                   { f->SetNumberOfThreads(threads); });
+      }
       return ok;
     },
     RuleComplaint("--threads must be a whole number from 0 (all cores) to 1024"),
-    "threads that cost vertices (default 0: as many as vtkSMPTools\n"
+    "threads of the parallel phases (default 0: as many as vtkSMPTools\n"
     "runs, i.e. all cores unless VTK_SMP_MAX_THREADS says fewer); the\n"
     "result does not depend on it")
     ->type_name("N");
@@ -397,13 +534,14 @@ int WriteInputCopy(const Options& options, vtkPolyData* input)
 void Configure(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkPolyData* input)
 {
   filter->SetInputData(input);
-  filter->SetTargetReduction(options.Reduction);
-  filter->SetErrorMetric(options.Metric);
-  filter->SetPreserveBoundary(options.PreserveBoundary);
-  filter->SetMaximumNormalAngle(options.MaxNormalAngle);
-  filter->SetGeometryWeight(options.GeometryWeight);
-  filter->SetCollapseSchedule(options.Schedule);
-  filter->SetNumberOfThreads(options.Threads);
+  if (options.Paper)
+  {
+    filter->SetPaperDefaults();
+  }
+  for (const FilterSetting& setting : options.Settings)
+  {
+    setting(filter);
+  }
   if (!options.Array.empty())
   {
     filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
@@ -471,11 +609,29 @@ void PrintFigures(vtkColorHalfEdgeDecimation* filter, const Options& options, co
                 "        filter %.3f s (read %.3f s, write %.3f s), decimation state %s, "
                 "peak RSS %s\n",
                 options.Output.c_str(), figures.OutputPoints, figures.OutputTriangles,
-                filter->GetActualReduction(), options.Reduction,
-                static_cast<long long>(filter->GetNumberOfCollapses()), MetricName(options.Metric),
-                figures.FilterSeconds, input.ReadSeconds, figures.WriteSeconds,
-                Mib(filter->GetStateMemory()).c_str(), Mib(figures.PeakRss).c_str());
+                filter->GetActualReduction(), filter->GetTargetReduction(),
+                static_cast<long long>(filter->GetNumberOfCollapses()),
+                MetricName(filter->GetErrorMetric()), figures.FilterSeconds, input.ReadSeconds,
+                figures.WriteSeconds, Mib(filter->GetStateMemory()).c_str(),
+                Mib(figures.PeakRss).c_str());
   std::cout << line << std::flush;
+}
+
+/// The filter's settings as the run used them.
+Json Settings(vtkColorHalfEdgeDecimation* filter)
+{
+  Json settings;
+  settings["boundary_weight"] = filter->GetBoundaryWeight();
+  settings["edge_length_weight"] = filter->GetEdgeLengthWeight();
+  settings["geometry_weight"] = filter->GetGeometryWeight();
+  settings["color_weight"] = filter->GetColorWeight();
+  settings["color_space"] =
+    filter->GetColorSpace() == vtkColorHalfEdgeDecimation::CIELab ? "cielab" : "rgb";
+  settings["placement"] = filter->GetOptimalPlacement() != 0;
+  settings["preserve_boundary"] = filter->GetPreserveBoundary() != 0;
+  settings["max_normal_angle"] = filter->GetMaximumNormalAngle();
+  settings["original_ids"] = filter->GetGenerateOriginalPointIds() != 0;
+  return settings;
 }
 
 /// --stats: the figures as JSON.
@@ -485,10 +641,12 @@ Json Statistics(vtkColorHalfEdgeDecimation* filter, const Options& options, cons
   Json stats;
   stats["input"] = input.Name;
   stats["output"] = options.Output;
-  stats["metric"] = MetricName(options.Metric);
-  stats["schedule"] = ScheduleName(options.Schedule);
+  stats["metric"] = MetricName(filter->GetErrorMetric());
+  stats["schedule"] = ScheduleName(filter->GetCollapseSchedule());
   stats["threads"] = filter->GetNumberOfThreadsUsed();
-  stats["target_reduction"] = options.Reduction;
+  stats["target_reduction"] = filter->GetTargetReduction();
+  stats["paper"] = options.Paper;
+  stats["settings"] = Settings(filter);
   stats["reduction"] = filter->GetActualReduction();
   stats["input_points"] = input.Points;
   stats["input_triangles"] = input.Triangles;
@@ -575,6 +733,7 @@ int main(int argc, char* argv[])
                    "       color-decimate INPUT --write-demo FILE [options]");
   Options options;
   AddInputOptions(app, options);
+  AddMetricOptions(app, options);
   AddFilterOptions(app, options);
   AddScheduleOptions(app, options);
   AddOutputOptions(app, options);

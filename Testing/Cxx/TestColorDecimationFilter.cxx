@@ -420,6 +420,56 @@ CD_TEST_CASE(PrintSelf)
   CD_CHECK(after.str().find("ErrorMetric: HalfEdgeColor") != std::string::npos);
 }
 
+CD_TEST_CASE(PaperDefaults)
+{
+  // SetPaperDefaults sets every property of the method to the paper's and leaves the target,
+  // the threads and the ids alone; a run with it equals one with those values set by hand.
+  vtkNew<vtkColorHalfEdgeDecimation> f;
+  f->SetErrorMetricToAttributeQuadric();
+  f->SetCollapseScheduleToBatched();
+  f->SetBoundaryWeight(10);
+  f->SetEdgeLengthWeight(0.5);
+  f->SetGeometryWeight(3);
+  f->SetColorSpaceToCIELab();
+  f->SetColorWeight(4);
+  f->OptimalPlacementOn();
+  f->SetMaximumNormalAngle(30);
+  f->PreserveBoundaryOn();
+  f->SetTargetReduction(0.8);
+  f->SetNumberOfThreads(3);
+  f->GenerateOriginalPointIdsOff();
+  f->SetPaperDefaults();
+  CD_CHECK(f->GetErrorMetric() == vtkColorHalfEdgeDecimation::HalfEdgeColor);
+  CD_CHECK(f->GetCollapseSchedule() == vtkColorHalfEdgeDecimation::Greedy);
+  CD_CHECK(f->GetBoundaryWeight() == 0.0 && f->GetEdgeLengthWeight() == 0.0);
+  CD_CHECK(f->GetGeometryWeight() == 1.0 && f->GetColorWeight() == 1.0);
+  CD_CHECK(f->GetColorSpace() == vtkColorHalfEdgeDecimation::RGB);
+  CD_CHECK(!f->GetOptimalPlacement() && !f->GetPreserveBoundary());
+  CD_CHECK(f->GetMaximumNormalAngle() == 90.0);
+  CD_CHECK(f->GetTargetReduction() == 0.8 && f->GetNumberOfThreads() == 3);
+  CD_CHECK(!f->GetGenerateOriginalPointIds());
+
+  auto mesh = meshes::Torus(60, 24, Pattern::FineDetail);
+  vtkNew<vtkColorHalfEdgeDecimation> byHand;
+  byHand->SetErrorMetricToHalfEdgeColor();
+  byHand->SetCollapseScheduleToGreedy();
+  byHand->SetBoundaryWeight(0);
+  byHand->SetEdgeLengthWeight(0);
+  byHand->SetGeometryWeight(1);
+  byHand->SetColorSpaceToRGB();
+  byHand->SetMaximumNormalAngle(90);
+  byHand->PreserveBoundaryOff();
+  vtkNew<vtkColorHalfEdgeDecimation> paper;
+  paper->SetPaperDefaults();
+  for (vtkColorHalfEdgeDecimation* filter : { byHand.Get(), paper.Get() })
+  {
+    filter->SetInputData(mesh);
+    filter->Update();
+  }
+  CD_CHECK(GetOriginalTriangles(byHand->GetOutput()) == GetOriginalTriangles(paper->GetOutput()));
+  CD_CHECK(byHand->GetNumberOfCollapses() == paper->GetNumberOfCollapses());
+}
+
 CD_TEST_CASE(Properties)
 {
   vtkNew<vtkColorHalfEdgeDecimation> f;

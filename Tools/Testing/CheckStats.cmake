@@ -2,12 +2,14 @@
 #
 #   cmake -DSTATS=file.json -DINPUT_POINTS=N -DINPUT_TRIANGLES=N -DREDUCTION=R -DMETRIC=name
 #         [-DSCHEDULE=greedy|batched] [-DTHREADS=N | -DMIN_THREADS=N]
+#         [-DSETTINGS=key=value;key=value...]
 #         [-DCHECK_FILE=mesh -DMESH_CHECK=ColorDecimationMeshCheck]
 #         -P CheckStats.cmake
 #
 # Every required key must be there with a plausible value; "threads" must be THREADS, or at
 # least MIN_THREADS (at least 1 without either); with CHECK_FILE, the output counts in the
-# JSON must be those of the mesh file (read by MESH_CHECK).
+# JSON must be those of the mesh file (read by MESH_CHECK). METRIC and SCHEDULE are checked
+# when given; each SETTINGS key must have that value in the JSON's "settings".
 if (NOT EXISTS "${STATS}")
   message(FATAL_ERROR "${STATS} was not written")
 endif ()
@@ -43,11 +45,25 @@ function (to_millionths text out)
 endfunction ()
 expect("input_points = ${INPUT_POINTS}" input_points EQUAL INPUT_POINTS)
 expect("input_triangles = ${INPUT_TRIANGLES}" input_triangles EQUAL INPUT_TRIANGLES)
-expect("metric = ${METRIC}" metric STREQUAL METRIC)
-if (NOT DEFINED SCHEDULE)
-  set(SCHEDULE greedy)
+if (DEFINED METRIC)
+  expect("metric = ${METRIC}" metric STREQUAL METRIC)
 endif ()
-expect("schedule = ${SCHEDULE}" schedule STREQUAL SCHEDULE)
+if (DEFINED SCHEDULE)
+  expect("schedule = ${SCHEDULE}" schedule STREQUAL SCHEDULE)
+endif ()
+foreach (setting IN LISTS SETTINGS)
+  string(REGEX MATCH "^([^=]+)=(.*)$" matched "${setting}")
+  string(JSON value ERROR_VARIABLE problem GET "${json}" settings ${CMAKE_MATCH_1})
+  if (problem)
+    message(FATAL_ERROR "setting '${CMAKE_MATCH_1}' missing: ${problem}")
+  endif ()
+  set(wanted "${CMAKE_MATCH_2}")
+  if (wanted MATCHES "^-?[0-9.]+$")
+    expect("settings.${CMAKE_MATCH_1} = ${wanted} (got ${value})" value EQUAL wanted)
+  else ()
+    expect("settings.${CMAKE_MATCH_1} = ${wanted} (got ${value})" value STREQUAL wanted)
+  endif ()
+endforeach ()
 to_millionths("${REDUCTION}" target)
 math(EXPR kept "${INPUT_TRIANGLES} - (${INPUT_TRIANGLES} * ${target}) / 1000000")
 math(EXPR kept_high "${kept} + 4")
