@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace colordecimation
 {
@@ -149,6 +150,25 @@ CollapseVerdict CollapseRules::CheckGeometry(const HalfEdgeMesh& mesh, const flo
   return this->CheckFan(mesh, positions, stride, v1, v0, newPosition);
 }
 
+namespace
+{
+/// Whether the triangle (p1, pa, pb), of twice-area squared newLength2 and squared edges fa2 and
+/// fb2 from p1, has an area that the float rounding of its corners could account for.
+bool WithinRounding(const double p1[3], const float* pa, const float* pb, double newLength2,
+                    double fa2, double fb2)
+{
+  double magnitude = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    magnitude =
+      std::max({ magnitude, std::abs(p1[k]), std::abs(double(pa[k])), std::abs(double(pb[k])) });
+  }
+  const double noise = 8.0 * std::numeric_limits<float>::epsilon() * magnitude;
+  const double bound = noise * (std::sqrt(fa2) + std::sqrt(fb2));
+  return !(newLength2 > bound * bound);
+}
+} // namespace
+
 CollapseVerdict CollapseRules::CheckFan(const HalfEdgeMesh& mesh, const float* positions,
                                         int stride, int32_t v0, int32_t v1,
                                         const double p1[3]) const
@@ -180,8 +200,11 @@ CollapseVerdict CollapseRules::CheckFan(const HalfEdgeMesh& mesh, const float* p
       const double newLength2 = newN[0] * newN[0] + newN[1] * newN[1] + newN[2] * newN[2];
       const double fa2 = fa[0] * fa[0] + fa[1] * fa[1] + fa[2] * fa[2];
       const double fb2 = fb[0] * fb[0] + fb[1] * fb[1] + fb[2] * fb[2];
-      // Degenerate: the sine of the angle at p1 below 1e-6 (or a zero-length edge).
-      if (!(newLength2 > 1e-12 * fa2 * fb2) || !(fa2 > 0) || !(fb2 > 0))
+      // Degenerate: the sine of the angle at p1 below 1e-6, a zero-length edge, or an area
+      // within the rounding of the stored (float) positions, where exactly collinear input
+      // points can come out with a sine above 1e-6.
+      if (!(newLength2 > 1e-12 * fa2 * fb2) || !(fa2 > 0) || !(fb2 > 0) ||
+          WithinRounding(p1, pa, pb, newLength2, fa2, fb2))
       {
         verdict = CollapseVerdict::Degenerate;
         return;
