@@ -230,14 +230,14 @@ void ReportBuild(vtkColorHalfEdgeDecimation* self, const colordecimation::MeshBu
 
 //------------------------------------------------------------------------------
 vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
-  : ErrorMetric(HalfEdgeColor)
-  , CollapseSchedule(Greedy)
+  : ErrorMetric(AttributeQuadric)
+  , CollapseSchedule(Batched)
   , NumberOfThreads(0)
   , ColorSpace(RGB)
   , OptimalPlacement(false)
   , ColorWeight(1.0)
-  , BoundaryWeight(0.0)
-  , EdgeLengthWeight(0.0)
+  , BoundaryWeight(50.0)
+  , EdgeLengthWeight(0.0001)
   , TargetReduction(0.9)
   , PreserveBoundary(false)
   , MaximumNormalAngle(90.0)

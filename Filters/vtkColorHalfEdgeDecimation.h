@@ -12,13 +12,18 @@
  *
  * vtkColorHalfEdgeDecimation simplifies a triangle mesh by half-edge collapses: a vertex v0
  * is merged into a neighbour v1, which stays where it is with its own colour. Collapses are
- * done cheapest first, by the cost of Kim, Choi and Lee, "Mesh Simplification with Vertex
- * Color": (1 + quadric error) x (1 + visual importance of v0) x (1 + colour error of the
- * collapse), measured in a frame where the mean edge length is 1 so that the result does
- * not depend on the mesh's units. For comparison, ErrorMetric also offers the geometric
- * quadric alone and Garland and Heckbert's colour quadric in R^6 (with optional full
- * collapses, OptimalPlacement), and ColorSpace measures every colour term in CIELab
- * instead of RGB.
+ * done cheapest first. By default the cost is Hoppe's attribute quadric (the squared
+ * distance to the input's triangles plus the squared difference from their colours,
+ * area-weighted, at the kept vertex), with Garland and Heckbert's boundary planes holding
+ * open boundaries in place, an edge-length term that decimates flat parts evenly, and the
+ * Batched schedule on all cores: the setting that measured best on real scans
+ * (docs/RESULTS.md). SetPaperDefaults() sets every property to the method of Kim, Choi and
+ * Lee, "Mesh Simplification with Vertex Color": the cost (1 + quadric error) x (1 + visual
+ * importance of v0) x (1 + colour error of the collapse) in the Greedy order. Costs are
+ * measured in a frame where the mean edge length is 1, so that the result does not depend on
+ * the mesh's units. ErrorMetric also offers the geometric quadric alone and Garland and
+ * Heckbert's colour quadric in R^6 (with optional full collapses, OptimalPlacement), and
+ * ColorSpace measures every colour term in CIELab instead of RGB.
  *
  * Because no vertex is ever moved or blended (except with the ColorQuadric metric's
  * OptimalPlacement, see there), every point-data array of the surviving points is copied
@@ -73,7 +78,12 @@ public:
 
   /**
    * The cost that orders the collapses.
-   * - HalfEdgeColor (default): the paper's (1 + Q)(1 + I)(1 + C).
+   * - AttributeQuadric (default): Hoppe's quadric for appearance attributes ("New quadric
+   *   metric for simplifying meshes with appearance attributes", 1999): per triangle, its
+   *   area times the squared distance to its plane plus the squared difference from its
+   *   colour interpolated linearly, colour times ColorWeight, positions in mean-edge-length
+   *   units; evaluated at the kept vertex (23 floats per vertex).
+   * - HalfEdgeColor: the paper's (1 + Q)(1 + I)(1 + C).
    * - Geometry: the quadric error Q alone (colour ignored), for comparison.
    * - ColorQuadric: Garland and Heckbert's colour quadric (1998), the metric the paper
    *   compares against: every vertex is a point (x, y, z, r, g, b) of R^6 (geometry with
@@ -113,7 +123,7 @@ public:
 
   ///@{
   /**
-   * Set/Get the error metric (see ErrorMetrics). Default HalfEdgeColor.
+   * Set/Get the error metric (see ErrorMetrics). Default AttributeQuadric.
    */
   vtkSetClampMacro(ErrorMetric, int, HalfEdgeColor, AttributeQuadric);
   vtkGetMacro(ErrorMetric, int);
@@ -158,9 +168,11 @@ public:
 
   ///@{
   /**
-   * ColorQuadric only: the weight of colour against geometry (the colour coordinates of
-   * R^6 are multiplied by it). Default 1: a unit of colour weighs as much as the whole
-   * bounding box's largest side, as in Garland and Heckbert's frame.
+   * AttributeQuadric and ColorQuadric: the weight of colour against geometry (colours are
+   * multiplied by it). Default 1. AttributeQuadric: a colour difference of 1 / ColorWeight
+   * weighs as much as a distance of one mean edge length. ColorQuadric: a unit of colour
+   * weighs as much as the whole bounding box's largest side, as in Garland and Heckbert's
+   * frame.
    */
   vtkSetClampMacro(ColorWeight, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(ColorWeight, double);
@@ -172,7 +184,7 @@ public:
    * to the quadric of its two vertices the plane through the edge perpendicular to its
    * triangle, weighted by BoundaryWeight times the edge's squared length in the metric's
    * frame (Garland and Heckbert's boundary preservation), so that collapses which pull a
-   * boundary inwards or cut its corners cost more. Default 0: none, the paper's metric.
+   * boundary inwards or cut its corners cost more. Default 50; 0: none, the paper's metric.
    */
   vtkSetClampMacro(BoundaryWeight, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(BoundaryWeight, double);
@@ -184,21 +196,22 @@ public:
    * each triangle adds to its corners' quadrics EdgeLengthWeight times its area times the
    * squared distance from the corner. On flat parts, where the planes cost nothing, the
    * shortest collapses then go first and a vertex that absorbed others costs more to collapse
-   * into, so flat parts are decimated evenly instead of into fans of needles. Default 0.
+   * into, so flat parts are decimated evenly instead of into fans of needles. Default 0.0001;
+   * 0: none, the paper's metric.
    */
   vtkSetClampMacro(EdgeLengthWeight, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(EdgeLengthWeight, double);
   ///@}
 
   /**
-   * The order of the collapses. Greedy (default): one at a time, always the cheapest valid
-   * collapse of the whole mesh, as in the paper (and in vtkQuadricDecimation). Batched: in
-   * passes; each takes the cheapest quarter of the vertices' chosen collapses and makes them
-   * in cost order, skipping those whose cost a collapse earlier in the pass made stale, then
-   * re-costs every affected vertex. The collapses of a pass run on NumberOfThreads threads,
-   * by blocks of the mesh (those that reach across blocks afterwards), and so does the
-   * re-costing. Same cost, same rules, so the same guarantees; faster on large meshes, and a
-   * result close to Greedy's but not the same. It does not depend on NumberOfThreads.
+   * The order of the collapses. Greedy: one at a time, always the cheapest valid
+   * collapse of the whole mesh, as in the paper (and in vtkQuadricDecimation). Batched
+   * (default): in passes; each takes the cheapest quarter of the vertices' chosen collapses and
+   * makes them in cost order, skipping those whose cost a collapse earlier in the pass made stale,
+   * then re-costs every affected vertex. The collapses of a pass run on NumberOfThreads threads, by
+   * blocks of the mesh (those that reach across blocks afterwards), and so does the re-costing.
+   * Same cost, same rules, so the same guarantees; faster on large meshes, and a result close to
+   * Greedy's but not the same. It does not depend on NumberOfThreads.
    */
   enum CollapseSchedules
   {
@@ -208,7 +221,7 @@ public:
 
   ///@{
   /**
-   * Set/Get the order of the collapses (see CollapseSchedules). Default Greedy.
+   * Set/Get the order of the collapses (see CollapseSchedules). Default Batched.
    */
   vtkSetClampMacro(CollapseSchedule, int, Greedy, Batched);
   vtkGetMacro(CollapseSchedule, int);

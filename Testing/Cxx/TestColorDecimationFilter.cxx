@@ -7,12 +7,15 @@
 #include "vtkColorHalfEdgeDecimation.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -206,12 +209,14 @@ CD_TEST_CASE(TargetReductionOne)
     const char* Name;
     bool Exhausted; ///< decimating the result again finds no valid collapse
   };
-  // Torus(40,20): decimating its result again still finds a few collapses (3 with VTK 9.1).
+  // The tori: decimating the result again may find a few collapses, because the second run
+  // bounds the drift of each triangle's normal from the first run's output, not from the
+  // original input (docs/ALGORITHM.md, section 5).
   const Case cases[] = {
     { meshes::Icosphere(3, Pattern::SharpRegions), ClosedSurface(2, SphereNormal), "Icosphere(3)",
       true },
     { meshes::Torus(40, 16, Pattern::SmoothGradient), ClosedSurface(0, TorusNormal), "Torus(40,16)",
-      true },
+      false },
     { meshes::Torus(40, 20, Pattern::SmoothGradient), ClosedSurface(0, TorusNormal), "Torus(40,20)",
       false },
     { meshes::Grid(24, 18, Pattern::SharpRegions), OpenSheet(), "Grid(24,18)", true },
@@ -231,6 +236,8 @@ CD_TEST_CASE(TargetReductionOne)
     const RunResult again = Decimate(r.Output, 1.0);
     CD_CHECK_MSG(again.Collapses == 0 || !c.Exhausted,
                  c.Name << ": " << again.Collapses << " more collapses were possible");
+    CD_CHECK_MSG(4 * again.Collapses <= out,
+                 c.Name << ": " << again.Collapses << " more collapses on " << out << " triangles");
   }
 }
 
@@ -394,6 +401,8 @@ CD_TEST_CASE(PrintSelf)
   filter->SetOriginalPointIdsArrayName("SourcePoint");
   filter->SetCollapseScheduleToBatched();
   filter->SetNumberOfThreads(3);
+  filter->SetEdgeLengthWeight(0.125);
+  filter->SetBoundaryWeight(4.5);
   std::ostringstream os;
   filter->Print(os);
   const std::string text = os.str();
@@ -401,7 +410,8 @@ CD_TEST_CASE(PrintSelf)
        { "ErrorMetric: Geometry", "TargetReduction: 0.25", "PreserveBoundary: On",
          "MaximumNormalAngle: 33.5", "GeometryWeight: 7.25", "GenerateOriginalPointIds: Off",
          "OriginalPointIdsArrayName: SourcePoint", "CollapseSchedule: Batched",
-         "NumberOfThreads: 3", "ActualReduction: ", "NumberOfCollapses: ", "StateMemory: " })
+         "NumberOfThreads: 3", "EdgeLengthWeight: 0.125", "BoundaryWeight: 4.5",
+         "ActualReduction: ", "NumberOfCollapses: ", "StateMemory: ", "NumberOfThreadsUsed: " })
   {
     CD_CHECK_MSG(text.find(expected) != std::string::npos, "PrintSelf lacks '" << expected << "'");
   }
@@ -417,7 +427,86 @@ CD_TEST_CASE(PrintSelf)
   collapses << "NumberOfCollapses: " << run->GetNumberOfCollapses() << "\n";
   CD_CHECK(run->GetNumberOfCollapses() > 0);
   CD_CHECK(after.str().find(collapses.str()) != std::string::npos);
-  CD_CHECK(after.str().find("ErrorMetric: HalfEdgeColor") != std::string::npos);
+  CD_CHECK(after.str().find("ErrorMetric: AttributeQuadric") != std::string::npos);
+}
+
+/// The sheet's total triangle area and its triangles' smallest angles (degrees), sorted.
+struct SheetFigures
+{
+  double Area = 0;
+  std::vector<double> Angles;
+};
+
+SheetFigures MeasureSheet(vtkPolyData* mesh)
+{
+  SheetFigures figures;
+  vtkCellArray* polys = mesh->GetPolys();
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    polys->GetCellAtId(c, ids);
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      mesh->GetPoint(ids->GetId(k), p[k]);
+    }
+    double smallest = 180;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double* a = p[k];
+      const double* b = p[(k + 1) % 3];
+      const double* o = p[(k + 2) % 3];
+      const double u[3] = { a[0] - o[0], a[1] - o[1], a[2] - o[2] };
+      const double v[3] = { b[0] - o[0], b[1] - o[1], b[2] - o[2] };
+      const double cross[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                                u[0] * v[1] - u[1] * v[0] };
+      const double sine =
+        std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
+      const double dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+      smallest = std::min(smallest, std::atan2(sine, dot) * 180.0 / 3.14159265358979323846);
+      if (k == 0)
+      {
+        figures.Area += 0.5 * sine;
+      }
+    }
+    figures.Angles.push_back(smallest);
+  }
+  std::sort(figures.Angles.begin(), figures.Angles.end());
+  return figures;
+}
+
+CD_TEST_CASE(FlatSheetDefaults)
+{
+  // A flat open sheet (200 x 200 quads, 80,000 triangles) at the defaults, with and without
+  // colour, both schedules: the boundary keeps its shape (at least 99.9 % of the area) and
+  // the flat interior is decimated evenly, not into fans of needles.
+  auto colored = meshes::FlatGrid(200, 200, Pattern::SmoothGradient);
+  auto plain = meshes::FlatGrid(200, 200, Pattern::Constant);
+  plain->GetPointData()->Initialize();
+  for (const int schedule :
+       { vtkColorHalfEdgeDecimation::Greedy, vtkColorHalfEdgeDecimation::Batched })
+  {
+    for (vtkPolyData* sheet : { plain.Get(), colored.Get() })
+    {
+      const SheetFigures before = MeasureSheet(sheet);
+      vtkNew<vtkColorHalfEdgeDecimation> f;
+      f->SetInputData(sheet);
+      f->SetCollapseSchedule(schedule);
+      f->Update();
+      const SheetFigures after = MeasureSheet(f->GetOutput());
+      const double kept = after.Area / before.Area;
+      const double smallest = after.Angles.front();
+      const double percentile = after.Angles[after.Angles.size() / 100];
+      std::cout << (sheet == plain.Get() ? "no colour" : "colour") << ", "
+                << f->GetCollapseScheduleAsString() << ": area " << 100 * kept
+                << " %, smallest angle " << smallest << ", 1st percentile " << percentile
+                << " (input " << before.Angles.front() << ")\n";
+      CD_CHECK_NEAR(f->GetActualReduction(), 0.9, 1e-3);
+      CD_CHECK_MSG(kept >= 0.999, "the sheet keeps 99.9 % of its area");
+      CD_CHECK_MSG(smallest >= 1.0, "no needle: every angle 1 degree or more");
+      CD_CHECK_MSG(percentile >= 5.0, "99 % of the triangles have no angle below 5 degrees");
+    }
+  }
 }
 
 CD_TEST_CASE(PaperDefaults)
@@ -474,14 +563,19 @@ CD_TEST_CASE(Properties)
 {
   vtkNew<vtkColorHalfEdgeDecimation> f;
   CD_CHECK(f->GetTargetReduction() == 0.9);
-  CD_CHECK(f->GetErrorMetric() == vtkColorHalfEdgeDecimation::HalfEdgeColor);
-  CD_CHECK(std::string(f->GetErrorMetricAsString()) == "HalfEdgeColor");
+  CD_CHECK(f->GetErrorMetric() == vtkColorHalfEdgeDecimation::AttributeQuadric);
+  CD_CHECK(std::string(f->GetErrorMetricAsString()) == "AttributeQuadric");
   CD_CHECK(!f->GetPreserveBoundary());
   CD_CHECK(f->GetMaximumNormalAngle() == 90.0);
   CD_CHECK(f->GetGeometryWeight() == 1.0);
+  CD_CHECK(f->GetColorWeight() == defaults::ColorWeight);
+  CD_CHECK(f->GetBoundaryWeight() == defaults::BoundaryWeight);
+  CD_CHECK(f->GetEdgeLengthWeight() == defaults::EdgeLengthWeight);
   CD_CHECK(f->GetGenerateOriginalPointIds());
   CD_CHECK(std::string(f->GetOriginalPointIdsArrayName()) == "vtkOriginalPointIds");
-  CD_CHECK(f->GetCollapseSchedule() == vtkColorHalfEdgeDecimation::Greedy);
+  CD_CHECK(f->GetCollapseSchedule() == vtkColorHalfEdgeDecimation::Batched);
+  CD_CHECK(std::string(f->GetCollapseScheduleAsString()) == "Batched");
+  f->SetCollapseScheduleToGreedy();
   CD_CHECK(std::string(f->GetCollapseScheduleAsString()) == "Greedy");
   CD_CHECK(f->GetNumberOfThreads() == 0);
   f->SetCollapseSchedule(7);

@@ -74,10 +74,12 @@ def main():
     # Defaults, as documented in the C++ header.
     if abs(decimation.GetTargetReduction() - 0.9) > 1e-12:
         fail("default TargetReduction %g" % decimation.GetTargetReduction())
-    if decimation.GetErrorMetric() != vtkColorHalfEdgeDecimation.HalfEdgeColor:
+    if decimation.GetErrorMetric() != vtkColorHalfEdgeDecimation.AttributeQuadric:
         fail("default ErrorMetric %d" % decimation.GetErrorMetric())
-    if decimation.GetErrorMetricAsString() != "HalfEdgeColor":
+    if decimation.GetErrorMetricAsString() != "AttributeQuadric":
         fail("ErrorMetric as string: %s" % decimation.GetErrorMetricAsString())
+    if decimation.GetCollapseSchedule() != vtkColorHalfEdgeDecimation.Batched:
+        fail("default CollapseSchedule %d" % decimation.GetCollapseSchedule())
     if not decimation.GetGenerateOriginalPointIds():
         fail("GenerateOriginalPointIds should default to on")
     if "TargetReduction" not in str(decimation):
@@ -124,6 +126,16 @@ def main():
         fail("SetErrorMetricToGeometry")
     if not target - 1 <= decimation.GetOutput().GetNumberOfPolys() <= target:
         fail("the geometry metric missed the target")
+
+    # The paper's method in one call: its metric and the Greedy schedule.
+    decimation.SetPaperDefaults()
+    if decimation.GetErrorMetricAsString() != "HalfEdgeColor" or \
+            decimation.GetCollapseScheduleAsString() != "Greedy" or \
+            decimation.GetBoundaryWeight() != 0.0:
+        fail("SetPaperDefaults")
+    decimation.Update()
+    if not target - 1 <= decimation.GetOutput().GetNumberOfPolys() <= target:
+        fail("the paper's method missed the target")
 
     # The batched schedule on two threads, through the enum setter and the class constant.
     decimation.SetErrorMetricToHalfEdgeColor()

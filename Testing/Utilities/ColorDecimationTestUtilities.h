@@ -38,6 +38,14 @@ namespace colordecimation
 namespace testing
 {
 
+/// The filter's default weights, as its header documents them (one place for every test).
+namespace defaults
+{
+constexpr double ColorWeight = 1.0;
+constexpr double BoundaryWeight = 50.0;
+constexpr double EdgeLengthWeight = 0.0001;
+} // namespace defaults
+
 //------------------------------------------------------------------------------
 // The runner.
 

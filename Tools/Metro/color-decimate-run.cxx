@@ -30,7 +30,9 @@
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -44,9 +46,11 @@ const char* const Program = "color-decimate-run";
 
 const char* const Methods =
   "Methods:\n"
-  "  half-edge-color   vtkColorHalfEdgeDecimation, the paper's metric (default)\n"
-  "  geometry          vtkColorHalfEdgeDecimation, quadric error only\n"
-  "  color-quadric     vtkColorHalfEdgeDecimation, Garland-Heckbert's colour quadric\n"
+  "  defaults          vtkColorHalfEdgeDecimation at its defaults (the default)\n"
+  "  paper             vtkColorHalfEdgeDecimation with SetPaperDefaults(): the paper's method\n"
+  "  half-edge-color, geometry, color-quadric, attribute-quadric\n"
+  "                    vtkColorHalfEdgeDecimation with that metric on the paper's other\n"
+  "                    settings (the weights and the schedule given apply on top)\n"
   "  vtk-quadric       vtkQuadricDecimation (--attributes: its attribute error metric on,\n"
   "                    with the colours as scalars; without, the output has no colour and\n"
   "                    gets the colour of the nearest input vertex, after the timing)\n"
@@ -70,12 +74,15 @@ struct Settings
 {
   std::string Input;
   std::string Output;
-  std::string Method = "half-edge-color";
+  std::string Method = "defaults";
   std::string JsonPath;
   double Reduction = 0.9;
-  double GeometryWeight = 1.0;
-  double ColorWeight = 1.0;
-  double BoundaryWeight = 0.0;
+  // vtkColorHalfEdgeDecimation's settings: NaN or empty when not given (then the method's own).
+  double GeometryWeight = std::numeric_limits<double>::quiet_NaN();
+  double ColorWeight = std::numeric_limits<double>::quiet_NaN();
+  double BoundaryWeight = std::numeric_limits<double>::quiet_NaN();
+  double EdgeLengthWeight = std::numeric_limits<double>::quiet_NaN();
+  std::string Schedule;
   bool Placement = false;
   bool CieLab = false;
   bool Attributes = false;
@@ -97,9 +104,27 @@ struct Figures
   Json Extra = Json::object(); // the method's own figures
 };
 
+/// vtkColorHalfEdgeDecimation's methods: at its defaults, at the paper's settings, or one
+/// metric (on the paper's other settings), with their ErrorMetric.
+const std::pair<const char*, int> OurMethods[] = {
+  { "defaults", -1 },
+  { "paper", vtkColorHalfEdgeDecimation::HalfEdgeColor },
+  { "half-edge-color", vtkColorHalfEdgeDecimation::HalfEdgeColor },
+  { "geometry", vtkColorHalfEdgeDecimation::Geometry },
+  { "color-quadric", vtkColorHalfEdgeDecimation::ColorQuadric },
+  { "attribute-quadric", vtkColorHalfEdgeDecimation::AttributeQuadric },
+};
+
 bool IsOurs(const std::string& method)
 {
-  return method == "half-edge-color" || method == "geometry" || method == "color-quadric";
+  for (const auto& m : OurMethods)
+  {
+    if (method == m.first)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 /// The methods of meshoptimizer's WebAssembly build and their modes.
@@ -169,7 +194,7 @@ void AddRunOptions(CLI::App& app, Settings& settings)
         IsMeshOptimizerJS(method);
     },
     [](const std::string& method) { return "unknown method '" + method + "'"; },
-    "the simplifier (default half-edge-color; see Methods below)")
+    "the simplifier (default defaults; see Methods below)")
     ->type_name("M");
   AddNumber(app, "--reduction", settings.Reduction, 0.0, 1.0, BadValueComplaint("--reduction"),
             "fraction of triangles to remove (default 0.9)")
@@ -186,14 +211,27 @@ void AddMethodOptions(CLI::App& app, Settings& settings)
   app.add_flag("--cielab", settings.CieLab,
                "measure colour in CIELab (the vtkColorHalfEdgeDecimation metrics)");
   AddNumber(app, "--geometry-weight", settings.GeometryWeight, 0.0, any,
-            BadValueComplaint("--geometry-weight"), "GeometryWeight (half-edge-color)")
+            BadValueComplaint("--geometry-weight"), "GeometryWeight (vtkColorHalfEdgeDecimation)")
     ->type_name("W");
   AddNumber(app, "--color-weight", settings.ColorWeight, 0.0, any,
-            BadValueComplaint("--color-weight"), "ColorWeight (color-quadric)")
+            BadValueComplaint("--color-weight"), "ColorWeight (vtkColorHalfEdgeDecimation)")
     ->type_name("W");
   AddNumber(app, "--boundary-weight", settings.BoundaryWeight, 0.0, any,
             BadValueComplaint("--boundary-weight"), "BoundaryWeight (vtkColorHalfEdgeDecimation)")
     ->type_name("W");
+  AddNumber(app, "--edge-length-weight", settings.EdgeLengthWeight, 0.0, any,
+            BadValueComplaint("--edge-length-weight"),
+            "EdgeLengthWeight (vtkColorHalfEdgeDecimation)")
+    ->type_name("W");
+  AddValue(
+    app, "--schedule",
+    [&settings](const std::string& schedule)
+    {
+      settings.Schedule = schedule;
+      return schedule == "greedy" || schedule == "batched";
+    },
+    BadValueComplaint("--schedule"), "greedy or batched (vtkColorHalfEdgeDecimation)")
+    ->type_name("S");
   app.add_flag("--preserve-boundary", settings.PreserveBoundary,
                "PreserveBoundary (vtkColorHalfEdgeDecimation)");
   app.add_flag("--attributes", settings.Attributes, "vtk-quadric: AttributeErrorMetric on");
@@ -235,29 +273,73 @@ vtkSmartPointer<vtkPolyData> ReadInput(const Settings& settings)
   return input;
 }
 
+/// The settings given on the command line, over the method's own.
+void ApplyGivenSettings(vtkColorHalfEdgeDecimation* filter, const Settings& settings)
+{
+  const std::pair<double, void (vtkColorHalfEdgeDecimation::*)(double)> weights[] = {
+    { settings.GeometryWeight, &vtkColorHalfEdgeDecimation::SetGeometryWeight },
+    { settings.ColorWeight, &vtkColorHalfEdgeDecimation::SetColorWeight },
+    { settings.BoundaryWeight, &vtkColorHalfEdgeDecimation::SetBoundaryWeight },
+    { settings.EdgeLengthWeight, &vtkColorHalfEdgeDecimation::SetEdgeLengthWeight },
+  };
+  for (const auto& weight : weights)
+  {
+    if (!std::isnan(weight.first))
+    {
+      (filter->*weight.second)(weight.first);
+    }
+  }
+  if (!settings.Schedule.empty())
+  {
+    filter->SetCollapseSchedule(settings.Schedule == "batched"
+                                  ? vtkColorHalfEdgeDecimation::Batched
+                                  : vtkColorHalfEdgeDecimation::Greedy);
+  }
+  if (settings.Placement)
+  {
+    filter->OptimalPlacementOn();
+  }
+  if (settings.CieLab)
+  {
+    filter->SetColorSpaceToCIELab();
+  }
+  if (settings.PreserveBoundary)
+  {
+    filter->PreserveBoundaryOn();
+  }
+}
+
 vtkSmartPointer<vtkPolyData> SimplifyOurs(vtkPolyData* input, const Settings& settings,
                                           Figures& figures)
 {
-  const std::string& method = settings.Method;
   vtkNew<vtkColorHalfEdgeDecimation> filter;
   filter->SetInputData(input);
   filter->SetTargetReduction(settings.Reduction);
-  filter->SetErrorMetric(method == "geometry"          ? vtkColorHalfEdgeDecimation::Geometry
-                           : method == "color-quadric" ? vtkColorHalfEdgeDecimation::ColorQuadric
-                                                       : vtkColorHalfEdgeDecimation::HalfEdgeColor);
-  filter->SetOptimalPlacement(settings.Placement);
-  filter->SetColorSpace(settings.CieLab ? vtkColorHalfEdgeDecimation::CIELab
-                                        : vtkColorHalfEdgeDecimation::RGB);
-  filter->SetGeometryWeight(settings.GeometryWeight);
-  filter->SetColorWeight(settings.ColorWeight);
-  filter->SetBoundaryWeight(settings.BoundaryWeight);
-  filter->SetPreserveBoundary(settings.PreserveBoundary);
+  for (const auto& method : OurMethods)
+  {
+    if (settings.Method == method.first && method.second >= 0)
+    {
+      filter->SetPaperDefaults(); // a named metric on the paper's other settings
+      filter->SetErrorMetric(method.second);
+    }
+  }
+  ApplyGivenSettings(filter, settings);
   filter->Update();
   figures.StateBytes = filter->GetStateMemory();
-  figures.MetricBytesPerVertex = method == "color-quadric" ? 112 : 48;
-  figures.MetricBytesNote = method == "color-quadric"
-    ? "28 floats (6-D quadric)"
-    : "12 floats (quadric 10, importance, max colour distance)";
+  switch (filter->GetErrorMetric())
+  {
+    case vtkColorHalfEdgeDecimation::ColorQuadric:
+      figures.MetricBytesPerVertex = 112;
+      figures.MetricBytesNote = "28 floats (6-D quadric)";
+      break;
+    case vtkColorHalfEdgeDecimation::AttributeQuadric:
+      figures.MetricBytesPerVertex = 92;
+      figures.MetricBytesNote = "23 floats (attribute quadric)";
+      break;
+    default:
+      figures.MetricBytesPerVertex = 48;
+      figures.MetricBytesNote = "12 floats (quadric 10, importance, max colour distance)";
+  }
   return filter->GetOutput();
 }
 
