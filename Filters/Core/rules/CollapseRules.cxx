@@ -153,19 +153,21 @@ CollapseVerdict CollapseRules::CheckGeometry(const HalfEdgeMesh& mesh, const flo
 namespace
 {
 /// Whether the triangle (p1, pa, pb), of twice-area squared newLength2 and squared edges fa2 and
-/// fb2 from p1, has an area that the float rounding of its corners could account for.
-bool WithinRounding(const double p1[3], const float* pa, const float* pb, double newLength2,
-                    double fa2, double fb2)
+/// fb2 from p1, has an area that the float rounding of its corners could account for: a
+/// rounding of up to noise per coordinate moves its twice area by about noise (|fa| + |fb|),
+/// and (|fa| + |fb|)^2 <= 2 (fa2 + fb2).
+inline bool WithinRounding(const double p1[3], const float* pa, const float* pb, double newLength2,
+                           double fa2, double fb2)
 {
   double magnitude = 0;
   for (int k = 0; k < 3; ++k)
   {
-    magnitude =
-      std::max({ magnitude, std::abs(p1[k]), std::abs(double(pa[k])), std::abs(double(pb[k])) });
+    magnitude = std::max(
+      magnitude,
+      std::max(std::abs(p1[k]), std::max(std::abs(double(pa[k])), std::abs(double(pb[k])))));
   }
   const double noise = 8.0 * std::numeric_limits<float>::epsilon() * magnitude;
-  const double bound = noise * (std::sqrt(fa2) + std::sqrt(fb2));
-  return !(newLength2 > bound * bound);
+  return !(newLength2 > 2.0 * noise * noise * (fa2 + fb2));
 }
 } // namespace
 

@@ -9,7 +9,15 @@
 #define colordecimation_Prefetch_h
 
 #if defined(__GNUC__) || defined(__clang__)
-#define COLORDECIMATION_PREFETCH(address) __builtin_prefetch(address)
+// The empty volatile asm makes the prefetch a side effect: GCC otherwise finds a function that
+// only prefetches free of side effects and drops every call to it.
+#define COLORDECIMATION_PREFETCH(address)                                                          \
+  do                                                                                               \
+  {                                                                                                \
+    const void* colordecimation_prefetched = (address);                                            \
+    __builtin_prefetch(colordecimation_prefetched);                                                \
+    __asm__ volatile("" : : "r"(colordecimation_prefetched));                                      \
+  } while (false)
 #else
 #define COLORDECIMATION_PREFETCH(address) ((void)(address))
 #endif
