@@ -671,8 +671,8 @@ double LabDistance(const float* a, const float* b)
 CD_TEST_CASE(CIELabMetric)
 {
   // The paper's cost of the pyramid's apex -> 1 collapse with every colour distance taken
-  // in CIELab / 100 (SPEC.md's formulas; the frame makes every spoke and the rims 1-2, 1-4
-  // of length 1, the rim 1-3 of length sqrt2; Q = 1/sqrt3).
+  // in CIELab / 100 (docs/ALGORITHM.md sections 4 and 8; the frame makes every spoke and the rims
+  // 1-2, 1-4 of length 1, the rim 1-3 of length sqrt2; Q = 1/sqrt3).
   DecimatorOptions options;
   options.Space = ColorSpace::CIELab;
   Decimator decimator(options);
