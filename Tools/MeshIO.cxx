@@ -203,46 +203,14 @@ std::string DemoHelp()
          "                          PATTERN: fine (default), sharp, smooth or constant.\n";
 }
 
-vtkSmartPointer<vtkPolyData> MakeDemo(const std::string& spec, std::string& description,
-                                      std::string& error)
+namespace
 {
-  std::string body;
-  if (spec == "--demo" || spec == "demo" || spec == "demo:")
-  {
-    body = std::string(DefaultDemoSpec()).substr(5);
-  }
-  else
-  {
-    body = spec.substr(5);
-  }
-  std::string shapeText = body, patternText = "fine";
-  const size_t colon = body.find(':');
-  if (colon != std::string::npos)
-  {
-    shapeText = body.substr(0, colon);
-    patternText = body.substr(colon + 1);
-  }
-  if (shapeText.empty())
-  {
-    shapeText = "ico8";
-  }
-  Pattern pattern;
-  std::string patternLabel;
-  if (!ParsePattern(patternText, pattern, patternLabel))
-  {
-    error = "unknown demo colour pattern '" + patternText +
-      "' (expected fine, sharp, smooth or constant)";
-    return nullptr;
-  }
-  std::string shape;
-  long long n = 0;
-  if (!SplitShape(shapeText, shape, n))
-  {
-    error = "bad demo shape '" + shapeText + "' (e.g. ico8, uv700, sphere1M, torus400, grid300)";
-    return nullptr;
-  }
+// The demo mesh of one shape and size (n < 0: the shape's default size), or null with error.
+vtkSmartPointer<vtkPolyData> MakeDemoShape(const std::string& shapeText, const std::string& shape,
+                                           long long n, Pattern pattern, std::string& what,
+                                           std::string& error)
+{
   vtkSmartPointer<vtkPolyData> mesh;
-  std::string what;
   if (shape == "ico" || shape == "icosphere")
   {
     n = n < 0 ? 8 : n;
@@ -299,40 +267,91 @@ vtkSmartPointer<vtkPolyData> MakeDemo(const std::string& spec, std::string& desc
     error = "unknown demo shape '" + shapeText + "' (expected ico, uv, sphere, torus or grid)";
     return nullptr;
   }
+  return mesh;
+}
+} // namespace
+
+vtkSmartPointer<vtkPolyData> MakeDemo(const std::string& spec, std::string& description,
+                                      std::string& error)
+{
+  std::string body;
+  if (spec == "--demo" || spec == "demo" || spec == "demo:")
+  {
+    body = std::string(DefaultDemoSpec()).substr(5);
+  }
+  else
+  {
+    body = spec.substr(5);
+  }
+  std::string shapeText = body, patternText = "fine";
+  const size_t colon = body.find(':');
+  if (colon != std::string::npos)
+  {
+    shapeText = body.substr(0, colon);
+    patternText = body.substr(colon + 1);
+  }
+  if (shapeText.empty())
+  {
+    shapeText = "ico8";
+  }
+  Pattern pattern;
+  std::string patternLabel;
+  if (!ParsePattern(patternText, pattern, patternLabel))
+  {
+    error = "unknown demo colour pattern '" + patternText +
+      "' (expected fine, sharp, smooth or constant)";
+    return nullptr;
+  }
+  std::string shape;
+  long long n = 0;
+  if (!SplitShape(shapeText, shape, n))
+  {
+    error = "bad demo shape '" + shapeText + "' (e.g. ico8, uv700, sphere1M, torus400, grid300)";
+    return nullptr;
+  }
+  std::string what;
+  vtkSmartPointer<vtkPolyData> mesh = MakeDemoShape(shapeText, shape, n, pattern, what, error);
+  if (!mesh)
+  {
+    return nullptr;
+  }
   description = what + ", " + patternLabel + " colours (" + Describe(mesh) + ")";
   return mesh;
 }
 
-vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& description,
-                                      std::string& error)
+namespace
 {
-  if (IsDemoSpec(path))
-  {
-    return MakeDemo(path, description, error);
-  }
+// Whether path names a readable file (not a directory); error says why not.
+bool CheckReadable(const std::string& path, std::string& error)
+{
   struct stat info;
   if (::stat(path.c_str(), &info) != 0)
   {
     error = "cannot open '" + path + "': " + std::strerror(errno);
-    return nullptr;
+    return false;
   }
   if (S_ISDIR(info.st_mode))
   {
     error = "'" + path + "' is a directory, not a mesh file";
-    return nullptr;
+    return false;
   }
   {
     std::ifstream probe(path, std::ios::binary);
     if (!probe)
     {
       error = "cannot open '" + path + "': " + std::strerror(errno);
-      return nullptr;
+      return false;
     }
   }
-  const std::string ext = Extension(path);
-  MessageCatcher::Scope scope;
+  return true;
+}
+
+// The mesh read by the reader of the file's extension, or null with error (the file is
+// not of its type) or problem (the reader gave no polygonal mesh).
+vtkSmartPointer<vtkPolyData> ReadByExtension(const std::string& path, const std::string& ext,
+                                             std::string& problem, std::string& error)
+{
   vtkSmartPointer<vtkPolyData> mesh;
-  std::string problem;
   if (ext == ".ply")
   {
     if (!vtkPLYReader::CanReadFile(path.c_str()))
@@ -398,6 +417,31 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& desc
   {
     error = "unsupported input type '" + (ext.empty() ? std::string("(no extension)") : ext) +
       "' for '" + path + "' (expected .ply, .vtp, .vtu, .vtk, .obj, .stl or demo:)";
+    return nullptr;
+  }
+  return mesh;
+}
+} // namespace
+
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& description,
+                                      std::string& error)
+{
+  if (IsDemoSpec(path))
+  {
+    return MakeDemo(path, description, error);
+  }
+  if (!CheckReadable(path, error))
+  {
+    return nullptr;
+  }
+  const std::string ext = Extension(path);
+  MessageCatcher::Scope scope;
+  std::string problem;
+  std::string typeError;
+  vtkSmartPointer<vtkPolyData> mesh = ReadByExtension(path, ext, problem, typeError);
+  if (!typeError.empty())
+  {
+    error = typeError;
     return nullptr;
   }
   if (!scope.Get()->Errors.empty())
