@@ -7,7 +7,7 @@
 #   BUILD_DIR=dir JOBS=n .ci/tsan.sh
 #
 # Only this project's code is instrumented; VTK runs on the main thread only in these tests.
-# Takes about 3 minutes on 2 cores from scratch.
+# Takes about 6 minutes on 2 cores from scratch.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${BUILD_DIR:-$root/build-tsan}

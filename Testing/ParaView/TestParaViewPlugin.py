@@ -7,7 +7,8 @@
 - The proxy "Color Half-Edge Decimation" exists once the plugin is loaded, every property is
   documented, and its defaults are the C++ defaults (read from a fresh
   vtkColorHalfEdgeDecimation through the colordecimation Python package, found with
-  --python-path or in the build tree named by --python-config).
+  --python-path or in the build tree named by --python-config); the proxy "Color Half-Edge
+  Decimation (Paper)" has the values SetPaperDefaults() sets, in every property.
 - On a coloured sphere made here (Sphere + Calculator writing an unsigned char RGB array) the
   filter reaches its target and every output point keeps its input colour and position.
 - A screenshot of the result (colours shown as they are, lighting on) matches the baseline.
@@ -103,10 +104,13 @@ if args.python_path:
     for name in defaults:
         check(name in settings, "proxy property %s is not a setting of the class" % name)
     # The enumerations' values are the C++ enums'.
-    enums = {"ErrorMetric": ("ErrorMetrics", {"Half-Edge Color": "HalfEdgeColor",
+    enums = {"ErrorMetric": ("ErrorMetrics", {"Attribute Quadric": "AttributeQuadric",
+                                              "Half-Edge Color": "HalfEdgeColor",
                                               "Geometry": "Geometry",
                                               "Color Quadric": "ColorQuadric"}),
-             "ColorSpace": ("ColorSpaces", {"RGB": "RGB", "CIELab": "CIELab"})}
+             "ColorSpace": ("ColorSpaces", {"RGB": "RGB", "CIELab": "CIELab"}),
+             "CollapseSchedule": ("CollapseSchedules", {"Greedy": "Greedy",
+                                                        "Batched": "Batched"})}
     for name, (enum, texts) in enums.items():
         if name not in defaults:
             continue
@@ -116,6 +120,28 @@ if args.python_path:
         cxx = {text: getattr(vtkColorHalfEdgeDecimation, value) for text, value in texts.items()
                if hasattr(vtkColorHalfEdgeDecimation, value)}
         check(entries == cxx, "%s entries %r, C++ %r" % (name, entries, cxx))
+
+    # The Paper proxy starts where SetPaperDefaults() leaves the class, in every setting.
+    paper_proxy = servermanager.filters.ColorHalfEdgeDecimationPaper()
+    check(paper_proxy.SMProxy.GetXMLLabel() == "Color Half-Edge Decimation (Paper)",
+          "Paper label is %r" % paper_proxy.SMProxy.GetXMLLabel())
+    paper = vtkColorHalfEdgeDecimation()
+    paper.SetPaperDefaults()
+    check(paper.GetErrorMetric() == vtkColorHalfEdgeDecimation.HalfEdgeColor and
+          paper.GetCollapseSchedule() == vtkColorHalfEdgeDecimation.Greedy,
+          "SetPaperDefaults() did not set HalfEdgeColor and Greedy")
+    for name in settings:
+        prop = paper_proxy.SMProxy.GetProperty(name)
+        check(prop is not None, "the Paper proxy has no property %s" % name)
+        if prop is not None:
+            value = getattr(paper, "Get" + name)()
+            proxy_value = prop.GetElement(0)
+            same = (proxy_value == value if isinstance(value, str)
+                    else abs(float(proxy_value) - float(value)) < 1e-12)
+            check(same, "Paper default of %s: proxy %r, SetPaperDefaults() %r"
+                  % (name, proxy_value, value))
+    Delete(paper_proxy)
+    del paper_proxy
 else:
     print("no colordecimation Python package: the defaults are not compared with C++")
 Delete(proxy)

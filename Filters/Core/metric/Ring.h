@@ -10,8 +10,10 @@
 #include <cstdint>
 #include <vector>
 
-/// Hot all-pairs loops get an AVX2 clone next to the baseline one, picked at load time.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+/// Hot all-pairs loops get an AVX2 clone next to the baseline one, picked at load time. Not
+/// under ThreadSanitizer: its instrumented load-time resolver would run before the runtime.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) &&       \
+  !defined(__SANITIZE_THREAD__)
 #define COLORDECIMATION_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define COLORDECIMATION_VECTOR_CLONES
