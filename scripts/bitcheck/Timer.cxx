@@ -1,0 +1,57 @@
+// Timer of two revisions (docs/REDESIGN.md): `timer MESH CONFIG REPEATS` loads the mesh
+// once, runs the filter REPEATS times with CONFIG (paper-greedy, paper-batched, defaults) and
+// prints each run's seconds (Update() only). Built like OutputHash.cxx (run.sh's compile),
+// with -DHAS_PAPER for revisions that have SetPaperDefaults(); run the two binaries in
+// alternation, e.g. `for r in 1 2 3 4 5 6 7; do base M paper-greedy 1; new M paper-greedy 1;
+// done`.
+#include "vtkColorHalfEdgeDecimation.h"
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vtkNew.h>
+#include <vtkPLYReader.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataReader.h>
+int main(int argc, char** argv)
+{
+  if (argc != 4)
+  {
+    std::fprintf(stderr, "usage: %s MESH paper-greedy|paper-batched|defaults REPEATS\n", argv[0]);
+    return 2;
+  }
+  std::string in = argv[1], config = argv[2];
+  const int repeats = atoi(argv[3]);
+  vtkSmartPointer<vtkPolyData> pd;
+  if (in.substr(in.size() - 4) == ".vtp")
+  {
+    vtkNew<vtkXMLPolyDataReader> r;
+    r->SetFileName(in.c_str());
+    r->Update();
+    pd = r->GetOutput();
+  }
+  else
+  {
+    vtkNew<vtkPLYReader> r;
+    r->SetFileName(in.c_str());
+    r->Update();
+    pd = r->GetOutput();
+  }
+  for (int i = 0; i < repeats; ++i)
+  {
+    vtkNew<vtkColorHalfEdgeDecimation> f;
+    f->SetInputData(pd);
+#ifdef HAS_PAPER
+    if (config != "defaults")
+      f->SetPaperDefaults();
+#endif
+    f->SetCollapseSchedule(config == "paper-greedy" ? 0 : 1);
+    if (getenv("CD_THREADS"))
+      f->SetNumberOfThreads(atoi(getenv("CD_THREADS")));
+    auto t0 = std::chrono::steady_clock::now();
+    f->Update();
+    printf("%s %s %.4f\n", argv[0], config.c_str(),
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    fflush(stdout);
+  }
+}
