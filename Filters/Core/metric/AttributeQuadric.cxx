@@ -1,6 +1,7 @@
 #include "metric/AttributeQuadric.h"
 
 #include "mesh/HalfEdgeMesh.h"
+#include "metric/Quadric.h"
 
 #include <algorithm>
 #include <cmath>
@@ -142,18 +143,11 @@ void AddBoundaryPlanes(const HalfEdgeMesh& mesh, int32_t f, const int32_t tri[3]
     const double* a = x[c];
     const double* b = x[(c + 1) % 3];
     const double e[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-    double m[3] = { e[1] * n[2] - e[2] * n[1], e[2] * n[0] - e[0] * n[2],
-                    e[0] * n[1] - e[1] * n[0] };
-    const double length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-    if (!(length > 0.0))
+    double m[3], weight;
+    if (!BoundaryPlane(e, n, boundaryWeight, m, weight))
     {
       continue;
     }
-    for (double& component : m)
-    {
-      component /= length;
-    }
-    const double weight = boundaryWeight * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
     quadrics[tri[c]].AddPlane(m, weight);
     quadrics[tri[(c + 1) % 3]].AddPlane(m, weight);
   }

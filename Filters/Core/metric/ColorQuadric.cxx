@@ -1,6 +1,7 @@
 #include "metric/ColorQuadric.h"
 
 #include "mesh/HalfEdgeMesh.h"
+#include "metric/Quadric.h"
 
 #include <algorithm>
 #include <cmath>
@@ -170,21 +171,14 @@ void AddBoundaryPlanes(const HalfEdgeMesh& mesh, int32_t f, const int32_t tri[3]
     const double* a = x[c];
     const double* b = x[(c + 1) % 3];
     const double e[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-    double m[N] = {
-      e[1] * n[2] - e[2] * n[1], e[2] * n[0] - e[0] * n[2], e[0] * n[1] - e[1] * n[0], 0.0, 0.0, 0.0
-    };
-    const double length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-    if (!(length > 0.0))
+    double m[N] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }; // no colour part
+    double weight;
+    if (!BoundaryPlane(e, n, boundaryWeight, m, weight))
     {
       continue;
     }
-    for (int k = 0; k < 3; ++k)
-    {
-      m[k] /= length;
-    }
     ColorQuadric constraint;
-    constraint.AddHyperplaneThroughCentre(
-      m, boundaryWeight * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]));
+    constraint.AddHyperplaneThroughCentre(m, weight);
     quadrics[tri[c]].Add(constraint);
     quadrics[tri[(c + 1) % 3]].Add(constraint);
   }

@@ -135,18 +135,11 @@ void AddFacePlanes(const HalfEdgeMesh& mesh, const float* positions, int positio
     const float* p = corner[k];
     const float* q = corner[(k + 1) % 3];
     const double e[3] = { double(q[0]) - p[0], double(q[1]) - p[1], double(q[2]) - p[2] };
-    double m[3] = { e[1] * n[2] - e[2] * n[1], e[2] * n[0] - e[0] * n[2],
-                    e[0] * n[1] - e[1] * n[0] };
-    const double ml = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-    if (!(ml > 0))
+    double m[3], w;
+    if (!BoundaryPlane(e, n, boundaryWeight, m, w))
     {
       continue;
     }
-    for (double& x : m)
-    {
-      x /= ml;
-    }
-    const double w = boundaryWeight * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
     for (const int32_t v : { tri[k], tri[(k + 1) % 3] })
     {
       if (owned(v))

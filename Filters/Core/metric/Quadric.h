@@ -11,8 +11,34 @@
 #ifndef colordecimation_Quadric_h
 #define colordecimation_Quadric_h
 
+#include <cmath>
+
 namespace colordecimation
 {
+
+/**
+ * Garland and Heckbert's boundary plane of a boundary edge e (its vector) of a triangle
+ * with unit normal n: the plane through the edge perpendicular to the triangle. Writes its
+ * unit normal m and its weight, boundaryWeight |e|^2; false when the edge is degenerate.
+ */
+inline bool BoundaryPlane(const double e[3], const double n[3], double boundaryWeight, double m[3],
+                          double& weight)
+{
+  m[0] = e[1] * n[2] - e[2] * n[1];
+  m[1] = e[2] * n[0] - e[0] * n[2];
+  m[2] = e[0] * n[1] - e[1] * n[0];
+  const double length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+  if (!(length > 0.0))
+  {
+    return false;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    m[i] /= length;
+  }
+  weight = boundaryWeight * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+  return true;
+}
 
 struct Quadric
 {
