@@ -1,10 +1,10 @@
 // Bit-exactness check of a change meant not to change behaviour (scripts/bitcheck/run.sh):
-// runs vtkColorHalfEdgeDecimation with 14 settings (every metric and option, both
-// schedules) on the given meshes and prints one FNV-1a hash of the whole output per run
-// (points, triangles, every point and cell array). Built against two revisions, the
-// printed lines must be identical. With -DHAVE_PAPER every run starts from
-// SetPaperDefaults(), so that revisions after the defaults changed run the same settings
-// as those before.
+// runs vtkColorHalfEdgeDecimation with 14 settings (the metrics HalfEdgeColor,
+// Geometry and ColorQuadric with their options, both schedules; not AttributeQuadric) on the given
+// meshes and prints one FNV-1a hash of the whole output per run (points, triangles, every point and
+// cell array). Built against two revisions, the printed lines must be identical. With -DHAVE_PAPER
+// every run starts from SetPaperDefaults(), so that revisions after the defaults changed run the
+// same settings as those before.
 #include "vtkColorHalfEdgeDecimation.h"
 #include <chrono>
 #include <cstdint>

@@ -1,7 +1,7 @@
 // Timer of two revisions (docs/REDESIGN.md): `timer MESH CONFIG REPEATS` loads the mesh
 // once, runs the filter REPEATS times with CONFIG (paper-greedy, paper-batched, defaults) and
 // prints each run's seconds (Update() only). Built like OutputHash.cxx (run.sh's compile),
-// with -DHAS_PAPER for revisions that have SetPaperDefaults(); run the two binaries in
+// with -DHAVE_PAPER for revisions that have SetPaperDefaults(); run the two binaries in
 // alternation, e.g. `for r in 1 2 3 4 5 6 7; do base M paper-greedy 1; new M paper-greedy 1;
 // done`.
 #include "vtkColorHalfEdgeDecimation.h"
@@ -41,7 +41,7 @@ int main(int argc, char** argv)
   {
     vtkNew<vtkColorHalfEdgeDecimation> f;
     f->SetInputData(pd);
-#ifdef HAS_PAPER
+#ifdef HAVE_PAPER
     if (config != "defaults")
       f->SetPaperDefaults();
 #endif
