@@ -103,8 +103,9 @@ bool ReadGeometry(vtkColorHalfEdgeDecimation* self, vtkPolyData* input, int thre
   }
   if (soup.Polygons > 0 || soup.Strips > 0)
   {
-    vtkWarningWithObjectMacro(self, << "Triangulated " << soup.Polygons << " polygons and "
-                                    << soup.Strips << " triangle strips.");
+    // Legitimate input: the output is triangles whatever the input's cells.
+    vtkDebugWithObjectMacro(self, << "Triangulated " << soup.Polygons << " polygons and "
+                                  << soup.Strips << " triangle strips.");
   }
   if (soup.Degenerate > 0 || soup.BadCells > 0)
   {
@@ -127,15 +128,26 @@ bool ReadGeometry(vtkColorHalfEdgeDecimation* self, vtkPolyData* input, int thre
 }
 
 /// The colour array (of the given association), converted to RGB in [0,1]; false (with an
-/// error) for a bad one. Without one, the decimation goes by geometry alone (with a warning).
+/// error) for a bad one. Without one, the decimation goes by geometry alone: quietly for a mesh
+/// without point scalars, with a warning when an array selected by name is not there.
 bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int association,
                 vtkIdType numPoints, InputMesh& mesh)
 {
   const char* name = array && array->GetName() ? array->GetName() : "";
   if (!array)
   {
-    vtkWarningWithObjectMacro(self, << "No colour array (point scalars or the array selected with "
-                                       "SetInputArrayToProcess): decimating by geometry alone.");
+    vtkInformation* selection = self->GetInputArrayInformation(0);
+    if (selection && selection->Has(vtkDataObject::FIELD_NAME()))
+    {
+      vtkWarningWithObjectMacro(self, << "No colour array named '"
+                                      << selection->Get(vtkDataObject::FIELD_NAME())
+                                      << "' (SetInputArrayToProcess): decimating by geometry "
+                                         "alone.");
+    }
+    else
+    {
+      vtkDebugWithObjectMacro(self, << "No point scalars: decimating by geometry alone.");
+    }
     return true;
   }
   if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
@@ -373,7 +385,10 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
     this, input, mesh, decimator,
     this->GenerateOriginalPointIds ? this->OriginalPointIdsArrayName : nullptr, output);
   this->ActualReduction = 1.0 - static_cast<double>(numOutTriangles) / numTriangles;
-  this->UpdateProgress(1.0);
+  if (!this->GetAbortExecute())
+  {
+    this->UpdateProgress(1.0); // after an abort, the progress stays where the run stopped
+  }
   return 1;
 }
 
