@@ -57,9 +57,10 @@
  *
  * Input: polygons and triangle strips are triangulated (quietly: debug output); vertices and
  * lines are dropped (with a warning). Without point scalars the mesh is decimated by its
- * geometry (a warning only when an array selected by name is missing). Empty input gives empty output. Points with NaN or infinite
- * coordinates, cell point ids out of range, or a colour array whose tuple count differs
- * from the number of points are errors: the output is then empty.
+ * geometry (a warning only when an array selected by name is missing). Empty input gives
+ * empty output. Points with NaN or infinite coordinates, cell point ids out of range, or a
+ * colour array whose tuple count differs from the number of points are errors: the output is
+ * then empty.
  *
  * @sa
  * vtkQuadricDecimation vtkDecimatePro vtkQuadricClustering
