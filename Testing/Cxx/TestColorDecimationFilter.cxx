@@ -445,15 +445,12 @@ struct SheetFigures
 SheetFigures MeasureSheet(vtkPolyData* mesh)
 {
   SheetFigures figures;
-  vtkCellArray* polys = mesh->GetPolys();
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  for (const Tri& t : GetTriangles(mesh))
   {
-    polys->GetCellAtId(c, ids);
     double p[3][3];
     for (int k = 0; k < 3; ++k)
     {
-      mesh->GetPoint(ids->GetId(k), p[k]);
+      mesh->GetPoint(t[k], p[k]);
     }
     double smallest = 180;
     for (int k = 0; k < 3; ++k)
@@ -623,9 +620,11 @@ CD_TEST_CASE(Properties)
   CD_CHECK(std::string(f->GetErrorMetricAsString()) == "AttributeQuadric");
   f->SetErrorMetric(1);
   CD_CHECK(std::string(f->GetErrorMetricAsString()) == "Geometry");
+}
 
+CD_TEST_CASE(ReexecuteOnPropertyChange)
+{
   auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
-  // Re-execution follows property changes.
   vtkNew<vtkColorHalfEdgeDecimation> g;
   g->SetInputData(mesh);
   g->SetTargetReduction(0.5);
@@ -639,7 +638,11 @@ CD_TEST_CASE(Properties)
                tenth << " triangles");
   CD_CHECK(g->GetStateMemory() > 48 * mesh->GetNumberOfPoints());
   CD_CHECK(g->GetStateMemory() < 1000 * mesh->GetNumberOfPoints());
+}
 
+CD_TEST_CASE(OriginalPointIdsOptions)
+{
+  auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
   // No ids array when asked, another name when asked.
   RunResult r =
     Decimate(mesh, 0.5, [](vtkColorHalfEdgeDecimation* h) { h->GenerateOriginalPointIdsOff(); });
@@ -672,7 +675,11 @@ CD_TEST_CASE(Properties)
     }
   }
   CD_CHECK(inRange);
+}
 
+CD_TEST_CASE(AngleAndGeometryWeightMatter)
+{
+  auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
   // MaximumNormalAngle limits how far a sphere can be decimated.
   const RunResult tight =
     Decimate(mesh, 0.99, [](vtkColorHalfEdgeDecimation* h) { h->SetMaximumNormalAngle(5); });

@@ -904,20 +904,16 @@ double StraddlingArea(vtkPolyData* mesh)
 {
   vtkDataArray* colors = mesh->GetPointData()->GetScalars();
   double straddling = 0, total = 0;
-  vtkCellArray* polys = mesh->GetPolys();
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  for (const Tri& t : GetTriangles(mesh))
   {
-    polys->GetCellAtId(c, ids);
     double p[3][3];
     for (int k = 0; k < 3; ++k)
     {
-      mesh->GetPoint(ids->GetId(k), p[k]);
+      mesh->GetPoint(t[k], p[k]);
     }
     const double area = TriangleArea3(p[0], p[1], p[2]);
-    const double r0 = colors->GetComponent(ids->GetId(0), 0);
-    const bool mixed =
-      colors->GetComponent(ids->GetId(1), 0) != r0 || colors->GetComponent(ids->GetId(2), 0) != r0;
+    const double r0 = colors->GetComponent(t[0], 0);
+    const bool mixed = colors->GetComponent(t[1], 0) != r0 || colors->GetComponent(t[2], 0) != r0;
     straddling += mixed ? area : 0;
     total += area;
   }
