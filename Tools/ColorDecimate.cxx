@@ -112,6 +112,16 @@ CLI::Option* AddFilterNumber(CLI::App& app, Options& options, const std::string&
     RuleComplaint(rule), help);
 }
 
+/// --NAME W: a weight of the cost (a number >= 0), set with `set`.
+CLI::Option* AddFilterWeight(CLI::App& app, Options& options, const std::string& name,
+                             void (vtkColorHalfEdgeDecimation::*set)(double),
+                             const std::string& help)
+{
+  return AddFilterNumber(app, options, name, 0, std::numeric_limits<double>::infinity(), set,
+                         name + " must be a number >= 0", help)
+    ->type_name("W");
+}
+
 /// --NAME WORD: a filter property given by name, set with `set`.
 CLI::Option* AddFilterChoice(CLI::App& app, Options& options, const std::string& name,
                              std::vector<std::pair<std::string, int>> choices,
@@ -192,29 +202,21 @@ void AddMetricOptions(CLI::App& app, Options& options)
                               "(default ") +
                     MetricName(d->GetErrorMetric()) + ")")
     ->type_name("M");
-  AddFilterNumber(app, options, "--color-weight", 0, std::numeric_limits<double>::infinity(),
-                  &F::SetColorWeight, "--color-weight must be a number >= 0",
+  AddFilterWeight(app, options, "--color-weight", &F::SetColorWeight,
                   "weight of colour against geometry (attribute-quadric and\n"
                   "color-quadric; default " +
-                    Number(d->GetColorWeight()) + ")")
-    ->type_name("W");
-  AddFilterNumber(app, options, "--geometry-weight", 0, std::numeric_limits<double>::infinity(),
-                  &F::SetGeometryWeight, "--geometry-weight must be a number >= 0",
+                    Number(d->GetColorWeight()) + ")");
+  AddFilterWeight(app, options, "--geometry-weight", &F::SetGeometryWeight,
                   "weight of the geometric term, >= 0 (default " + Number(d->GetGeometryWeight()) +
-                    ")")
-    ->type_name("W");
-  AddFilterNumber(app, options, "--boundary-weight", 0, std::numeric_limits<double>::infinity(),
-                  &F::SetBoundaryWeight, "--boundary-weight must be a number >= 0",
+                    ")");
+  AddFilterWeight(app, options, "--boundary-weight", &F::SetBoundaryWeight,
                   "weight of the boundary planes that keep open boundaries in place\n"
                   "(0: none; default " +
-                    Number(d->GetBoundaryWeight()) + ")")
-    ->type_name("W");
-  AddFilterNumber(app, options, "--edge-length-weight", 0, std::numeric_limits<double>::infinity(),
-                  &F::SetEdgeLengthWeight, "--edge-length-weight must be a number >= 0",
+                    Number(d->GetBoundaryWeight()) + ")");
+  AddFilterWeight(app, options, "--edge-length-weight", &F::SetEdgeLengthWeight,
                   "weight of the edge-length term that decimates flat parts evenly\n"
                   "(0: none; default " +
-                    Number(d->GetEdgeLengthWeight()) + ")")
-    ->type_name("W");
+                    Number(d->GetEdgeLengthWeight()) + ")");
   AddFilterChoice(app, options, "--color-space",
                   { { "rgb", F::RGB }, { "cielab", F::CIELab }, { "lab", F::CIELab } },
                   &F::SetColorSpace, "--color-space must be rgb or cielab",
