@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 vtkStandardNewMacro(vtkColorHalfEdgeDecimation);
@@ -45,7 +46,8 @@ bool CheckProperties(vtkColorHalfEdgeDecimation* self)
                      { "GeometryWeight", self->GetGeometryWeight() },
                      { "ColorWeight", self->GetColorWeight() },
                      { "BoundaryWeight", self->GetBoundaryWeight() },
-                     { "EdgeLengthWeight", self->GetEdgeLengthWeight() } };
+                     { "EdgeLengthWeight", self->GetEdgeLengthWeight() },
+                     { "MaximumError", self->GetMaximumError() } };
   for (const auto& property : properties)
   {
     if (!std::isfinite(property.Value))
@@ -180,6 +182,53 @@ bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int assoc
   return true;
 }
 
+/// The points to lock, from the lock array if one is selected; false (with an error) for a
+/// bad one. A name the input does not have is a warning: nothing is locked.
+bool ReadLocks(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int association,
+               vtkIdType numPoints, InputMesh& mesh)
+{
+  const char* name = self->GetLockArrayName();
+  if (!name)
+  {
+    return true;
+  }
+  if (!array)
+  {
+    vtkWarningWithObjectMacro(self, << "No lock array named '" << name
+                                    << "' (SetInputArrayToProcess(1, ...)): no point is locked.");
+    return true;
+  }
+  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  {
+    vtkErrorWithObjectMacro(self, << "The lock array '" << name
+                                  << "' is not a point-data array; output is empty.");
+    return false;
+  }
+  if (array->GetNumberOfTuples() != numPoints)
+  {
+    vtkErrorWithObjectMacro(self, << "The lock array '" << name << "' has "
+                                  << array->GetNumberOfTuples() << " tuples for " << numPoints
+                                  << " points; output is empty.");
+    return false;
+  }
+  const vtkIdType locked = colordecimation::adapter::LockPoints(array, mesh.Soup);
+  vtkDebugWithObjectMacro(self, << "Locked " << locked << " points by '" << name << "'.");
+  return true;
+}
+
+/// The triangles to leave: TargetNumberOfTriangles, or else (1 - TargetReduction) of them (the
+/// small allowance keeps a product that is an integer on paper, 1 - 0.8 being
+/// 0.19999999999999996 in double, from losing one).
+int64_t TargetTriangles(vtkColorHalfEdgeDecimation* self, vtkIdType numTriangles)
+{
+  if (self->GetTargetNumberOfTriangles() > 0)
+  {
+    return static_cast<int64_t>(self->GetTargetNumberOfTriangles());
+  }
+  return static_cast<int64_t>(
+    std::floor((1.0 - self->GetTargetReduction()) * static_cast<double>(numTriangles) + 1e-6));
+}
+
 /// Distributed data: a piece of several that came without ghosts keeps its open boundary,
 /// where it meets the others.
 void FixSharedPoints(vtkColorHalfEdgeDecimation* self, vtkInformation* outInfo, InputMesh& mesh)
@@ -224,6 +273,7 @@ colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, 
   options.PreserveBoundary = self->GetPreserveBoundary() != 0;
   options.MaximumNormalAngle = self->GetMaximumNormalAngle();
   options.GeometryWeight = self->GetGeometryWeight();
+  options.MaximumError = self->GetMaximumError();
   return options;
 }
 
@@ -251,6 +301,9 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   , BoundaryWeight(50.0)
   , EdgeLengthWeight(0.0001)
   , TargetReduction(0.9)
+  , TargetNumberOfTriangles(0)
+  , MaximumError(0.0)
+  , ActualError(0.0)
   , PreserveBoundary(false)
   , MaximumNormalAngle(90.0)
   , GeometryWeight(1.0)
@@ -323,6 +376,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->ActualReduction = 0.0;
+  this->ActualError = 0.0;
   this->NumberOfCollapses = 0;
   this->StateMemory = 0;
   this->NumberOfThreadsUsed = 0;
@@ -348,23 +402,23 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   {
     return 1;
   }
-  if (this->ErrorMetric != Geometry)
+  int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  int lockAssociation = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  vtkDataArray* colors = this->ErrorMetric != Geometry
+    ? this->GetInputArrayToProcess(0, inputVector, association)
+    : nullptr;
+  vtkDataArray* locks = this->GetLockArray(inputVector, lockAssociation);
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  if ((this->ErrorMetric != Geometry && !ReadColors(this, colors, association, numPoints, mesh)) ||
+      !ReadLocks(this, locks, lockAssociation, numPoints, mesh))
   {
-    int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
-    vtkDataArray* colors = this->GetInputArrayToProcess(0, inputVector, association);
-    if (!ReadColors(this, colors, association, input->GetNumberOfPoints(), mesh))
-    {
-      return 1;
-    }
+    return 1;
   }
   FixSharedPoints(this, outputVector->GetInformationObject(0), mesh);
 
-  // 3. Decimate. At most (1 - TargetReduction) of the triangles remain; the small allowance
-  // keeps a product that is an integer on paper (1 - 0.8 is 0.19999999999999996 in double) from
-  // losing one.
+  // 3. Decimate to the target, or until MaximumError or no valid collapse stops it.
   const auto numTriangles = static_cast<vtkIdType>(mesh.Soup.SourceCell.size());
-  const auto target = static_cast<int64_t>(
-    std::floor((1.0 - this->TargetReduction) * static_cast<double>(numTriangles) + 1e-6));
+  const int64_t target = TargetTriangles(this, numTriangles);
   this->UpdateProgress(0.05);
   colordecimation::Decimator decimator(MakeOptions(this, threads));
   const colordecimation::DecimatorStatistics stats =
@@ -376,6 +430,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
                   });
   ReportBuild(this, stats.Build);
   this->NumberOfCollapses = stats.Collapses;
+  this->ActualError = stats.ActualError;
   this->StateMemory = static_cast<vtkIdType>(stats.StateBytes);
   this->NumberOfThreadsUsed =
     std::max({ stats.Threads, stats.CollapseThreads, stats.WideCollapseThreads });
@@ -390,6 +445,27 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
     this->UpdateProgress(1.0); // after an abort, the progress stays where the run stopped
   }
   return 1;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkColorHalfEdgeDecimation::GetLockArrayName()
+{
+  vtkInformationVector* arrays = this->GetInformation()->Get(INPUT_ARRAYS_TO_PROCESS());
+  vtkInformation* selection = arrays && arrays->GetNumberOfInformationObjects() > 1
+    ? arrays->GetInformationObject(1)
+    : nullptr;
+  const char* name = selection && selection->Has(vtkDataObject::FIELD_NAME())
+    ? selection->Get(vtkDataObject::FIELD_NAME())
+    : nullptr;
+  return name && *name && std::strcmp(name, "None") != 0 ? name : nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkColorHalfEdgeDecimation::GetLockArray(vtkInformationVector** inputVector,
+                                                       int& association)
+{
+  return this->GetLockArrayName() ? this->GetInputArrayToProcess(1, inputVector, association)
+                                  : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -425,6 +501,11 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BoundaryWeight: " << this->BoundaryWeight << "\n";
   os << indent << "EdgeLengthWeight: " << this->EdgeLengthWeight << "\n";
   os << indent << "TargetReduction: " << this->TargetReduction << "\n";
+  os << indent << "TargetNumberOfTriangles: " << this->TargetNumberOfTriangles << "\n";
+  os << indent << "MaximumError: " << this->MaximumError << "\n";
+  os << indent
+     << "LockArrayName: " << (this->GetLockArrayName() ? this->GetLockArrayName() : "(none)")
+     << "\n";
   os << indent << "PreserveBoundary: " << (this->PreserveBoundary ? "On" : "Off") << "\n";
   os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";
   os << indent << "GeometryWeight: " << this->GeometryWeight << "\n";
@@ -433,6 +514,7 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OriginalPointIdsArrayName: "
      << (this->OriginalPointIdsArrayName ? this->OriginalPointIdsArrayName : "(none)") << "\n";
   os << indent << "ActualReduction: " << this->ActualReduction << "\n";
+  os << indent << "ActualError: " << this->ActualError << "\n";
   os << indent << "NumberOfCollapses: " << this->NumberOfCollapses << "\n";
   os << indent << "StateMemory: " << this->StateMemory << "\n";
   os << indent << "NumberOfThreadsUsed: " << this->NumberOfThreadsUsed << "\n";

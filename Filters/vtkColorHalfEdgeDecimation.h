@@ -32,8 +32,13 @@
  * the surviving triangles is copied too, and field data is passed.
  *
  * TargetReduction has the meaning it has in vtkQuadricDecimation: the fraction of the input
- * triangles to remove. ActualReduction reports what was achieved; it can fall short of the
- * target when no valid collapse is left.
+ * triangles to remove; TargetNumberOfTriangles, when set, asks for a triangle count instead.
+ * ActualReduction reports what was achieved; it can fall short of the target when no valid
+ * collapse is left, or when MaximumError stops the run first.
+ *
+ * Points can be locked: a point-data array selected with SetInputArrayToProcess(1, ...)
+ * (none by default) keeps every point whose tuple has a non-zero component where it is,
+ * with its triangles' corners (as ghost points are kept).
  *
  * The colour is the array selected with SetInputArrayToProcess(0, ...) (by default the
  * active point scalars): unsigned char RGB/RGBA (/255), float or double RGB (used as they are
@@ -119,7 +124,8 @@ public:
    * metric, the Greedy schedule, no boundary planes (BoundaryWeight 0), no edge-length term,
    * GeometryWeight 1, RGB colours, MaximumNormalAngle 90, PreserveBoundary off (and
    * ColorWeight 1, OptimalPlacement off, which the paper's metric does not read).
-   * TargetReduction, NumberOfThreads and the original point ids are left as they are.
+   * TargetReduction, TargetNumberOfTriangles, MaximumError, NumberOfThreads, the lock array
+   * and the original point ids are left as they are.
    */
   void SetPaperDefaults();
 
@@ -252,6 +258,47 @@ public:
   vtkGetMacro(TargetReduction, double);
   ///@}
 
+  /**
+   * The name of the point-data array that locks points, selected by name with
+   * SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name); null when
+   * none is selected (an empty name, or ParaView's "None", selects none).
+   */
+  const char* GetLockArrayName();
+
+  ///@{
+  /**
+   * Set/Get the number of triangles to leave, instead of TargetReduction. 0 (default): use
+   * TargetReduction. A count at or above the input's leaves the mesh as it is.
+   */
+  vtkSetClampMacro(TargetNumberOfTriangles, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(TargetNumberOfTriangles, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the largest geometric error a collapse may have, as a distance in the input's
+   * units: the run stops before the first collapse whose error exceeds it (with the Batched
+   * schedule: the pass that meets such a collapse is finished without it, and without any
+   * other collapse beyond the bound, then the run stops). 0 or negative (default): no bound.
+   *
+   * The geometric error of a collapse of v0 into v1 is the area-weighted root-mean-square
+   * distance from v1's position (its new one under OptimalPlacement) to the planes of the
+   * input triangles that met at v1, at v0 and at every vertex merged into them before:
+   * sqrt(sum_t A_t d_t^2 / sum_t A_t), each triangle counted once per such vertex it has
+   * (Garland and Heckbert's quadric error divided by its area, in distance units). It does not
+   * depend on ErrorMetric, which still orders the collapses.
+   */
+  vtkSetMacro(MaximumError, double);
+  vtkGetMacro(MaximumError, double);
+  ///@}
+
+  /**
+   * The largest geometric error (see MaximumError) of the collapses of the last execution, in
+   * the input's units. Only tracked under a bound: 0 when MaximumError is not set (set it to
+   * VTK_DOUBLE_MAX to measure without a bound).
+   */
+  vtkGetMacro(ActualError, double);
+
   ///@{
   /**
    * When on, vertices on the mesh boundary are never removed, so open boundaries keep their
@@ -324,6 +371,10 @@ protected:
   vtkColorHalfEdgeDecimation();
   ~vtkColorHalfEdgeDecimation() override;
 
+  /// The lock array, or null when none is selected or the input has none of that name (the
+  /// caller tells which from GetLockArrayName()).
+  vtkDataArray* GetLockArray(vtkInformationVector** inputVector, int& association);
+
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
@@ -336,6 +387,9 @@ protected:
   double BoundaryWeight;
   double EdgeLengthWeight;
   double TargetReduction;
+  vtkIdType TargetNumberOfTriangles;
+  double MaximumError;
+  double ActualError;
   vtkTypeBool PreserveBoundary;
   double MaximumNormalAngle;
   double GeometryWeight;

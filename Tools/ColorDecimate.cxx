@@ -51,6 +51,7 @@ struct Options
   bool Paper = false;
   std::vector<FilterSetting> Settings;
   std::string Array;
+  std::string LockArray;
   std::string Stats;
   std::string Snapshot;
   int SnapshotSize = 512;
@@ -268,6 +269,63 @@ void AddFilterOptions(CLI::App& app, Options& options)
     },
     FixedComplaint("--original-ids-name needs a non-empty array name"),
     "name of the array of original point ids (default vtkOriginalPointIds)")
+    ->type_name("NAME");
+}
+
+/// When the run stops (a triangle count, an error bound) and which points stay.
+void AddStopOptions(CLI::App& app, Options& options)
+{
+  AddValue(
+    app, "--target-triangles",
+    [&options](const std::string& text)
+    {
+      double count = 0;
+      const bool ok =
+        ParseNumber(text, count) && count >= 0 && count <= 9.2e18 && count == std::floor(count);
+      const auto triangles = static_cast<vtkIdType>(count);
+      if (ok)
+      {
+        options.Settings.push_back([triangles](vtkColorHalfEdgeDecimation* f)
+                                   { f->SetTargetNumberOfTriangles(triangles); });
+      }
+      return ok;
+    },
+    RuleComplaint("--target-triangles must be a whole number >= 0"),
+    "number of triangles to leave, instead of --reduction (0: use\n"
+    "--reduction)")
+    ->type_name("N");
+  AddValue(
+    app, "--max-error",
+    [&options](const std::string& text)
+    {
+      const bool percent = !text.empty() && text.back() == '%';
+      double value = 0;
+      if (!ParseNumber(percent ? text.substr(0, text.size() - 1) : text, value) || value < 0)
+      {
+        return false;
+      }
+      options.Settings.push_back(
+        [percent, value](vtkColorHalfEdgeDecimation* f)
+        {
+          vtkPolyData* input = vtkPolyData::SafeDownCast(f->GetInput());
+          f->SetMaximumError(percent && input ? value / 100.0 * input->GetLength() : value);
+        });
+      return true;
+    },
+    RuleComplaint("--max-error must be a distance >= 0, or a percentage such as 0.1%"),
+    "stop before the first collapse whose geometric error (area-weighted\n"
+    "RMS distance to the merged input planes) exceeds E, in the input's\n"
+    "units, or E% of its bounding-box diagonal (default 0: no bound)")
+    ->type_name("E");
+  AddValue(
+    app, "--lock-array",
+    [&options](const std::string& name)
+    {
+      options.LockArray = name;
+      return !name.empty();
+    },
+    FixedComplaint("--lock-array needs a non-empty array name"),
+    "point array whose non-zero values keep their points in place")
     ->type_name("NAME");
 }
 
@@ -506,10 +564,13 @@ int ReadInput(const Options& options, Input& input)
                 " points, " + std::to_string(input.Mesh->GetNumberOfCells()) +
                 " cells that are vertices or lines): nothing to decimate");
   }
-  if (!options.Array.empty() && !FindColorArray(input.Mesh, options.Array))
+  for (const std::string* name : { &options.Array, &options.LockArray })
   {
-    return Fail("'" + options.Input + "' has no point array named '" + options.Array +
-                "' (point arrays: " + PointArrayNames(input.Mesh) + ")");
+    if (!name->empty() && !FindColorArray(input.Mesh, *name))
+    {
+      return Fail("'" + options.Input + "' has no point array named '" + *name +
+                  "' (point arrays: " + PointArrayNames(input.Mesh) + ")");
+    }
   }
   if (!options.Quiet)
   {
@@ -548,6 +609,11 @@ void Configure(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkPo
   {
     filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
                                    options.Array.c_str());
+  }
+  if (!options.LockArray.empty())
+  {
+    filter->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+                                   options.LockArray.c_str());
   }
 }
 
@@ -604,19 +670,34 @@ int WriteOutput(vtkColorHalfEdgeDecimation* filter, const Options& options, Figu
 void PrintFigures(vtkColorHalfEdgeDecimation* filter, const Options& options, const Input& input,
                   const Figures& figures)
 {
-  char line[512];
-  std::snprintf(line, sizeof(line),
-                "output  %s: %lld points, %lld triangles\n"
-                "        reduction %.4f (target %.4f), %lld collapses, metric %s\n"
-                "        filter %.3f s (read %.3f s, write %.3f s), decimation state %s, "
-                "peak RSS %s\n",
-                options.Output.c_str(), figures.OutputPoints, figures.OutputTriangles,
-                filter->GetActualReduction(), filter->GetTargetReduction(),
-                static_cast<long long>(filter->GetNumberOfCollapses()),
-                MetricName(filter->GetErrorMetric()), figures.FilterSeconds, input.ReadSeconds,
-                figures.WriteSeconds, Mib(filter->GetStateMemory()).c_str(),
-                Mib(figures.PeakRss).c_str());
-  std::cout << line << std::flush;
+  char line[512], target[64];
+  if (filter->GetTargetNumberOfTriangles() > 0)
+  {
+    std::snprintf(target, sizeof(target), "%lld triangles",
+                  static_cast<long long>(filter->GetTargetNumberOfTriangles()));
+  }
+  else
+  {
+    std::snprintf(target, sizeof(target), "%.4f", filter->GetTargetReduction());
+  }
+  std::snprintf(
+    line, sizeof(line),
+    "output  %s: %lld points, %lld triangles\n"
+    "        reduction %.4f (target %s), %lld collapses, metric %s\n"
+    "        filter %.3f s (read %.3f s, write %.3f s), decimation state %s, "
+    "peak RSS %s\n",
+    options.Output.c_str(), figures.OutputPoints, figures.OutputTriangles,
+    filter->GetActualReduction(), target, static_cast<long long>(filter->GetNumberOfCollapses()),
+    MetricName(filter->GetErrorMetric()), figures.FilterSeconds, input.ReadSeconds,
+    figures.WriteSeconds, Mib(filter->GetStateMemory()).c_str(), Mib(figures.PeakRss).c_str());
+  std::cout << line;
+  if (filter->GetMaximumError() > 0)
+  {
+    std::snprintf(line, sizeof(line), "        geometric error %g (bound %g)\n",
+                  filter->GetActualError(), filter->GetMaximumError());
+    std::cout << line;
+  }
+  std::cout << std::flush;
 }
 
 /// The filter's settings as the run used them.
@@ -633,6 +714,9 @@ Json Settings(vtkColorHalfEdgeDecimation* filter)
   settings["preserve_boundary"] = filter->GetPreserveBoundary() != 0;
   settings["max_normal_angle"] = filter->GetMaximumNormalAngle();
   settings["original_ids"] = filter->GetGenerateOriginalPointIds() != 0;
+  settings["target_triangles"] = static_cast<long long>(filter->GetTargetNumberOfTriangles());
+  settings["max_error"] = filter->GetMaximumError();
+  settings["lock_array"] = filter->GetLockArrayName() ? filter->GetLockArrayName() : "";
   return settings;
 }
 
@@ -650,6 +734,7 @@ Json Statistics(vtkColorHalfEdgeDecimation* filter, const Options& options, cons
   stats["paper"] = options.Paper;
   stats["settings"] = Settings(filter);
   stats["reduction"] = filter->GetActualReduction();
+  stats["actual_error"] = filter->GetActualError();
   stats["input_points"] = input.Points;
   stats["input_triangles"] = input.Triangles;
   stats["output_points"] = figures.OutputPoints;
@@ -737,6 +822,7 @@ int main(int argc, char* argv[])
   AddInputOptions(app, options);
   AddMetricOptions(app, options);
   AddFilterOptions(app, options);
+  AddStopOptions(app, options);
   AddScheduleOptions(app, options);
   AddOutputOptions(app, options);
   app.footer(Footer());

@@ -373,6 +373,28 @@ bool GatherPoints(vtkPoints* points, Buffer<double>& xyz, int threads)
                      });
 }
 
+vtkIdType LockPoints(vtkDataArray* locks, TriangleSoup& soup)
+{
+  vtkIdType locked = 0;
+  const int components = locks->GetNumberOfComponents();
+  const vtkIdType n = std::min<vtkIdType>(locks->GetNumberOfTuples(), soup.Fixed.size());
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    bool lock = false;
+    for (int k = 0; k < components && !lock; ++k)
+    {
+      lock = locks->GetComponent(i, k) != 0.0; // NaN != 0 too
+    }
+    if (lock && !soup.Fixed[i])
+    {
+      soup.Fixed[i] = 1;
+      soup.HasFixed = true;
+      ++locked;
+    }
+  }
+  return locked;
+}
+
 vtkIdType ConvertColors(vtkDataArray* array, std::vector<float>& rgb, double mapping[2])
 {
   const vtkIdType n = array->GetNumberOfTuples();

@@ -74,6 +74,12 @@ void ExtractTriangles(vtkPolyData* input, TriangleSoup& soup, int threads);
 vtkIdType FixOpenBoundary(TriangleSoup& soup);
 
 /**
+ * Fixes every point whose tuple of `locks` (one per point) has a non-zero component (NaN
+ * counts as non-zero). Returns the number of points it fixed that were not fixed already.
+ */
+vtkIdType LockPoints(vtkDataArray* locks, TriangleSoup& soup);
+
+/**
  * RGB in [0,1], 3 floats per point (section 2). Returns the number of tuples holding a NaN or
  * infinite value (measured as 0, carried through unchanged). The mapping used is
  * (x - offset) * scale; it is returned in `mapping` (offset, scale).

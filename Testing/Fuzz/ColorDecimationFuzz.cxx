@@ -286,7 +286,35 @@ struct Settings
   double NormalAngle = 90.0;
   double GeometryWeight = 1.0;
   int Schedule = 0;
+  double MaximumError = 0.0;
+  vtkIdType TargetTriangles = 0;
+  const char* LockName = nullptr;
 };
+
+/// The trailing controls byte: MaximumError, TargetNumberOfTriangles and a lock array.
+void ReadControls(ByteReader& in, vtkPolyData* mesh, Settings& settings)
+{
+  const uint8_t controls = in.Byte();
+  static const double bounds[8] = { 0.0, 1e-9, 1e-3, 0.1, 10.0, std::nan(""), -1.0, HUGE_VAL };
+  static const vtkIdType targets[4] = { 0, 1, 5, VTK_ID_MAX };
+  settings.MaximumError = bounds[controls & 7];
+  settings.TargetTriangles = targets[(controls >> 3) & 3];
+  const int lock = (controls >> 5) & 3; // 0 none, 1 every third point, 2 missing, 3 short
+  if (lock == 0)
+  {
+    return;
+  }
+  settings.LockName = lock == 2 ? "NoSuchLock" : "Lock";
+  const vtkIdType numPoints = mesh->GetNumberOfPoints();
+  vtkNew<vtkUnsignedCharArray> locks;
+  locks->SetName("Lock");
+  locks->SetNumberOfValues(lock == 3 ? numPoints / 2 : numPoints);
+  for (vtkIdType i = 0; i < locks->GetNumberOfValues(); ++i)
+  {
+    locks->SetValue(i, i % 3 == 0 ? 1 : 0);
+  }
+  mesh->GetPointData()->AddArray(locks);
+}
 
 vtkSmartPointer<vtkPolyData> Build(ByteReader& in, Settings& settings)
 {
@@ -432,6 +460,7 @@ vtkSmartPointer<vtkPolyData> Build(ByteReader& in, Settings& settings)
     stale->FillValue(-7);
     mesh->GetPointData()->AddArray(stale);
   }
+  ReadControls(in, mesh, settings);
   return mesh;
 }
 
@@ -451,6 +480,13 @@ colordecimation::testing::RunResult Decimate(vtkPolyData* mesh, const Settings& 
       filter->SetGenerateOriginalPointIds(settings.GenerateIds);
       filter->SetMaximumNormalAngle(settings.NormalAngle);
       filter->SetGeometryWeight(settings.GeometryWeight);
+      filter->SetMaximumError(settings.MaximumError);
+      filter->SetTargetNumberOfTriangles(settings.TargetTriangles);
+      if (settings.LockName)
+      {
+        filter->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+                                       settings.LockName);
+      }
       if (settings.ColorByName)
       {
         filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS,

@@ -35,6 +35,9 @@
  *     byte (% 8: 0-4 one per point, 5 one fewer, 6 one more, 7 none), then the values
  *     (raw: sizeof(T) bytes each; otherwise one byte each, /255 for floating types)
  *  *  ghost values: one byte per cell, then one per point (when enabled)
+ *  *  controls: bits 0-2 MaximumError (0, 1e-9, 1e-3, 0.1, 10, NaN, -1, inf), 3-4
+ *     TargetNumberOfTriangles (0, 1, 5, VTK_ID_MAX), 5-6 lock array (none; "Lock" locking every
+ *     third point; a name the input lacks; "Lock" with half the tuples)
  * @endverbatim
  *
  * With the environment variable COLORDECIMATION_FUZZ_CONSISTENT_ARRAYS set, the colour array

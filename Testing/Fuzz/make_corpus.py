@@ -53,7 +53,7 @@ def encode(points, triangles, *, metric=0, preserve=False, no_ids=False, double=
            by_name=False, extra=False, stale_ids=False, cell_ghosts=None, point_ghosts=None,
            unnamed=False, target=225, angle=125, weight=0, scale=0, polys=(), strips=(),
            verts=(), lines=(), color_kind=2, components=3, raw=False, count_code=0,
-           colors=None):
+           colors=None, controls=None):
     """Encode one input. `colors` is a flat list of values (bytes unless raw)."""
     options = (metric & 3) | (4 if preserve else 0) | (8 if no_ids else 0) | \
         (16 if double else 0) | (32 if by_name else 0) | (64 if extra else 0) | \
@@ -85,6 +85,8 @@ def encode(points, triangles, *, metric=0, preserve=False, no_ids=False, double=
         out += bytes(cell_ghosts)
     if point_ghosts is not None:
         out += bytes(point_ghosts)
+    if controls is not None:
+        out.append(controls)
     return bytes(out)
 
 
@@ -184,6 +186,14 @@ def seeds():
     s["flat_grid_preserve_boundary"] = encode(g_p, g_t, preserve=True, target=250,
                                               colors=colors_for(g_p))
     s["flat_grid_constant_color"] = encode(g_p, g_t, colors=[90] * (3 * len(g_p)))
+    # The controls byte: MaximumError 1e-3 with a lock array; a triangle target of 5 with a
+    # missing lock array; MaximumError NaN; a short lock array.
+    s["icosphere1_max_error_locks"] = encode(ico_p, ico_t, colors=colors_for(ico_p),
+                                             controls=2 | (1 << 5))
+    s["flat_grid_target5_missing_lock"] = encode(g_p, g_t, colors=colors_for(g_p),
+                                                 controls=(2 << 3) | (2 << 5))
+    s["icosphere1_max_error_nan"] = encode(ico_p, ico_t, colors=colors_for(ico_p), controls=5)
+    s["icosphere1_short_lock"] = encode(ico_p, ico_t, colors=colors_for(ico_p), controls=3 << 5)
     w_p, w_t = grid(10, 8)
     s["waved_grid_extra_arrays"] = encode(w_p, w_t, extra=True, stale_ids=True,
                                           colors=colors_for(w_p))

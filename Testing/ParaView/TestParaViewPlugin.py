@@ -58,7 +58,8 @@ menu = hints.FindNestedElementByName("ShowInMenu") if hints else None
 check(menu is not None and menu.GetAttribute("category"), "no ShowInMenu category")
 names = ["SelectInputScalars", "TargetReduction", "ErrorMetric", "PreserveBoundary",
          "MaximumNormalAngle", "GeometryWeight", "GenerateOriginalPointIds",
-         "OriginalPointIdsArrayName"]
+         "OriginalPointIdsArrayName", "TargetNumberOfTriangles", "MaximumError", "ActualError",
+         "SelectLockArray"]
 for name in names + ["Input"]:
     prop = sm.GetProperty(name)
     check(prop is not None, "no property " + name)
@@ -73,13 +74,18 @@ it.Begin()
 while not it.IsAtEnd():
     name = it.GetKey()
     prop = it.GetProperty()
-    if name not in ("Input", "SelectInputScalars") and not prop.GetInformationOnly():
+    if name not in ("Input", "SelectInputScalars", "SelectLockArray") and \
+            not prop.GetInformationOnly():
         defaults[name] = prop.GetElement(0)
         doc = prop.GetDocumentation()
         check(doc is not None and len(doc.GetDescription().split()) >= 5,
               "property %s is not documented" % name)
     it.Next()
 print("proxy defaults:", defaults)
+lock_property = sm.GetProperty("SelectLockArray")
+check(lock_property.GetElement(0) == "1" and lock_property.GetElement(4) == "None",
+      "the lock array selects input array 1, 'None' by default (%r, %r)"
+      % (lock_property.GetElement(0), lock_property.GetElement(4)))
 if args.python_path:
     sys.path.insert(0, args.python_path)
     from colordecimation import vtkColorHalfEdgeDecimation
@@ -190,6 +196,31 @@ n_geometry = decimation.GetDataInformation().GetNumberOfCells()
 check(target - 1 <= n_geometry <= target, "Geometry metric: %d triangles" % n_geometry)
 decimation.ErrorMetric = "Attribute Quadric"  # back to the defaults for the screenshot
 decimation.UpdatePipeline()
+
+# The lock array, the triangle target and the error bound: every locked point stays.
+with_lock = Calculator(Input=colors, ResultArrayName="Lock", Function="coordsZ>0.9")
+locked = ColorHalfEdgeDecimation(Input=with_lock)
+check(list(locked.LockArray) == ["POINTS", "None"],
+      "with an input, the lock array is still None: %r" % list(locked.LockArray))
+locked.Colors = ["POINTS", "RGB"]
+locked.LockArray = ["POINTS", "Lock"]
+locked.TargetNumberOfTriangles = 4000
+locked.MaximumError = 1e9
+locked.UpdatePipeline()
+locked.UpdatePropertyInformation()
+lock_in = servermanager.Fetch(with_lock)
+lock_out = servermanager.Fetch(locked)
+flags = lock_in.GetPointData().GetArray("Lock")
+kept = set(lock_out.GetPointData().GetArray("vtkOriginalPointIds").GetValue(i)
+           for i in range(lock_out.GetNumberOfPoints()))
+lost = [i for i in range(lock_in.GetNumberOfPoints()) if flags.GetValue(i) != 0 and i not in kept]
+print("lock: %d output triangles, %d locked points lost, ActualError %g"
+      % (lock_out.GetNumberOfPolys(), len(lost), locked.GetProperty("ActualError").GetElement(0)))
+check(not lost, "%d locked points were removed" % len(lost))
+check(3999 <= lock_out.GetNumberOfPolys() <= 4000, "TargetNumberOfTriangles 4000 not met")
+check(locked.GetProperty("ActualError").GetElement(0) > 0, "ActualError not reported")
+Delete(locked)
+Delete(with_lock)
 
 # --- Screenshot against the baseline -----------------------------------------------------
 view = CreateView("RenderView")

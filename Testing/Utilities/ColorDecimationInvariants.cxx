@@ -57,6 +57,61 @@ void CheckStatistics(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter, vtk
   {
     broken.push_back(Say("ActualReduction = ", actual));
   }
+  const double error = filter->GetActualError(), bound = filter->GetMaximumError();
+  if (!(error >= 0.0) || (bound > 0.0 && error > bound * (1.0 + 1e-9)))
+  {
+    broken.push_back(Say("ActualError = ", error, " with MaximumError ", bound));
+  }
+}
+
+/// Every point the lock array locks is in the output (when the run went through).
+void CheckLocks(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter, vtkPolyData* output,
+                bool filterReportedError, Broken& broken)
+{
+  const char* name = filter->GetLockArrayName();
+  vtkDataArray* locks = name ? input->GetPointData()->GetArray(name) : nullptr;
+  const char* idsName = filter->GetOriginalPointIdsArrayName();
+  vtkIdTypeArray* original = idsName && filter->GetGenerateOriginalPointIds()
+    ? vtkIdTypeArray::SafeDownCast(output->GetPointData()->GetAbstractArray(idsName))
+    : nullptr;
+  if (!locks || !original || filterReportedError ||
+      locks->GetNumberOfTuples() != input->GetNumberOfPoints())
+  {
+    return;
+  }
+  std::vector<char> kept(static_cast<size_t>(input->GetNumberOfPoints()), 0);
+  for (vtkIdType i = 0; i < original->GetNumberOfTuples(); ++i)
+  {
+    const vtkIdType id = original->GetValue(i);
+    if (id >= 0 && id < input->GetNumberOfPoints())
+    {
+      kept[id] = 1;
+    }
+  }
+  // Only points some valid triangle uses can be kept (the others are not output at all).
+  std::vector<char> used(kept.size(), 0);
+  for (const Tri& t : GetTriangles(input))
+  {
+    const bool valid = t[0] != t[1] && t[1] != t[2] && t[0] != t[2];
+    for (const vtkIdType v : t)
+    {
+      used[v] = valid || used[v];
+    }
+  }
+  long long lost = 0;
+  for (vtkIdType i = 0; i < locks->GetNumberOfTuples(); ++i)
+  {
+    bool locked = false;
+    for (int k = 0; k < locks->GetNumberOfComponents(); ++k)
+    {
+      locked = locked || locks->GetComponent(i, k) != 0.0;
+    }
+    lost += locked && used[i] && !kept[i] ? 1 : 0;
+  }
+  if (lost > 0)
+  {
+    broken.push_back(Say(lost, " points locked by '", name, "' are not in the output"));
+  }
 }
 
 /// Triangles only, with valid and distinct ids; finite points.
@@ -291,6 +346,7 @@ std::vector<std::string> CheckInvariants(vtkPolyData* input, vtkColorHalfEdgeDec
   CheckCellsAndPoints(output, broken);
   CheckTupleCounts(output, broken);
   CheckOriginalIds(input, filter, output, broken);
+  CheckLocks(input, filter, output, filterReportedError, broken);
 
   // Orientation: an oriented soup stays one.
   const std::vector<Tri> inputTriangles = GetTriangles(input);

@@ -18,7 +18,9 @@
  *   with the ColorQuadric metric's OptimalPlacement, the coordinates and the colour array,
  *   which then move);
  * - an error reported by the filter leaves the output empty;
- * - NumberOfCollapses <= number of input points; ActualReduction in [0, 1];
+ * - NumberOfCollapses <= number of input points; ActualReduction in [0, 1]; ActualError >= 0,
+ *   and at most MaximumError when that is set;
+ * - every point of a triangle that the lock array (GetLockArrayName) locks is in the output;
  * - when the input triangles form an oriented manifold-like soup (each directed edge used at
  *   most once, no two triangles on the same three points: IsOrientedSoup), so does the output.
  */

@@ -52,6 +52,8 @@ void EngineBase::SetUp(const DecimatorInput& input, bool useColor, DecimatorStat
   CollapseRules::ComputeReferenceNormals(this->Mesh, this->Positions(), HotStride,
                                          this->ReferenceNormals,
                                          this->ThreadCount(size_t(input.NumberOfTriangles)));
+  this->Errors.Initialize(this->Mesh, this->Positions(), HotStride,
+                          this->Options.MaximumError * this->Geometry.Scale);
   this->ThreadsUsed = 1;
 }
 
@@ -95,6 +97,7 @@ void EngineBase::BuildMesh(const DecimatorInput& input, DecimatorStatistics& sta
 void EngineBase::Finish(bool keepHot)
 {
   this->ReferenceNormals = Buffer<float>();
+  this->Errors.Release();
   if (this->Order.Empty())
   {
     return;

@@ -27,11 +27,13 @@
 #include "metric/HalfEdgeColor.h"
 #include "metric/Ring.h"
 #include "rules/CollapseRules.h"
+#include "rules/ErrorBound.h"
 #include "util/Buffer.h"
 #include "util/Parallel.h"
 #include "util/Prefetch.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -82,6 +84,13 @@ public:
   int GetThreadsUsed() const { return this->ThreadsUsed; }
   /// The current colour of v as RGB in [0,1].
   void GetOutputColor(int32_t v, double rgb[3]) const;
+  /// Whether a MaximumError bound applies.
+  bool HasErrorBound() const { return this->Errors.IsEnabled(); }
+  /// A squared error of ErrorBound (frame units) as a distance in the input's units.
+  double ToInputDistance(double squaredError) const
+  {
+    return std::sqrt(squaredError) / this->Geometry.Scale;
+  }
 
   // What the facade (Decimator) asks of the metric after a run.
   /// The cost of v0 -> v1 on the current mesh (no legality check), or a negative value if
@@ -134,6 +143,7 @@ protected:
   bool Renumbered = false; ///< the run works under SpatialOrder's ids
   SpatialOrder Order;
   Buffer<float> ReferenceNormals; ///< the input normal of every face slot (CollapseRules)
+  ErrorBound Errors;              ///< the planes of MaximumError (empty without a bound)
   mutable int ThreadsUsed = 1;
 
 private:
@@ -220,6 +230,12 @@ public:
 
   /// The rules' verdict on v0 -> v1; `moves`: the metric's placement moves v1 (into place).
   bool IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, Placement& place, Workspace& ws) const;
+  /**
+   * Whether v0 -> v1 (checked legal, with its `moves` and `place`) keeps within MaximumError;
+   * its squared error, in the frame's units, into squaredError. Only with HasErrorBound().
+   */
+  bool IsWithinErrorBound(int32_t v0, int32_t v1, bool moves, const Placement& place,
+                          double& squaredError) const;
   /// Merge v0's state into v1 and collapse (ws.FormerNeighbors: v0's neighbours before); the
   /// number of faces removed (`counted`: the mesh counts them itself; see HalfEdgeMesh).
   int ApplyCollapse(int32_t v0, int32_t v1, bool moves, const Placement& place, Workspace& ws,

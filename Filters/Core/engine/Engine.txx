@@ -109,8 +109,8 @@ Choice Engine<Metric>::CheapestLegal(int32_t v0, Workspace& ws) const
 }
 
 template <typename Metric>
-void Engine<Metric>::EvaluateAll(const int32_t* vertices, size_t count, bool exact,
-                                 bool allowBound, double* keys)
+void Engine<Metric>::EvaluateAll(const int32_t* vertices, size_t count, bool exact, bool allowBound,
+                                 double* keys)
 {
   // Each evaluation reads the mesh and the per-vertex state, and writes its own vertex's
   // entries only: the vertices can be shared among threads in any way, with the same result.
@@ -196,10 +196,34 @@ bool Engine<Metric>::IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, Placem
 }
 
 template <typename Metric>
+bool Engine<Metric>::IsWithinErrorBound(int32_t v0, int32_t v1, bool moves, const Placement& place,
+                                        double& squaredError) const
+{
+  double x[3];
+  if (moves)
+  {
+    Placement again = place;
+    this->TheMetric.Place(v0, v1, again, x);
+  }
+  else
+  {
+    const float* p = this->Hot[v1].P;
+    std::copy(p, p + 3, x);
+  }
+  squaredError = this->Errors.SquaredError(v0, v1, x);
+  const double bound = this->Errors.GetBound();
+  return squaredError <= bound * bound;
+}
+
+template <typename Metric>
 int Engine<Metric>::ApplyCollapse(int32_t v0, int32_t v1, bool moves, const Placement& place,
                                   Workspace& ws, bool counted)
 {
   this->TheMetric.Merge(v0, v1, moves, place);
+  if (this->Errors.IsEnabled())
+  {
+    this->Errors.Merge(v0, v1);
+  }
   ws.FormerNeighbors.clear();
   this->Mesh.ForEachNeighbor(v0, [&ws](int32_t u) { ws.FormerNeighbors.push_back(u); });
   this->Best[v0] = -1;

@@ -81,6 +81,9 @@ struct DecimatorOptions
   /// Threads of the parallel phases; 0: one per hardware thread. The result is the same for
   /// any number.
   int NumberOfThreads = 0;
+  /// Stop before the first collapse whose geometric error (rules/ErrorBound.h) exceeds this
+  /// distance, in the input's units (section 14); <= 0: no bound.
+  double MaximumError = 0.0;
 };
 
 struct DecimatorInput
@@ -108,6 +111,10 @@ struct DecimatorStatistics
   int64_t StaleBlockFlags = 0; ///< Batched with VerifyBlockFlags: should be 0
   double MeanEdgeLength = 0;   ///< of the input, in its own units (the frame's unit)
   bool Aborted = false;
+  /// With MaximumError: the largest geometric error of the collapses made (input units), and
+  /// whether the run stopped at the bound.
+  double ActualError = 0;
+  bool ErrorBoundReached = false;
   size_t StateBytes = 0;           ///< bytes held by the decimator's arrays
   size_t MetricBytesPerVertex = 0; ///< the metric's per-vertex state
 };

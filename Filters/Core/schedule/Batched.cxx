@@ -29,6 +29,8 @@ struct Lane
   std::vector<Candidate> Deferred; ///< candidates reaching out of their block
   Buffer<Candidate> SortRoom;      ///< scratch of SortByKey
   int64_t Collapses = 0, Rejections = 0, RemovedFaces = 0;
+  double LargestSquaredError = 0; ///< under MaximumError: of the collapses made
+  bool Exceeded = false;          ///< a candidate beyond MaximumError was skipped
   void ClearPass()
   {
     this->Rejected.clear();
@@ -72,6 +74,10 @@ public:
       {
         stats.StaleBlockFlags += this->Blocks.CountStaleFlags(mesh, this->FlagThreads());
       }
+      if (stats.ErrorBoundReached)
+      {
+        break; // the pass that met MaximumError is the last
+      }
       this->Recost(pass);
       if (progress)
       {
@@ -81,6 +87,7 @@ public:
     }
     stats.CollapseThreads = this->CollapseThreadsUsed;
     stats.WideCollapseThreads = this->WideCollapseThreadsUsed;
+    stats.ActualError = this->E.ToInputDistance(this->LargestSquaredError);
   }
 
 private:
@@ -128,6 +135,7 @@ private:
   std::vector<int32_t> Live, Kept;
   int CollapseThreadsUsed = 1;
   int WideCollapseThreadsUsed = 1;
+  double LargestSquaredError = 0; ///< of the collapses made, under MaximumError
 };
 
 template <typename Metric>
@@ -361,6 +369,16 @@ void BatchedSchedule<Metric>::TryCollapse(int32_t v0, int32_t v1, int32_t pass, 
     ++lane.Rejections;
     return;
   }
+  double squared = 0;
+  if (this->E.HasErrorBound())
+  {
+    if (!this->E.IsWithinErrorBound(v0, v1, moves, place, squared))
+    {
+      lane.Exceeded = true; // skipped, and the run stops after this pass
+      return;
+    }
+    lane.LargestSquaredError = std::max(lane.LargestSquaredError, squared);
+  }
   const int removed = this->E.ApplyCollapse(v0, v1, moves, place, ws, counted);
   lane.RemovedFaces += counted ? 0 : removed; // what the mesh has not counted itself
   ++lane.Collapses;
@@ -374,6 +392,8 @@ void BatchedSchedule<Metric>::Gather(Lane& lane, DecimatorStatistics& stats)
   this->Deferred.insert(this->Deferred.end(), lane.Deferred.begin(), lane.Deferred.end());
   stats.Collapses += lane.Collapses;
   stats.RejectedPops += lane.Rejections;
+  stats.ErrorBoundReached = stats.ErrorBoundReached || lane.Exceeded;
+  this->LargestSquaredError = std::max(this->LargestSquaredError, lane.LargestSquaredError);
   this->E.GetMesh().RemoveLiveFaces(lane.RemovedFaces);
 }
 

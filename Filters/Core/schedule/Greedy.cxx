@@ -31,7 +31,8 @@ public:
     const int64_t startFaces = this->E.GetMesh().GetNumberOfLiveFaces();
     const int64_t toRemove = std::max<int64_t>(startFaces - stats.TargetTriangles, 1);
     int64_t nextReport = 0;
-    while (this->E.GetMesh().GetNumberOfLiveFaces() > stats.TargetTriangles && !this->Heap.Empty())
+    while (this->E.GetMesh().GetNumberOfLiveFaces() > stats.TargetTriangles &&
+           !this->Heap.Empty() && !stats.ErrorBoundReached)
     {
       if (!this->Step(stats))
       {
@@ -49,6 +50,7 @@ public:
         }
       }
     }
+    stats.ActualError = this->E.ToInputDistance(this->LargestSquaredError);
   }
 
 private:
@@ -96,10 +98,27 @@ private:
       this->Requeue(v0, true); // over its legal collapses only
       return false;
     }
+    if (this->E.HasErrorBound() && !this->KeepsWithinBound(v0, v1, moves, place))
+    {
+      stats.ErrorBoundReached = true; // the run stops before this collapse
+      return false;
+    }
     this->Heap.Pop();
     this->E.ApplyCollapse(v0, v1, moves, place, ws, true);
     ++stats.Collapses;
     this->E.ForEachAffected(v1, ws.FormerNeighbors, [this](int32_t u) { this->Update(u); });
+    return true;
+  }
+
+  /// Whether v0 -> v1 keeps within MaximumError; the largest error so far is kept.
+  bool KeepsWithinBound(int32_t v0, int32_t v1, bool moves, const typename Metric::Placement& place)
+  {
+    double squared = 0;
+    if (!this->E.IsWithinErrorBound(v0, v1, moves, place, squared))
+    {
+      return false;
+    }
+    this->LargestSquaredError = std::max(this->LargestSquaredError, squared);
     return true;
   }
 
@@ -143,6 +162,7 @@ private:
 
   Engine<Metric>& E;
   VertexHeap Heap;
+  double LargestSquaredError = 0; ///< of the collapses made, under MaximumError
 };
 
 template <typename Metric>

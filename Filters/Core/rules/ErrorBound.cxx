@@ -1,0 +1,103 @@
+#include "rules/ErrorBound.h"
+
+#include "mesh/HalfEdgeMesh.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace colordecimation
+{
+
+void ErrorBound::Initialize(const HalfEdgeMesh& mesh, const float* positions, int stride,
+                            double bound)
+{
+  this->Bound = bound > 0.0 ? bound : 0.0;
+  this->Planes = Buffer<PlaneSum>();
+  if (!this->IsEnabled())
+  {
+    return;
+  }
+  this->Planes.resize(static_cast<size_t>(mesh.GetNumberOfVertices()), PlaneSum{});
+  for (int32_t f = 0; f < mesh.GetNumberOfFaceSlots(); ++f)
+  {
+    if (!mesh.IsFaceAlive(f))
+    {
+      continue;
+    }
+    int32_t ids[3];
+    mesh.GetFace(f, ids);
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      std::copy(positions + size_t(stride) * ids[k], positions + size_t(stride) * ids[k] + 3, p[k]);
+    }
+    const double e1[3] = { p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2] };
+    const double e2[3] = { p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2] };
+    double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                    e1[0] * e2[1] - e1[1] * e2[0] };
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(length > 0.0))
+    {
+      continue; // no plane
+    }
+    for (double& c : n)
+    {
+      c /= length;
+    }
+    const double area = 0.5 * length;
+    const double d = -(n[0] * p[0][0] + n[1] * p[0][1] + n[2] * p[0][2]);
+    for (const int32_t v : ids)
+    {
+      PlaneSum& q = this->Planes[v];
+      q.A[0] += area * n[0] * n[0];
+      q.A[1] += area * n[0] * n[1];
+      q.A[2] += area * n[0] * n[2];
+      q.A[3] += area * n[1] * n[1];
+      q.A[4] += area * n[1] * n[2];
+      q.A[5] += area * n[2] * n[2];
+      for (int k = 0; k < 3; ++k)
+      {
+        q.B[k] += area * d * n[k];
+      }
+      q.C += area * d * d;
+      q.Area += area;
+    }
+  }
+}
+
+double ErrorBound::SquaredError(int32_t v0, int32_t v1, const double x[3]) const
+{
+  const PlaneSum& q0 = this->Planes[v0];
+  const PlaneSum& q1 = this->Planes[v1];
+  double a[6];
+  for (int k = 0; k < 6; ++k)
+  {
+    a[k] = q0.A[k] + q1.A[k];
+  }
+  const double ax0 = a[0] * x[0] + a[1] * x[1] + a[2] * x[2];
+  const double ax1 = a[1] * x[0] + a[3] * x[1] + a[4] * x[2];
+  const double ax2 = a[2] * x[0] + a[4] * x[1] + a[5] * x[2];
+  const double q = x[0] * ax0 + x[1] * ax1 + x[2] * ax2 +
+    2.0 * ((q0.B[0] + q1.B[0]) * x[0] + (q0.B[1] + q1.B[1]) * x[1] + (q0.B[2] + q1.B[2]) * x[2]) +
+    q0.C + q1.C;
+  const double area = q0.Area + q1.Area;
+  return area > 0.0 ? std::max(q, 0.0) / area : 0.0;
+}
+
+void ErrorBound::Merge(int32_t v0, int32_t v1)
+{
+  PlaneSum& q1 = this->Planes[v1];
+  const PlaneSum& q0 = this->Planes[v0];
+  for (int k = 0; k < 6; ++k)
+  {
+    q1.A[k] += q0.A[k];
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    q1.B[k] += q0.B[k];
+  }
+  q1.C += q0.C;
+  q1.Area += q0.Area;
+}
+
+} // namespace colordecimation

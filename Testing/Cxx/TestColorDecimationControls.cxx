@@ -1,0 +1,313 @@
+// Tests of the stop and lock controls of vtkColorHalfEdgeDecimation: TargetNumberOfTriangles,
+// MaximumError with ActualError (on hand-built meshes whose error is computed by hand), and the
+// lock array (SetInputArrayToProcess(1, ...)) with its bad inputs.
+#include "ColorDecimationTestUtilities.h"
+
+#include "ColorDecimationMeshes.h"
+#include "vtkColorHalfEdgeDecimation.h"
+
+#include "vtkCellData.h"
+#include "vtkDataObject.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <set>
+
+using namespace colordecimation;
+using namespace colordecimation::testing;
+using meshes::Pattern;
+
+namespace
+{
+constexpr int Schedules[] = { vtkColorHalfEdgeDecimation::Greedy,
+                              vtkColorHalfEdgeDecimation::Batched };
+
+/// Select `name` as the lock array (point data).
+void SelectLocks(vtkColorHalfEdgeDecimation* f, const char* name)
+{
+  f->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name);
+}
+
+/**
+ * A square pyramid of height h over the square (+-1, 0, 0), (0, +-1, 0): four triangles around
+ * the apex (point 4), with `scale` and `shift` applied to every coordinate. With
+ * PreserveBoundary on, the only possible collapse is the apex into a base point.
+ */
+vtkSmartPointer<vtkPolyData> Pyramid(double h, double scale = 1.0, double shift = 0.0)
+{
+  std::vector<double> xyz = { 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0, 0, 0, h };
+  for (double& c : xyz)
+  {
+    c = c * scale + shift;
+  }
+  return meshes::FromTriangles(xyz, { 4, 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0 });
+}
+
+/**
+ * The error of collapsing the pyramid's apex into a base point, by hand: the apex holds its
+ * four faces (area A each), the base point two of them, on which it lies. The face planes
+ * are (+-x +-y + z/h = 1) / s with s = sqrt(2 + 1/h^2); from (1, 0, 0) the two far ones are at
+ * distance 2/s. So Q = A (4 + 4) / s^2 over the area 6A: error sqrt(4/3) / s.
+ */
+double PyramidError(double h)
+{
+  return std::sqrt(4.0 / 3.0) / std::sqrt(2.0 + 1.0 / (h * h));
+}
+
+/// How many triangles use each point.
+std::map<vtkIdType, int> TrianglesPerPoint(const std::vector<Tri>& triangles)
+{
+  std::map<vtkIdType, int> count;
+  for (const Tri& t : triangles)
+  {
+    for (const vtkIdType v : t)
+    {
+      ++count[v];
+    }
+  }
+  return count;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+CD_TEST_CASE(TargetNumberOfTriangles)
+{
+  // A closed mesh loses exactly two triangles a collapse: 1280 -> 600 for a target of 601,
+  // whatever TargetReduction says.
+  auto sphere = meshes::Icosphere(3, Pattern::SharpRegions);
+  CD_CHECK(sphere->GetNumberOfPolys() == 1280);
+  for (const int schedule : Schedules)
+  {
+    const RunResult r = Decimate(sphere, 0.1,
+                                 [schedule](vtkColorHalfEdgeDecimation* f)
+                                 {
+                                   f->SetCollapseSchedule(schedule);
+                                   f->SetTargetNumberOfTriangles(601);
+                                 });
+    CD_CHECK(r.Errors == 0 && r.Warnings == 0);
+    CD_CHECK(r.Output->GetNumberOfPolys() == 600);
+    CD_CHECK(r.Collapses == 340);
+    // A count at or above the input's leaves the mesh as it is.
+    const RunResult all = Decimate(sphere, 0.9,
+                                   [schedule](vtkColorHalfEdgeDecimation* f)
+                                   {
+                                     f->SetCollapseSchedule(schedule);
+                                     f->SetTargetNumberOfTriangles(1280);
+                                   });
+    CD_CHECK(all.Collapses == 0 && all.Output->GetNumberOfPolys() == 1280);
+  }
+  // 0 is "use TargetReduction"; negative counts clamp to it.
+  vtkNew<vtkColorHalfEdgeDecimation> f;
+  f->SetTargetNumberOfTriangles(-5);
+  CD_CHECK(f->GetTargetNumberOfTriangles() == 0);
+  f->SetInputData(sphere);
+  f->SetTargetReduction(0.5);
+  f->Update();
+  CD_CHECK(f->GetOutput()->GetNumberOfPolys() == 640);
+}
+
+//------------------------------------------------------------------------------
+CD_TEST_CASE(MaximumErrorByHand)
+{
+  // The pyramid (boundary preserved) has one possible collapse, the apex into a base point, whose
+  // error PyramidError is known: a bound just below it stops the run before it, one just above lets
+  // it through and ActualError reports it, in the input's units (scaled and shifted).
+  for (const double scale : { 1.0, 1000.0 })
+  {
+    const double h = 0.1, error = scale * PyramidError(h);
+    auto pyramid = Pyramid(h, scale, scale == 1.0 ? 0.0 : 5e4);
+    for (const int schedule : Schedules)
+    {
+      for (const double factor : { 0.99, 1.01 })
+      {
+        const RunResult r = Decimate(pyramid, 1.0,
+                                     [&](vtkColorHalfEdgeDecimation* f)
+                                     {
+                                       f->SetCollapseSchedule(schedule);
+                                       f->SetPreserveBoundary(true);
+                                       f->SetMaximumError(factor * error);
+                                     });
+        CD_CHECK(r.Errors == 0 && r.Warnings == 0);
+        const double actual = r.Filter->GetActualError();
+        std::cout << "scale " << scale << ", bound " << factor << " x " << error << ": "
+                  << r.Collapses << " collapses, ActualError " << actual << "\n";
+        if (factor < 1.0)
+        {
+          CD_CHECK(r.Collapses == 0 && r.Output->GetNumberOfPolys() == 4);
+          CD_CHECK(actual == 0.0);
+        }
+        else
+        {
+          CD_CHECK(r.Collapses == 1 && r.Output->GetNumberOfPolys() == 2);
+          CD_CHECK_NEAR(actual / error, 1.0, 1e-6);
+        }
+      }
+    }
+  }
+  // Without a bound the collapse is made and ActualError stays 0 (not tracked).
+  const RunResult free = Decimate(
+    Pyramid(0.1), 1.0, [](vtkColorHalfEdgeDecimation* f) { f->SetPreserveBoundary(true); });
+  CD_CHECK(free.Collapses == 1 && free.Filter->GetActualError() == 0.0);
+}
+
+//------------------------------------------------------------------------------
+CD_TEST_CASE(MaximumErrorFlatAndCurved)
+{
+  // On a flat sheet every collapse has error 0: the smallest bound changes nothing (the same
+  // triangles as without one). On a sphere every collapse has an error: a tiny bound stops the
+  // run before the first, and a bound of 1 % of the radius holds ActualError under it.
+  auto sheet = meshes::FlatGrid(30, 30, Pattern::SmoothGradient);
+  auto sphere = meshes::Icosphere(4, Pattern::SmoothGradient);
+  for (const int schedule : Schedules)
+  {
+    auto run = [schedule](vtkPolyData* mesh, double bound)
+    {
+      return Decimate(mesh, 0.9,
+                      [schedule, bound](vtkColorHalfEdgeDecimation* f)
+                      {
+                        f->SetCollapseSchedule(schedule);
+                        f->SetMaximumError(bound);
+                      });
+    };
+    const RunResult unbounded = run(sheet, 0.0), bounded = run(sheet, 1e-12);
+    CD_CHECK(bounded.Collapses == unbounded.Collapses);
+    CD_CHECK(GetOriginalTriangles(bounded.Output) == GetOriginalTriangles(unbounded.Output));
+    CD_CHECK(bounded.Filter->GetActualError() == 0.0);
+
+    const RunResult none = run(sphere, 1e-9);
+    CD_CHECK(none.Collapses == 0 && none.ActualReduction == 0.0);
+    const RunResult some = run(sphere, 0.01);
+    std::cout << some.Filter->GetCollapseScheduleAsString() << ": bound 0.01, " << some.Collapses
+              << " collapses, reduction " << some.ActualReduction << ", ActualError "
+              << some.Filter->GetActualError() << "\n";
+    CD_CHECK(some.Collapses > 100 && some.ActualReduction < 0.9);
+    CD_CHECK(some.Filter->GetActualError() > 0.0 && some.Filter->GetActualError() <= 0.01);
+  }
+}
+
+//------------------------------------------------------------------------------
+CD_TEST_CASE(LockArray)
+{
+  // Every locked point survives, whatever the array's type and however many components it has
+  // (any non-zero component locks); both schedules. Without the locks, most of them go.
+  auto grid = meshes::Grid(40, 30, Pattern::SharpRegions);
+  const vtkIdType n = grid->GetNumberOfPoints();
+  std::set<vtkIdType> locked;
+  vtkNew<vtkUnsignedCharArray> bytes;
+  vtkNew<vtkFloatArray> floats;
+  vtkNew<vtkIntArray> pairs;
+  bytes->SetName("bytes");
+  floats->SetName("floats");
+  pairs->SetName("pairs");
+  pairs->SetNumberOfComponents(2);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const bool lock = i % 7 == 3 || (i >= 400 && i < 440);
+    if (lock)
+    {
+      locked.insert(i);
+    }
+    bytes->InsertNextValue(lock ? 255 : 0);
+    floats->InsertNextValue(lock ? 0.5f : 0.0f);
+    pairs->InsertNextTuple2(0, lock ? -1 : 0);
+  }
+  for (vtkDataArray* a : { static_cast<vtkDataArray*>(bytes), static_cast<vtkDataArray*>(floats),
+                           static_cast<vtkDataArray*>(pairs) })
+  {
+    grid->GetPointData()->AddArray(a);
+  }
+  auto countLost = [&locked](vtkPolyData* output)
+  {
+    const std::set<vtkIdType> ids = OriginalIds(output);
+    long long lost = 0;
+    for (const vtkIdType v : locked)
+    {
+      lost += ids.count(v) ? 0 : 1;
+    }
+    return lost;
+  };
+  CD_CHECK(2 * countLost(Decimate(grid, 0.9).Output) > static_cast<long long>(locked.size()));
+  const std::map<vtkIdType, int> before = TrianglesPerPoint(GetTriangles(grid));
+  for (const int schedule : Schedules)
+  {
+    for (const char* name : { "bytes", "floats", "pairs" })
+    {
+      const RunResult r = Decimate(grid, 0.9,
+                                   [&](vtkColorHalfEdgeDecimation* f)
+                                   {
+                                     f->SetCollapseSchedule(schedule);
+                                     SelectLocks(f, name);
+                                   });
+      CD_CHECK(r.Errors == 0 && r.Warnings == 0);
+      CD_CHECK(std::string(r.Filter->GetLockArrayName()) == name);
+      const long long lost = countLost(r.Output);
+      CD_CHECK_MSG(lost == 0,
+                   name << ": " << lost << " of " << locked.size() << " locked points lost");
+      // No triangle of a locked point is removed (corners of its neighbours may be renamed).
+      const std::map<vtkIdType, int> after = TrianglesPerPoint(GetOriginalTriangles(r.Output));
+      long long changed = 0;
+      for (const vtkIdType v : locked)
+      {
+        const auto it = after.find(v);
+        changed += (it == after.end() ? 0 : it->second) != before.at(v) ? 1 : 0;
+      }
+      CD_CHECK_MSG(changed == 0, name << ": " << changed << " locked points lost triangles");
+      CD_CHECK(r.Collapses > 100);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+CD_TEST_CASE(LockArrayBadInput)
+{
+  auto grid = meshes::Grid(20, 20, Pattern::SmoothGradient);
+  const RunResult plain = Decimate(grid, 0.9);
+  // Not there: a warning naming it, nothing locked (the same output as without).
+  const RunResult missing =
+    Decimate(grid, 0.9, [](vtkColorHalfEdgeDecimation* f) { SelectLocks(f, "nothere"); });
+  CD_CHECK(missing.Errors == 0 && missing.Warnings == 1 && missing.HasWarning("'nothere'"));
+  CD_CHECK(GetOriginalTriangles(missing.Output) == GetOriginalTriangles(plain.Output));
+  // No selection ("" or ParaView's "None"): quiet, nothing locked.
+  for (const char* none : { "", "None" })
+  {
+    const RunResult r =
+      Decimate(grid, 0.9, [none](vtkColorHalfEdgeDecimation* f) { SelectLocks(f, none); });
+    CD_CHECK(r.Errors == 0 && r.Warnings == 0 && r.Filter->GetLockArrayName() == nullptr);
+    CD_CHECK(GetOriginalTriangles(r.Output) == GetOriginalTriangles(plain.Output));
+  }
+  // A cell-data array, or a point array of the wrong length: an error and an empty output.
+  auto withCellLock = Copy(grid);
+  vtkNew<vtkDoubleArray> cellLock;
+  cellLock->SetName("celllock");
+  cellLock->SetNumberOfTuples(withCellLock->GetNumberOfCells());
+  cellLock->Fill(1.0);
+  withCellLock->GetCellData()->AddArray(cellLock);
+  const RunResult cells = Decimate(
+    withCellLock, 0.9,
+    [](vtkColorHalfEdgeDecimation* f)
+    { f->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "celllock"); });
+  CD_CHECK(cells.Errors == 1 && cells.HasError("not a point-data array"));
+  CD_CHECK(cells.Output->GetNumberOfPoints() == 0);
+  auto withShortLock = Copy(grid);
+  vtkNew<vtkUnsignedCharArray> shortLock;
+  shortLock->SetName("short");
+  shortLock->SetNumberOfTuples(7);
+  shortLock->Fill(1);
+  withShortLock->GetPointData()->AddArray(shortLock);
+  const RunResult shortRun =
+    Decimate(withShortLock, 0.9, [](vtkColorHalfEdgeDecimation* f) { SelectLocks(f, "short"); });
+  CD_CHECK(shortRun.Errors == 1 && shortRun.HasError("7 tuples"));
+  CD_CHECK(shortRun.Output->GetNumberOfPoints() == 0);
+}
+
+int main(int argc, char* argv[])
+{
+  return RunTestCases(argc, argv);
+}
