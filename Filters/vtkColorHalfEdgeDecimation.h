@@ -28,8 +28,9 @@
  * Because no vertex is ever moved or blended (except with the ColorQuadric metric's
  * OptimalPlacement, see there), every point-data array of the surviving points is copied
  * bit-exactly (colours, normals, texture coordinates, ids), and an array
- * (vtkOriginalPointIds by default) maps each output point to its input point. Cell data of
- * the surviving triangles is copied too, and field data is passed.
+ * (vtkOriginalPointIds by default) maps each output point to its input point (or, composed, to
+ * the point an upstream vtkOriginalPointIds array names; see GenerateOriginalPointIds). Cell data
+ * of the surviving triangles is copied too, and field data is passed.
  *
  * TargetReduction has the meaning it has in vtkQuadricDecimation: the fraction of the input
  * triangles to remove; TargetNumberOfTriangles, when set, asks for a triangle count instead.
@@ -333,7 +334,11 @@ public:
   /**
    * When on (default), the output gets a vtkIdTypeArray point-data array (named by
    * OriginalPointIdsArrayName, default "vtkOriginalPointIds") with each output point's id in
-   * the input.
+   * the input. When the input already has a point array of that name holding one integer
+   * id >= 0 per point (as vtkDataSetSurfaceFilter writes, pointing into the data set it came
+   * from), the ids are composed: each output point gets its input point's id from that array,
+   * so the link back to the original data set is kept. An input array of that name of another
+   * kind is replaced, with a warning.
    */
   vtkSetMacro(GenerateOriginalPointIds, vtkTypeBool);
   vtkGetMacro(GenerateOriginalPointIds, vtkTypeBool);

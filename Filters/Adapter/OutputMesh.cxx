@@ -14,6 +14,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSetGet.h"
+#include "vtkType.h"
 
 #include <string>
 #include <vector>
@@ -138,24 +139,80 @@ void WriteMovedColors(const InputMesh& mesh, const Decimator& decimator, const U
   }
 }
 
-/// Each output point's id in the input, as a vtkIdTypeArray named `name` (replacing an input
-/// array of that name, with a warning).
+bool IsIntegerType(int type)
+{
+  switch (type)
+  {
+    case VTK_CHAR:
+    case VTK_SIGNED_CHAR:
+    case VTK_UNSIGNED_CHAR:
+    case VTK_SHORT:
+    case VTK_UNSIGNED_SHORT:
+    case VTK_INT:
+    case VTK_UNSIGNED_INT:
+    case VTK_LONG:
+    case VTK_UNSIGNED_LONG:
+    case VTK_LONG_LONG:
+    case VTK_UNSIGNED_LONG_LONG:
+    case VTK_ID_TYPE:
+      return true;
+    default:
+      return false;
+  }
+}
+
+/**
+ * The input's ids to compose with, when its array `name` is one: one integer component per
+ * point, every value >= 0 (e.g. vtkOriginalPointIds from vtkDataSetSurfaceFilter). Null when
+ * there is no such array; a warning (and null) when there is one of another kind.
+ */
+vtkDataArray* UpstreamIds(vtkObject* self, vtkPolyData* input, const char* name)
+{
+  vtkAbstractArray* given = input->GetPointData()->GetAbstractArray(name);
+  if (!given)
+  {
+    return nullptr;
+  }
+  vtkDataArray* ids = vtkDataArray::SafeDownCast(given);
+  bool valid = ids && IsIntegerType(ids->GetDataType()) && ids->GetNumberOfComponents() == 1 &&
+    ids->GetNumberOfTuples() == input->GetNumberOfPoints();
+  for (vtkIdType i = 0; valid && i < ids->GetNumberOfTuples(); ++i)
+  {
+    const double id = ids->GetComponent(i, 0);
+    valid = id >= 0 && id <= static_cast<double>(VTK_ID_MAX);
+  }
+  if (!valid)
+  {
+    vtkWarningWithObjectMacro(self, << "The input already has a point array named '" << name
+                                    << "' that does not hold one id >= 0 per point: it is "
+                                       "replaced by this filter's.");
+    return nullptr;
+  }
+  vtkDebugWithObjectMacro(self, << "The input's '" << name
+                                << "' ids are composed with this "
+                                   "filter's.");
+  return ids;
+}
+
+/// Each output point's id in the input, as a vtkIdTypeArray named `name`, composed with the
+/// input's ids of that name when it has them (see UpstreamIds).
 void WriteOriginalIds(vtkObject* self, vtkPolyData* input, const char* name, const UsedPoints& used,
                       vtkPointData* outPD)
 {
-  if (input->GetPointData()->HasArray(name))
-  {
-    vtkWarningWithObjectMacro(self, << "The input already has a point array named '" << name
-                                    << "': it is replaced by this filter's.");
-    outPD->RemoveArray(name);
-  }
+  vtkDataArray* upstream = UpstreamIds(self, input, name);
+  vtkIdTypeArray* upstreamIds = vtkIdTypeArray::SafeDownCast(upstream);
+  outPD->RemoveArray(name);
   const vtkIdType numOutPoints = used.Source->GetNumberOfIds();
   vtkNew<vtkIdTypeArray> original;
   original->SetName(name);
   original->SetNumberOfValues(numOutPoints);
   for (vtkIdType i = 0; i < numOutPoints; ++i)
   {
-    original->SetValue(i, used.Source->GetId(i));
+    const vtkIdType source = used.Source->GetId(i);
+    original->SetValue(i,
+                       upstreamIds  ? upstreamIds->GetValue(source)
+                         : upstream ? static_cast<vtkIdType>(upstream->GetComponent(source, 0))
+                                    : source);
   }
   outPD->AddArray(original);
 }

@@ -9,6 +9,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkDoubleArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
@@ -28,6 +29,32 @@ using meshes::Pattern;
 
 namespace
 {
+/// Output points that are not the point of `points` their vtkOriginalPointIds names.
+long long CountMisplacedIds(vtkPolyData* output, vtkPoints* points)
+{
+  auto* ids = vtkIdTypeArray::SafeDownCast(output->GetPointData()->GetArray("vtkOriginalPointIds"));
+  if (!ids || ids->GetNumberOfValues() != output->GetNumberOfPoints())
+  {
+    return output->GetNumberOfPoints() + 1;
+  }
+  long long misplaced = 0;
+  for (vtkIdType i = 0; i < ids->GetNumberOfValues(); ++i)
+  {
+    const vtkIdType id = ids->GetValue(i);
+    double a[3], b[3] = { 0, 0, 0 };
+    output->GetPoint(i, a);
+    if (id >= 0 && id < points->GetNumberOfPoints())
+    {
+      points->GetPoint(id, b);
+    }
+    misplaced +=
+      (id >= 0 && id < points->GetNumberOfPoints() && a[0] == b[0] && a[1] == b[1] && a[2] == b[2])
+      ? 0
+      : 1;
+  }
+  return misplaced;
+}
+
 /// The same without the flip check, for tests about something else (the Invariants tests
 /// check flips).
 Expectation WithoutFlipCheck(Expectation e)
@@ -653,28 +680,68 @@ CD_TEST_CASE(OriginalPointIdsOptions)
   CD_CHECK(r.Output->GetPointData()->GetArray("Origin"));
   CD_CHECK(!r.Output->GetPointData()->GetArray("vtkOriginalPointIds"));
 
-  // An input that already has vtkOriginalPointIds (e.g. a decimated mesh decimated again):
-  // the ids are of this input, with a warning.
+  // A decimated mesh decimated again: its vtkOriginalPointIds are composed, so the second
+  // output's ids name points of the first input (quietly).
   const RunResult first = Decimate(mesh, 0.5);
   const RunResult second = Decimate(first.Output, 0.5);
-  CD_CHECK(second.Warnings == 1 && second.Errors == 0);
-  auto* ids =
-    vtkIdTypeArray::SafeDownCast(second.Output->GetPointData()->GetArray("vtkOriginalPointIds"));
-  CD_CHECK(ids && ids->GetNumberOfValues() == second.Output->GetNumberOfPoints());
-  bool inRange = ids != nullptr;
-  for (vtkIdType i = 0; ids && i < ids->GetNumberOfValues(); ++i)
+  CD_CHECK(second.Warnings == 0 && second.Errors == 0);
+  CD_CHECK(CountMisplacedIds(second.Output, mesh->GetPoints()) == 0);
+}
+
+CD_TEST_CASE(UpstreamOriginalIds)
+{
+  // A surface taken from a larger data set, as vtkDataSetSurfaceFilter gives it: its
+  // vtkOriginalPointIds (of any integer type) name points of that data set. The output's ids
+  // are composed: each names the data set's point that the output point is.
+  auto surface = meshes::Grid(30, 20, Pattern::SharpRegions);
+  const vtkIdType n = surface->GetNumberOfPoints();
+  vtkNew<vtkPoints> dataset; // surface point i is the data set's point 3 i + 1
+  dataset->SetDataType(surface->GetPoints()->GetDataType());
+  dataset->SetNumberOfPoints(3 * n + 1);
+  for (vtkIdType i = 0; i <= 3 * n; ++i)
   {
-    inRange =
-      inRange && ids->GetValue(i) >= 0 && ids->GetValue(i) < first.Output->GetNumberOfPoints();
-    if (inRange)
-    {
-      double a[3], b[3];
-      second.Output->GetPoint(i, a);
-      first.Output->GetPoint(ids->GetValue(i), b);
-      inRange = a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
-    }
+    dataset->SetPoint(i, 1e9, 1e9, 1e9);
   }
-  CD_CHECK(inRange);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    dataset->SetPoint(3 * i + 1, surface->GetPoint(i));
+  }
+  for (const int type : { VTK_ID_TYPE, VTK_INT, VTK_UNSIGNED_SHORT })
+  {
+    auto input = Copy(surface);
+    vtkSmartPointer<vtkDataArray> ids =
+      vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(type));
+    ids->SetName("vtkOriginalPointIds");
+    ids->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      ids->SetTuple1(i, static_cast<double>(3 * i + 1));
+    }
+    input->GetPointData()->AddArray(ids);
+    const RunResult r = Decimate(input, 0.9);
+    CD_CHECK(r.Errors == 0 && r.Warnings == 0);
+    CD_CHECK(r.Output->GetNumberOfPoints() > 0);
+    CD_CHECK_MSG(CountMisplacedIds(r.Output, dataset) == 0, ids->GetDataTypeAsString());
+  }
+  // Ids of another kind (floating point, or negative) are replaced, with a warning, by ids of
+  // this input.
+  for (const double first : { 0.5, -1.0 })
+  {
+    auto input = Copy(surface);
+    vtkNew<vtkDoubleArray> floating;
+    vtkNew<vtkIdTypeArray> negative;
+    vtkDataArray* ids = first == -1.0 ? static_cast<vtkDataArray*>(negative) : floating.Get();
+    ids->SetName("vtkOriginalPointIds");
+    ids->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      ids->SetTuple1(i, first + i);
+    }
+    input->GetPointData()->AddArray(ids);
+    const RunResult r = Decimate(input, 0.9);
+    CD_CHECK(r.Errors == 0 && r.Warnings == 1 && r.HasWarning("does not hold one id"));
+    CD_CHECK(CountMisplacedIds(r.Output, surface->GetPoints()) == 0);
+  }
 }
 
 CD_TEST_CASE(AngleAndGeometryWeightMatter)

@@ -11,6 +11,8 @@ import sys
 from colordecimation import vtkColorHalfEdgeDecimation
 import colordecimation
 from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+from vtkmodules.vtkFiltersCore import vtkAppendFilter
+from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 
 
@@ -151,7 +153,33 @@ def main():
         fail("the batched schedule missed the target")
     if batched.GetNumberOfPoints() - batched.GetNumberOfPolys() // 2 != 2:
         fail("the batched schedule changed the Euler characteristic")
+    check_surface_ids()
     print("OK")
+
+
+def check_surface_ids():
+    """A surface from vtkDataSetSurfaceFilter keeps the link to its unstructured grid: the
+    output's vtkOriginalPointIds are composed with the surface filter's."""
+    append = vtkAppendFilter()
+    append.AddInputData(coloured_sphere(18))
+    surface = vtkDataSetSurfaceFilter()
+    surface.SetInputConnection(append.GetOutputPort())
+    surface.PassThroughPointIdsOn()
+    decimation = vtkColorHalfEdgeDecimation()
+    decimation.SetInputConnection(surface.GetOutputPort())
+    decimation.SetTargetNumberOfTriangles(100)
+    decimation.Update()
+    append.Update()
+    grid, out = append.GetOutput(), decimation.GetOutput()
+    ids = out.GetPointData().GetArray("vtkOriginalPointIds")
+    if out.GetNumberOfPolys() > 100 or ids is None:
+        fail("surface ids: %d triangles, ids %s" % (out.GetNumberOfPolys(), ids))
+    wrong = sum(1 for i in range(out.GetNumberOfPoints())
+                if out.GetPoint(i) != grid.GetPoint(ids.GetValue(i)))
+    print("surface of a grid: %d of %d output ids name the grid's point" %
+          (out.GetNumberOfPoints() - wrong, out.GetNumberOfPoints()))
+    if wrong:
+        fail("%d output ids do not name the grid's point" % wrong)
 
 
 if __name__ == "__main__":

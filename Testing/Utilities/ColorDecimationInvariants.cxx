@@ -9,13 +9,16 @@
 #include "vtkDataArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
+#include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <sstream>
 
 namespace colordecimation
@@ -64,16 +67,13 @@ void CheckStatistics(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter, vtk
   }
 }
 
-/// Every point the lock array locks is in the output (when the run went through).
-void CheckLocks(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter, vtkPolyData* output,
+/// Every point the lock array locks is in the output (when the run went through); `original`:
+/// each output point's input point (InputIds).
+void CheckLocks(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter, vtkIdTypeArray* original,
                 bool filterReportedError, Broken& broken)
 {
   const char* name = filter->GetLockArrayName();
   vtkDataArray* locks = name ? input->GetPointData()->GetArray(name) : nullptr;
-  const char* idsName = filter->GetOriginalPointIdsArrayName();
-  vtkIdTypeArray* original = idsName && filter->GetGenerateOriginalPointIds()
-    ? vtkIdTypeArray::SafeDownCast(output->GetPointData()->GetAbstractArray(idsName))
-    : nullptr;
   if (!locks || !original || filterReportedError ||
       locks->GetNumberOfTuples() != input->GetNumberOfPoints())
   {
@@ -293,23 +293,88 @@ void CheckPointArrayCopied(vtkDataArray* in, vtkDataArray* out, vtkIdTypeArray* 
  * ColorQuadric metric's OptimalPlacement, points move and take a new colour: their
  * coordinates and the colour array are then not compared.
  */
-void CheckOriginalIds(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter, vtkPolyData* output,
-                      Broken& broken)
+/**
+ * The input's own ids of the filter's id array name, when the filter composes with them (one
+ * integer id >= 0 per point), else null.
+ */
+vtkDataArray* UpstreamIds(vtkPolyData* input, const char* idsName)
 {
-  const vtkIdType numOutPoints = output->GetNumberOfPoints();
-  const char* idsName = filter->GetOriginalPointIdsArrayName();
-  if (!filter->GetGenerateOriginalPointIds() || !idsName || !*idsName || numOutPoints == 0)
+  vtkDataArray* ids = input->GetPointData()->GetArray(idsName);
+  if (!ids || ids->GetNumberOfComponents() != 1 ||
+      ids->GetNumberOfTuples() != input->GetNumberOfPoints() || ids->GetDataType() == VTK_FLOAT ||
+      ids->GetDataType() == VTK_DOUBLE || ids->GetDataType() == VTK_BIT)
   {
-    return;
+    return nullptr;
   }
-  vtkPointData* outPD = output->GetPointData();
-  vtkIdTypeArray* original = vtkIdTypeArray::SafeDownCast(outPD->GetAbstractArray(idsName));
+  for (vtkIdType i = 0; i < ids->GetNumberOfTuples(); ++i)
+  {
+    if (!(ids->GetComponent(i, 0) >= 0))
+    {
+      return nullptr;
+    }
+  }
+  return ids;
+}
+
+/**
+ * The output's original ids as input point ids: the array itself, or (composed with upstream
+ * ids) mapped back through them, each output id checked to be an upstream id. Null when the
+ * filter writes none, or when upstream ids repeat (then only their membership is checked).
+ */
+vtkSmartPointer<vtkIdTypeArray> InputIds(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter,
+                                         vtkPolyData* output, Broken& broken)
+{
+  const char* idsName = filter->GetOriginalPointIdsArrayName();
+  if (!filter->GetGenerateOriginalPointIds() || !idsName || !*idsName ||
+      output->GetNumberOfPoints() == 0)
+  {
+    return nullptr;
+  }
+  vtkIdTypeArray* original =
+    vtkIdTypeArray::SafeDownCast(output->GetPointData()->GetAbstractArray(idsName));
   if (!original)
   {
     broken.push_back(Say("no vtkIdTypeArray '", idsName, "' in the output"));
-    return;
+    return nullptr;
   }
-  if (original->GetNumberOfTuples() != numOutPoints || original->GetNumberOfComponents() != 1 ||
+  vtkDataArray* upstream = UpstreamIds(input, idsName);
+  if (!upstream)
+  {
+    return original;
+  }
+  std::map<vtkIdType, vtkIdType> back; // upstream id -> input point
+  bool distinct = true;
+  for (vtkIdType i = 0; i < upstream->GetNumberOfTuples(); ++i)
+  {
+    distinct =
+      back.emplace(static_cast<vtkIdType>(upstream->GetComponent(i, 0)), i).second && distinct;
+  }
+  vtkNew<vtkIdTypeArray> local;
+  local->SetNumberOfValues(original->GetNumberOfValues());
+  for (vtkIdType i = 0; i < original->GetNumberOfValues(); ++i)
+  {
+    const auto it = back.find(original->GetValue(i));
+    if (it == back.end())
+    {
+      broken.push_back(Say("output point ", i, " has the id ", original->GetValue(i),
+                           ", which is none of the input's '", idsName, "' ids"));
+      return nullptr;
+    }
+    local->SetValue(i, it->second);
+  }
+  return distinct ? vtkSmartPointer<vtkIdTypeArray>(local) : nullptr;
+}
+
+/// Ids valid and distinct, and the surviving points' data copied bit-exactly; `original`:
+/// each output point's input point (InputIds).
+void CheckOriginalIds(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter, vtkPolyData* output,
+                      vtkIdTypeArray* original, Broken& broken)
+{
+  const vtkIdType numOutPoints = output->GetNumberOfPoints();
+  const char* idsName = filter->GetOriginalPointIdsArrayName();
+  vtkPointData* outPD = output->GetPointData();
+  if (!original || original->GetNumberOfTuples() != numOutPoints ||
+      original->GetNumberOfComponents() != 1 ||
       !CheckOriginalIdValues(original, input->GetNumberOfPoints(), broken))
   {
     return;
@@ -345,8 +410,9 @@ std::vector<std::string> CheckInvariants(vtkPolyData* input, vtkColorHalfEdgeDec
   CheckStatistics(input, filter, output, filterReportedError, broken);
   CheckCellsAndPoints(output, broken);
   CheckTupleCounts(output, broken);
-  CheckOriginalIds(input, filter, output, broken);
-  CheckLocks(input, filter, output, filterReportedError, broken);
+  const vtkSmartPointer<vtkIdTypeArray> ids = InputIds(input, filter, output, broken);
+  CheckOriginalIds(input, filter, output, ids, broken);
+  CheckLocks(input, filter, ids, filterReportedError, broken);
 
   // Orientation: an oriented soup stays one.
   const std::vector<Tri> inputTriangles = GetTriangles(input);

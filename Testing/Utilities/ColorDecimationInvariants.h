@@ -16,7 +16,9 @@
  *   are distinct and in [0, number of input points), and each output point and each point-data
  *   array that also exists in the input is a bit-exact copy of the input's tuple (except,
  *   with the ColorQuadric metric's OptimalPlacement, the coordinates and the colour array,
- *   which then move);
+ *   which then move); when the input has an id array of that name that the filter composes
+ *   with (one integer id >= 0 per point), every output id is one of those, and (if they are
+ *   distinct) the same checks hold through them;
  * - an error reported by the filter leaves the output empty;
  * - NumberOfCollapses <= number of input points; ActualReduction in [0, 1]; ActualError >= 0,
  *   and at most MaximumError when that is set;
