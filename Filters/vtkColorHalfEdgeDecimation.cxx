@@ -274,6 +274,7 @@ colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, 
   options.MaximumNormalAngle = self->GetMaximumNormalAngle();
   options.GeometryWeight = self->GetGeometryWeight();
   options.MaximumError = self->GetMaximumError();
+  options.PruneComponents = self->GetPruneComponents() != 0;
   return options;
 }
 
@@ -304,6 +305,8 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   , TargetNumberOfTriangles(0)
   , MaximumError(0.0)
   , ActualError(0.0)
+  , PruneComponents(false)
+  , NumberOfPrunedComponents(0)
   , PreserveBoundary(false)
   , MaximumNormalAngle(90.0)
   , GeometryWeight(1.0)
@@ -377,6 +380,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->ActualReduction = 0.0;
   this->ActualError = 0.0;
+  this->NumberOfPrunedComponents = 0;
   this->NumberOfCollapses = 0;
   this->StateMemory = 0;
   this->NumberOfThreadsUsed = 0;
@@ -431,6 +435,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   ReportBuild(this, stats.Build);
   this->NumberOfCollapses = stats.Collapses;
   this->ActualError = stats.ActualError;
+  this->NumberOfPrunedComponents = stats.PrunedComponents;
   this->StateMemory = static_cast<vtkIdType>(stats.StateBytes);
   this->NumberOfThreadsUsed =
     std::max({ stats.Threads, stats.CollapseThreads, stats.WideCollapseThreads });
@@ -503,6 +508,7 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TargetReduction: " << this->TargetReduction << "\n";
   os << indent << "TargetNumberOfTriangles: " << this->TargetNumberOfTriangles << "\n";
   os << indent << "MaximumError: " << this->MaximumError << "\n";
+  os << indent << "PruneComponents: " << (this->PruneComponents ? "On" : "Off") << "\n";
   os << indent
      << "LockArrayName: " << (this->GetLockArrayName() ? this->GetLockArrayName() : "(none)")
      << "\n";
@@ -515,6 +521,7 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
      << (this->OriginalPointIdsArrayName ? this->OriginalPointIdsArrayName : "(none)") << "\n";
   os << indent << "ActualReduction: " << this->ActualReduction << "\n";
   os << indent << "ActualError: " << this->ActualError << "\n";
+  os << indent << "NumberOfPrunedComponents: " << this->NumberOfPrunedComponents << "\n";
   os << indent << "NumberOfCollapses: " << this->NumberOfCollapses << "\n";
   os << indent << "StateMemory: " << this->StateMemory << "\n";
   os << indent << "NumberOfThreadsUsed: " << this->NumberOfThreadsUsed << "\n";

@@ -125,8 +125,8 @@ public:
    * metric, the Greedy schedule, no boundary planes (BoundaryWeight 0), no edge-length term,
    * GeometryWeight 1, RGB colours, MaximumNormalAngle 90, PreserveBoundary off (and
    * ColorWeight 1, OptimalPlacement off, which the paper's metric does not read).
-   * TargetReduction, TargetNumberOfTriangles, MaximumError, NumberOfThreads, the lock array
-   * and the original point ids are left as they are.
+   * TargetReduction, TargetNumberOfTriangles, MaximumError, PruneComponents, NumberOfThreads,
+   * the lock array and the original point ids are left as they are.
    */
   void SetPaperDefaults();
 
@@ -293,6 +293,26 @@ public:
   vtkGetMacro(MaximumError, double);
   ///@}
 
+  ///@{
+  /**
+   * When on, and collapses alone leave more triangles than the target, whole connected pieces
+   * (triangles connected through shared points) are removed, smallest area first (ties: fewer
+   * triangles first), until the target is met: the small fragments of a scan, each of which
+   * collapses cannot take below a few triangles. Pieces with a locked point (lock array, ghost
+   * points) are kept, and so is the last piece. Not done after an abort, nor when MaximumError
+   * stopped the run. Off by default (as meshoptimizer's SimplifyPrune), since it removes parts
+   * of the surface: turn it on for scans decimated by 99 % or more.
+   */
+  vtkSetMacro(PruneComponents, vtkTypeBool);
+  vtkGetMacro(PruneComponents, vtkTypeBool);
+  vtkBooleanMacro(PruneComponents, vtkTypeBool);
+  ///@}
+
+  /**
+   * The number of connected pieces PruneComponents removed in the last execution.
+   */
+  vtkGetMacro(NumberOfPrunedComponents, vtkIdType);
+
   /**
    * The largest geometric error (see MaximumError) of the collapses of the last execution, in
    * the input's units. Only tracked under a bound: 0 when MaximumError is not set (set it to
@@ -395,6 +415,8 @@ protected:
   vtkIdType TargetNumberOfTriangles;
   double MaximumError;
   double ActualError;
+  vtkTypeBool PruneComponents;
+  vtkIdType NumberOfPrunedComponents;
   vtkTypeBool PreserveBoundary;
   double MaximumNormalAngle;
   double GeometryWeight;

@@ -317,6 +317,10 @@ void AddStopOptions(CLI::App& app, Options& options)
     "RMS distance to the merged input planes) exceeds E, in the input's\n"
     "units, or E% of its bounding-box diagonal (default 0: no bound)")
     ->type_name("E");
+  AddFilterFlag(app, options, "--prune-components", &vtkColorHalfEdgeDecimation::SetPruneComponents,
+                1,
+                "when collapses alone cannot reach the target, remove whole\n"
+                "connected pieces, smallest area first (off by default)");
   AddValue(
     app, "--lock-array",
     [&options](const std::string& name)
@@ -691,6 +695,12 @@ void PrintFigures(vtkColorHalfEdgeDecimation* filter, const Options& options, co
     MetricName(filter->GetErrorMetric()), figures.FilterSeconds, input.ReadSeconds,
     figures.WriteSeconds, Mib(filter->GetStateMemory()).c_str(), Mib(figures.PeakRss).c_str());
   std::cout << line;
+  if (filter->GetNumberOfPrunedComponents() > 0)
+  {
+    std::snprintf(line, sizeof(line), "        %lld small pieces removed (--prune-components)\n",
+                  static_cast<long long>(filter->GetNumberOfPrunedComponents()));
+    std::cout << line;
+  }
   if (filter->GetMaximumError() > 0)
   {
     std::snprintf(line, sizeof(line), "        geometric error %g (bound %g)\n",
@@ -716,6 +726,7 @@ Json Settings(vtkColorHalfEdgeDecimation* filter)
   settings["original_ids"] = filter->GetGenerateOriginalPointIds() != 0;
   settings["target_triangles"] = static_cast<long long>(filter->GetTargetNumberOfTriangles());
   settings["max_error"] = filter->GetMaximumError();
+  settings["prune_components"] = filter->GetPruneComponents() != 0;
   settings["lock_array"] = filter->GetLockArrayName() ? filter->GetLockArrayName() : "";
   return settings;
 }
@@ -735,6 +746,7 @@ Json Statistics(vtkColorHalfEdgeDecimation* filter, const Options& options, cons
   stats["settings"] = Settings(filter);
   stats["reduction"] = filter->GetActualReduction();
   stats["actual_error"] = filter->GetActualError();
+  stats["pruned_components"] = static_cast<long long>(filter->GetNumberOfPrunedComponents());
   stats["input_points"] = input.Points;
   stats["input_triangles"] = input.Triangles;
   stats["output_points"] = figures.OutputPoints;

@@ -1,6 +1,7 @@
 #include "Decimator.h"
 
 #include "engine/Engine.h"
+#include "mesh/Components.h"
 #include "metric/AttributeQuadric.h"
 #include "metric/ColorQuadricMetric.h"
 #include "schedule/Batched.h"
@@ -86,6 +87,13 @@ DecimatorStatistics Decimator::RunWith(const DecimatorInput& input, int64_t targ
   stats.Threads = engine->GetThreadsUsed();
   const bool renumbered = engine->IsRenumbered();
   engine->Stop();
+  if (this->Options.PruneComponents && !stats.Aborted && !stats.ErrorBoundReached)
+  {
+    const PruneReport pruned =
+      PruneComponents(engine->GetMesh(), input.Points, input.Fixed, stats.TargetTriangles);
+    stats.PrunedComponents = pruned.Components;
+    stats.PrunedTriangles = pruned.Triangles;
+  }
   stats.OutputTriangles = engine->GetMesh().GetNumberOfLiveFaces();
   stats.MetricBytesPerVertex = Metric::BytesPerVertex();
   stats.StateBytes = StateBytes(this->Options, input, Metric::BytesPerVertex(),

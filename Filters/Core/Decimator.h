@@ -10,7 +10,9 @@
  * - the metric, a policy of the engine: metric/HalfEdgeColor.h (the paper's cost, and the
  *   quadric alone) or metric/ColorQuadricMetric.h (Garland and Heckbert's colour quadric);
  * - the schedule, a loop over the engine: schedule/Greedy.h (a min-heap, the paper's order) or
- *   schedule/Batched.h (passes by blocks on several threads).
+ *   schedule/Batched.h (passes by blocks on several threads);
+ * - the stop rules: the target, MaximumError (rules/ErrorBound.h), and after the schedule the
+ *   removal of small pieces (mesh/Components.h).
  */
 #ifndef colordecimation_Decimator_h
 #define colordecimation_Decimator_h

@@ -61,6 +61,42 @@ double PyramidError(double h)
   return std::sqrt(4.0 / 3.0) / std::sqrt(2.0 + 1.0 / (h * h));
 }
 
+/**
+ * A flat grid of 20 x 20 quads over [0, 20]^2 and, beside it, ten separate tetrahedra of edge
+ * 0.2 k (k = 1 .. 10), which no collapse can reduce: 800 + 40 triangles.
+ */
+vtkSmartPointer<vtkPolyData> GridAndTetrahedra()
+{
+  std::vector<double> xyz;
+  std::vector<vtkIdType> triangles;
+  for (int j = 0; j <= 20; ++j)
+  {
+    for (int i = 0; i <= 20; ++i)
+    {
+      xyz.insert(xyz.end(), { double(i), double(j), 0.0 });
+    }
+  }
+  for (vtkIdType j = 0; j < 20; ++j)
+  {
+    for (vtkIdType i = 0; i < 20; ++i)
+    {
+      const vtkIdType a = 21 * j + i, b = a + 1, c = a + 22, d = a + 21;
+      triangles.insert(triangles.end(), { a, b, c, a, c, d });
+    }
+  }
+  for (int k = 1; k <= 10; ++k)
+  {
+    const auto first = static_cast<vtkIdType>(xyz.size() / 3);
+    const double e = 0.2 * k, x = 30.0 + 3.0 * k;
+    xyz.insert(xyz.end(), { x, 0, 0, x + e, 0, 0, x, e, 0, x, 0, e });
+    for (const vtkIdType t : { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 })
+    {
+      triangles.push_back(first + t);
+    }
+  }
+  return meshes::FromTriangles(xyz, triangles);
+}
+
 /// How many triangles use each point.
 std::map<vtkIdType, int> TrianglesPerPoint(const std::vector<Tri>& triangles)
 {
@@ -305,6 +341,66 @@ CD_TEST_CASE(LockArrayBadInput)
     Decimate(withShortLock, 0.9, [](vtkColorHalfEdgeDecimation* f) { SelectLocks(f, "short"); });
   CD_CHECK(shortRun.Errors == 1 && shortRun.HasError("7 tuples"));
   CD_CHECK(shortRun.Output->GetNumberOfPoints() == 0);
+}
+
+//------------------------------------------------------------------------------
+CD_TEST_CASE(PruneComponents)
+{
+  // Collapses take the grid to G triangles and leave the ten tetrahedra (40 triangles): at
+  // 0.99 (target 8) the run stops short. With PruneComponents the smallest tetrahedra go,
+  // one after the other, until G + 4 (10 - k) <= 8; the largest ones stay. A locked point
+  // keeps its tetrahedron (the next smallest goes instead).
+  auto mesh = GridAndTetrahedra();
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  vtkNew<vtkUnsignedCharArray> lock;
+  lock->SetName("lock");
+  lock->SetNumberOfValues(n);
+  lock->Fill(0);
+  lock->SetValue(441, 1); // the first point of the smallest tetrahedron
+  mesh->GetPointData()->AddArray(lock);
+  const vtkIdType target = 8; // floor(0.01 * 840)
+  for (const int schedule : Schedules)
+  {
+    auto run = [&](bool prune, bool locked)
+    {
+      return Decimate(mesh, 0.99,
+                      [&](vtkColorHalfEdgeDecimation* f)
+                      {
+                        f->SetCollapseSchedule(schedule);
+                        f->SetPruneComponents(prune);
+                        SelectLocks(f, locked ? "lock" : "");
+                      });
+    };
+    const RunResult plain = run(false, false);
+    const vtkIdType grid = plain.Output->GetNumberOfPolys() - 40;
+    CD_CHECK(grid >= 1 && grid <= target && plain.Filter->GetNumberOfPrunedComponents() == 0);
+    vtkIdType removed = 0;
+    while (grid + 4 * (10 - removed) > target)
+    {
+      ++removed;
+    }
+    const RunResult pruned = run(true, false);
+    std::cout << pruned.Filter->GetCollapseScheduleAsString() << ": grid " << grid
+              << " triangles; pruned " << pruned.Filter->GetNumberOfPrunedComponents()
+              << " pieces, " << pruned.Output->GetNumberOfPolys() << " triangles left\n";
+    CD_CHECK(pruned.Errors == 0 && pruned.Warnings == 0);
+    CD_CHECK(pruned.Filter->GetNumberOfPrunedComponents() == removed);
+    CD_CHECK(pruned.Output->GetNumberOfPolys() == grid + 4 * (10 - removed));
+    // The tetrahedra left are the largest: their points are the last of the input.
+    const std::set<vtkIdType> ids = OriginalIds(pruned.Output);
+    CD_CHECK(ids.count(441 + 4 * removed) == 1 && ids.count(441 + 4 * removed - 1) == 0);
+    const RunResult locked = run(true, true);
+    const std::set<vtkIdType> lockedIds = OriginalIds(locked.Output);
+    CD_CHECK(locked.Filter->GetNumberOfPrunedComponents() == removed);
+    CD_CHECK(lockedIds.count(441) == 1 && lockedIds.count(441 + 4 * removed) == 0);
+  }
+  // Nothing to prune when collapses reach the target; and never the last piece.
+  CD_CHECK(Decimate(mesh, 0.5, [](vtkColorHalfEdgeDecimation* f) { f->PruneComponentsOn(); })
+             .Filter->GetNumberOfPrunedComponents() == 0);
+  auto single = meshes::Icosphere(2, Pattern::SharpRegions);
+  const RunResult all =
+    Decimate(single, 1.0, [](vtkColorHalfEdgeDecimation* f) { f->PruneComponentsOn(); });
+  CD_CHECK(all.Filter->GetNumberOfPrunedComponents() == 0 && all.Output->GetNumberOfPolys() > 0);
 }
 
 int main(int argc, char* argv[])

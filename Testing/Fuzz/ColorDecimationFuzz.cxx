@@ -289,9 +289,11 @@ struct Settings
   double MaximumError = 0.0;
   vtkIdType TargetTriangles = 0;
   const char* LockName = nullptr;
+  bool Prune = false;
 };
 
-/// The trailing controls byte: MaximumError, TargetNumberOfTriangles and a lock array.
+/// The trailing controls byte: MaximumError, TargetNumberOfTriangles, a lock array and
+/// PruneComponents.
 void ReadControls(ByteReader& in, vtkPolyData* mesh, Settings& settings)
 {
   const uint8_t controls = in.Byte();
@@ -299,6 +301,7 @@ void ReadControls(ByteReader& in, vtkPolyData* mesh, Settings& settings)
   static const vtkIdType targets[4] = { 0, 1, 5, VTK_ID_MAX };
   settings.MaximumError = bounds[controls & 7];
   settings.TargetTriangles = targets[(controls >> 3) & 3];
+  settings.Prune = (controls & 128) != 0;
   const int lock = (controls >> 5) & 3; // 0 none, 1 every third point, 2 missing, 3 short
   if (lock == 0)
   {
@@ -482,6 +485,7 @@ colordecimation::testing::RunResult Decimate(vtkPolyData* mesh, const Settings& 
       filter->SetGeometryWeight(settings.GeometryWeight);
       filter->SetMaximumError(settings.MaximumError);
       filter->SetTargetNumberOfTriangles(settings.TargetTriangles);
+      filter->SetPruneComponents(settings.Prune);
       if (settings.LockName)
       {
         filter->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,

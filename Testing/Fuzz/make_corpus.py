@@ -225,6 +225,12 @@ def seeds():
     soup_p = [g_p[i] for t in g_t[:20] for i in t]
     s["triangle_soup"] = encode(soup_p, [(3 * k, 3 * k + 1, 3 * k + 2) for k in range(20)],
                                 colors=colors_for(soup_p))
+    # PruneComponents on pieces: the grid's triangles as a soup (every triangle its own piece),
+    # decimated to 5 triangles with every third point locked.
+    s["triangle_soup_prune_locks"] = encode(soup_p, [(3 * k, 3 * k + 1, 3 * k + 2)
+                                                     for k in range(20)],
+                                            colors=colors_for(soup_p),
+                                            controls=128 | (2 << 3) | (1 << 5))
     z_p = list(g_p)
     for i in range(9, 18):
         z_p[i] = z_p[i - 9]  # second row on the first: zero-area triangles

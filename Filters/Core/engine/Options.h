@@ -84,6 +84,9 @@ struct DecimatorOptions
   /// Stop before the first collapse whose geometric error (rules/ErrorBound.h) exceeds this
   /// distance, in the input's units (section 14); <= 0: no bound.
   double MaximumError = 0.0;
+  /// When collapses alone leave more than the target, remove whole connected pieces, smallest
+  /// area first (mesh/Components.h; section 14). Not after an abort or at MaximumError.
+  bool PruneComponents = false;
 };
 
 struct DecimatorInput
@@ -115,6 +118,8 @@ struct DecimatorStatistics
   /// whether the run stopped at the bound.
   double ActualError = 0;
   bool ErrorBoundReached = false;
+  int64_t PrunedComponents = 0;    ///< pieces removed by PruneComponents
+  int64_t PrunedTriangles = 0;     ///< their triangles
   size_t StateBytes = 0;           ///< bytes held by the decimator's arrays
   size_t MetricBytesPerVertex = 0; ///< the metric's per-vertex state
 };

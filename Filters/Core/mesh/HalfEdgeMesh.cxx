@@ -471,4 +471,19 @@ void HalfEdgeMesh::Renumber(const int32_t* vertexTo, const int32_t* faceTo, int 
   Permute(this->Flags, this->GetNumberOfVertices(), vertexTo, 1, threads);
 }
 
+void HalfEdgeMesh::RemoveComponent(const int32_t* faces, int32_t count)
+{
+  for (int32_t i = 0; i < count; ++i)
+  {
+    for (int32_t h = 3 * faces[i]; h < 3 * faces[i] + 3; ++h)
+    {
+      const int32_t v = this->Corners[h].Vertex;
+      this->Out[v] = -1;
+      this->Flags[v] |= Removed;
+      this->Corners[h] = Corner{ -1, -1 };
+    }
+  }
+  this->LiveFaces -= count;
+}
+
 } // namespace colordecimation

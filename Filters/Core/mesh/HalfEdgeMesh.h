@@ -199,6 +199,12 @@ public:
    * only; the count is the one thing they would otherwise share.
    */
   int CollapseUncounted(int32_t v0, int32_t v1);
+  /**
+   * Remove the `count` faces `faces` and their vertices: a whole connected piece (every face of
+   * each of their vertices is among them, so no half-edge outside refers to them).
+   */
+  void RemoveComponent(const int32_t* faces, int32_t count);
+
   /// Account for `count` faces removed by CollapseUncounted.
   void RemoveLiveFaces(int64_t count) { this->LiveFaces -= count; }
 
