@@ -278,13 +278,21 @@ colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, 
   return options;
 }
 
-/// Non-manifold places are kept as they are: say so.
-void ReportBuild(vtkColorHalfEdgeDecimation* self, const colordecimation::MeshBuildReport& build)
+/// Non-manifold places are kept as they are: say so (reoriented triangles are legitimate).
+void ReportBuild(vtkColorHalfEdgeDecimation* self,
+                 const colordecimation::DecimatorStatistics& stats)
 {
+  const colordecimation::MeshBuildReport& build = stats.Build;
+  if (stats.ReorientedTriangles > 0)
+  {
+    vtkDebugWithObjectMacro(
+      self, << stats.ReorientedTriangles
+            << " triangles were decimated reversed, to wind their piece one way.");
+  }
   if (build.NonManifoldEdges > 0 || build.NonManifoldVertices > 0)
   {
     vtkWarningWithObjectMacro(self, << "The input has " << build.NonManifoldEdges
-                                    << " non-manifold or inconsistently oriented edges and "
+                                    << " non-manifold or non-orientable edges and "
                                     << build.NonManifoldVertices << " non-manifold vertices; their "
                                     << build.LockedVertices << " vertices are kept as they are.");
   }
@@ -306,6 +314,7 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   , MaximumError(0.0)
   , ActualError(0.0)
   , PruneComponents(false)
+  , ConsistentOrientation(false)
   , NumberOfPrunedComponents(0)
   , PreserveBoundary(false)
   , MaximumNormalAngle(90.0)
@@ -432,7 +441,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
                     this->UpdateProgress(0.05 + 0.85 * fraction);
                     return !this->GetAbortExecute();
                   });
-  ReportBuild(this, stats.Build);
+  ReportBuild(this, stats);
   this->NumberOfCollapses = stats.Collapses;
   this->ActualError = stats.ActualError;
   this->NumberOfPrunedComponents = stats.PrunedComponents;
@@ -441,9 +450,12 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
     std::max({ stats.Threads, stats.CollapseThreads, stats.WideCollapseThreads });
 
   // 4. The output: the surviving triangles on the points they use, in input order.
-  const vtkIdType numOutTriangles = colordecimation::adapter::WriteOutput(
-    this, input, mesh, decimator,
-    this->GenerateOriginalPointIds ? this->OriginalPointIdsArrayName : nullptr, output);
+  colordecimation::adapter::OutputOptions written;
+  written.OriginalIdsName =
+    this->GenerateOriginalPointIds ? this->OriginalPointIdsArrayName : nullptr;
+  written.ConsistentOrientation = this->ConsistentOrientation != 0;
+  const vtkIdType numOutTriangles =
+    colordecimation::adapter::WriteOutput(this, input, mesh, decimator, written, output);
   this->ActualReduction = 1.0 - static_cast<double>(numOutTriangles) / numTriangles;
   if (!this->GetAbortExecute())
   {
@@ -509,6 +521,7 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TargetNumberOfTriangles: " << this->TargetNumberOfTriangles << "\n";
   os << indent << "MaximumError: " << this->MaximumError << "\n";
   os << indent << "PruneComponents: " << (this->PruneComponents ? "On" : "Off") << "\n";
+  os << indent << "ConsistentOrientation: " << (this->ConsistentOrientation ? "On" : "Off") << "\n";
   os << indent
      << "LockArrayName: " << (this->GetLockArrayName() ? this->GetLockArrayName() : "(none)")
      << "\n";

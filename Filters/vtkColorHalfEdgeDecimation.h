@@ -49,8 +49,9 @@
  *
  * Collapses keep the surface a 2-manifold where it was one (link condition), never flip a
  * triangle normal by more than MaximumNormalAngle, never create a degenerate triangle, and
- * keep the Euler characteristic of closed manifold input. Vertices on non-manifold edges,
- * bow-tie vertices and vertices of inconsistently oriented triangles are kept, together with
+ * keep the Euler characteristic of closed manifold input. Triangles wound both ways are
+ * decimated as their piece wound one way (see ConsistentOrientation). Vertices on non-manifold
+ * edges, bow-tie vertices and the vertices of non-orientable places are kept, together with
  * their triangles.
  *
  * Distributed data: when the input is one piece of several (UPDATE_NUMBER_OF_PIECES > 1, as
@@ -125,8 +126,9 @@ public:
    * metric, the Greedy schedule, no boundary planes (BoundaryWeight 0), no edge-length term,
    * GeometryWeight 1, RGB colours, MaximumNormalAngle 90, PreserveBoundary off (and
    * ColorWeight 1, OptimalPlacement off, which the paper's metric does not read).
-   * TargetReduction, TargetNumberOfTriangles, MaximumError, PruneComponents, NumberOfThreads,
-   * the lock array and the original point ids are left as they are.
+   * TargetReduction, TargetNumberOfTriangles, MaximumError, PruneComponents,
+   * ConsistentOrientation, NumberOfThreads, the lock array and the original point ids are left
+   * as they are.
    */
   void SetPaperDefaults();
 
@@ -295,6 +297,20 @@ public:
 
   ///@{
   /**
+   * Triangles wound both ways within a connected piece (merged scans, some exports) are
+   * decimated as if the piece were wound one way: each piece is oriented as
+   * vtkPolyDataNormals' consistency step would, keeping the winding of most of its triangles.
+   * When off (default), each output triangle keeps its input triangle's winding; when on, it
+   * is wound as its piece (consistent output). Only non-orientable places (a Moebius strip's
+   * seam) stay locked.
+   */
+  vtkSetMacro(ConsistentOrientation, vtkTypeBool);
+  vtkGetMacro(ConsistentOrientation, vtkTypeBool);
+  vtkBooleanMacro(ConsistentOrientation, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * When on, and collapses alone leave more triangles than the target, whole connected pieces
    * (triangles connected through shared points) are removed, smallest area first (ties: fewer
    * triangles first), until the target is met: the small fragments of a scan, each of which
@@ -416,6 +432,7 @@ protected:
   double MaximumError;
   double ActualError;
   vtkTypeBool PruneComponents;
+  vtkTypeBool ConsistentOrientation;
   vtkIdType NumberOfPrunedComponents;
   vtkTypeBool PreserveBoundary;
   double MaximumNormalAngle;

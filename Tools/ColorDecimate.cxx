@@ -257,6 +257,10 @@ void AddFilterOptions(CLI::App& app, Options& options)
                   "(default " +
                     Number(Defaults()->GetMaximumNormalAngle()) + ")")
     ->type_name("DEG");
+  AddFilterFlag(app, options, "--consistent-orientation", &F::SetConsistentOrientation, 1,
+                "wind every output triangle as its piece is wound (input wound both\n"
+                "ways is always decimated as if wound one way; by default each\n"
+                "output triangle keeps its input triangle's winding)");
   AddFilterFlag(app, options, "--no-original-ids", &F::SetGenerateOriginalPointIds, 0,
                 "do not add the vtkOriginalPointIds point array");
   AddValue(
@@ -727,6 +731,7 @@ Json Settings(vtkColorHalfEdgeDecimation* filter)
   settings["target_triangles"] = static_cast<long long>(filter->GetTargetNumberOfTriangles());
   settings["max_error"] = filter->GetMaximumError();
   settings["prune_components"] = filter->GetPruneComponents() != 0;
+  settings["consistent_orientation"] = filter->GetConsistentOrientation() != 0;
   settings["lock_array"] = filter->GetLockArrayName() ? filter->GetLockArrayName() : "";
   return settings;
 }

@@ -16,6 +16,7 @@
 #include "vtkSetGet.h"
 #include "vtkType.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -86,9 +87,11 @@ void WritePoints(vtkPolyData* input, const Decimator& decimator, const UsedPoint
 }
 
 /// The surviving triangles, in input order, and the input cell of each (sourceCells).
-void WriteTriangles(const HalfEdgeMesh& mesh, const TriangleSoup& soup, const UsedPoints& used,
-                    vtkIdList* sourceCells, vtkIdList* targetCells, vtkPolyData* output)
+void WriteTriangles(const Decimator& decimator, bool consistent, const TriangleSoup& soup,
+                    const UsedPoints& used, vtkIdList* sourceCells, vtkIdList* targetCells,
+                    vtkPolyData* output)
 {
+  const HalfEdgeMesh& mesh = decimator.GetMesh();
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfValues(3 * used.Triangles);
   sourceCells->SetNumberOfIds(used.Triangles);
@@ -100,6 +103,10 @@ void WriteTriangles(const HalfEdgeMesh& mesh, const TriangleSoup& soup, const Us
     {
       int32_t tri[3];
       mesh.GetFace(f, tri);
+      if (!consistent && decimator.IsFlipped(f))
+      {
+        std::swap(tri[1], tri[2]); // back to the input triangle's winding
+      }
       for (int k = 0; k < 3; ++k)
       {
         connectivity->SetValue(3 * t + k, used.NewId[tri[k]]);
@@ -241,7 +248,7 @@ void KeepConsistentArrays(vtkDataSetAttributes* data, vtkIdType tuples,
 } // namespace
 
 vtkIdType WriteOutput(vtkObject* self, vtkPolyData* input, const InputMesh& mesh,
-                      const Decimator& decimator, const char* originalIdsName, vtkPolyData* output)
+                      const Decimator& decimator, const OutputOptions& options, vtkPolyData* output)
 {
   const vtkIdType numPoints = input->GetNumberOfPoints();
   UsedPoints used;
@@ -249,7 +256,8 @@ vtkIdType WriteOutput(vtkObject* self, vtkPolyData* input, const InputMesh& mesh
   WritePoints(input, decimator, used, output);
   vtkNew<vtkIdList> sourceCells;
   vtkNew<vtkIdList> targetCells;
-  WriteTriangles(decimator.GetMesh(), mesh.Soup, used, sourceCells, targetCells, output);
+  WriteTriangles(decimator, options.ConsistentOrientation, mesh.Soup, used, sourceCells,
+                 targetCells, output);
 
   // Arrays whose tuple count does not match their points or cells cannot be carried.
   vtkNew<vtkPointData> inPD;
@@ -272,9 +280,9 @@ vtkIdType WriteOutput(vtkObject* self, vtkPolyData* input, const InputMesh& mesh
   {
     WriteMovedColors(mesh, decimator, used, outPD);
   }
-  if (originalIdsName && *originalIdsName)
+  if (options.OriginalIdsName && *options.OriginalIdsName)
   {
-    WriteOriginalIds(self, input, originalIdsName, used, outPD);
+    WriteOriginalIds(self, input, options.OriginalIdsName, used, outPD);
   }
   vtkCellData* outCD = output->GetCellData();
   outCD->CopyAllocate(inCD, used.Triangles);

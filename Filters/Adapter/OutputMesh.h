@@ -20,14 +20,24 @@ namespace adapter
 {
 struct InputMesh;
 
+/// How the output is written.
+struct OutputOptions
+{
+  const char* OriginalIdsName = nullptr; ///< the array of original point ids (none if empty)
+  /// Triangles wound as the decimation wound their piece (otherwise as in the input).
+  bool ConsistentOrientation = false;
+};
+
 /**
- * Fill `output` from the decimated mesh: points (moved ones at their new position), triangles,
- * point data (moved ones with their new colour), an array of original point ids named
- * `originalIdsName` (none if null or empty), and cell data. Arrays whose size does not match
- * the input are left out, with a warning on `self`. Returns the number of output triangles.
+ * Fill `output` from the decimated mesh: points (moved ones at their new position), triangles
+ * (each wound as its input triangle, or with ConsistentOrientation as its piece), point data
+ * (moved ones with their new colour), the original point ids, and cell data. Arrays whose
+ * size does not match the input are left out, with a warning on `self`. Returns the number of
+ * output triangles.
  */
 vtkIdType WriteOutput(vtkObject* self, vtkPolyData* input, const InputMesh& mesh,
-                      const Decimator& decimator, const char* originalIdsName, vtkPolyData* output);
+                      const Decimator& decimator, const OutputOptions& options,
+                      vtkPolyData* output);
 
 } // namespace adapter
 } // namespace colordecimation

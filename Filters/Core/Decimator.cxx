@@ -126,6 +126,11 @@ const std::vector<ColorQuadric>& Decimator::GetColorQuadrics() const
   return metric ? metric->States : none;
 }
 
+bool Decimator::IsFlipped(int32_t t) const
+{
+  return this->TheEngine && this->TheEngine->IsFlipped(t);
+}
+
 bool Decimator::HasMovedVertices() const
 {
   return this->TheEngine && this->TheEngine->HasMovedVertices();

@@ -55,6 +55,12 @@ public:
   /// The per-vertex state of ColorQuadric (each centred at its vertex's point of R^6).
   const std::vector<ColorQuadric>& GetColorQuadrics() const;
 
+  /**
+   * Whether input triangle t was decimated reversed, so that its piece is wound one way (the
+   * mesh's face t then runs the other way round from the input's triangle t).
+   */
+  bool IsFlipped(int32_t t) const;
+
   /// Whether a collapse moved a surviving vertex (ColorQuadric with OptimalPlacement).
   bool HasMovedVertices() const;
   /// Whether vertex v was moved (and recoloured) by a full collapse.

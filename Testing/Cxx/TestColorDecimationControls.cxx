@@ -1,11 +1,13 @@
-// Tests of the stop and lock controls of vtkColorHalfEdgeDecimation: TargetNumberOfTriangles,
-// MaximumError with ActualError (on hand-built meshes whose error is computed by hand), and the
-// lock array (SetInputArrayToProcess(1, ...)) with its bad inputs.
+// Tests of the controls of vtkColorHalfEdgeDecimation for real-world meshes:
+// TargetNumberOfTriangles, MaximumError with ActualError (on hand-built meshes whose error is
+// computed by hand), the lock array (SetInputArrayToProcess(1, ...)) with its bad inputs,
+// PruneComponents, and input wound both ways (ConsistentOrientation).
 #include "ColorDecimationTestUtilities.h"
 
 #include "ColorDecimationMeshes.h"
 #include "vtkColorHalfEdgeDecimation.h"
 
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
@@ -18,6 +20,7 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <random>
 #include <set>
 
 using namespace colordecimation;
@@ -401,6 +404,62 @@ CD_TEST_CASE(PruneComponents)
   const RunResult all =
     Decimate(single, 1.0, [](vtkColorHalfEdgeDecimation* f) { f->PruneComponentsOn(); });
   CD_CHECK(all.Filter->GetNumberOfPrunedComponents() == 0 && all.Output->GetNumberOfPolys() > 0);
+}
+
+//------------------------------------------------------------------------------
+CD_TEST_CASE(FlippedSphere)
+{
+  // A sphere with 30 % of its triangles wound the other way is decimated as the sphere it is:
+  // cell for cell the output of the consistent sphere, each triangle wound as its input
+  // triangle (or, with ConsistentOrientation, as the consistent sphere's).
+  auto sphere = meshes::Icosphere(4, Pattern::SharpRegions);
+  Decorate(sphere);
+  auto flipped = Copy(sphere);
+  std::vector<Tri> triangles = GetTriangles(sphere);
+  std::mt19937 random(7);
+  std::vector<char> reversed(triangles.size(), 0);
+  vtkNew<vtkCellArray> polys;
+  for (size_t c = 0; c < triangles.size(); ++c)
+  {
+    reversed[c] = random() % 10 < 3 ? 1 : 0;
+    const Tri& t = triangles[c];
+    const vtkIdType ids[3] = { t[0], reversed[c] ? t[2] : t[1], reversed[c] ? t[1] : t[2] };
+    polys->InsertNextCell(3, ids);
+  }
+  flipped->SetPolys(polys);
+  for (const auto& [schedule, reduction] : { std::pair<int, double>{ Schedules[0], 0.9 },
+                                             { Schedules[0], 0.97 },
+                                             { Schedules[1], 0.9 },
+                                             { Schedules[1], 0.97 } })
+  {
+    auto configure = [schedule = schedule](bool consistent)
+    {
+      return [schedule, consistent](vtkColorHalfEdgeDecimation* f)
+      {
+        f->SetCollapseSchedule(schedule);
+        f->SetConsistentOrientation(consistent);
+      };
+    };
+    const RunResult plain = Decimate(sphere, reduction, configure(false));
+    const RunResult mixed = Decimate(flipped, reduction, configure(false));
+    const RunResult consistent = Decimate(flipped, reduction, configure(true));
+    CD_CHECK(mixed.Errors == 0 && mixed.Warnings == 0);
+    CD_CHECK(mixed.ActualReduction == plain.ActualReduction &&
+             plain.ActualReduction >= reduction - 1e-3);
+    const std::vector<Tri> expected = GetOriginalTriangles(plain.Output);
+    const std::vector<Tri> kept = GetOriginalTriangles(mixed.Output);
+    CD_CHECK(GetOriginalTriangles(consistent.Output) == expected);
+    // The input cell of each output triangle (Decorate's cell ids) tells its winding.
+    vtkDataArray* cells = mixed.Output->GetCellData()->GetArray("SourceId");
+    long long wrong = kept.size() == expected.size() && cells ? 0 : 1;
+    for (size_t c = 0; wrong == 0 && c < kept.size(); ++c)
+    {
+      const Tri& t = expected[c];
+      const bool back = reversed[static_cast<size_t>(cells->GetTuple1(vtkIdType(c)))] != 0;
+      wrong += kept[c] == (back ? Tri{ t[0], t[2], t[1] } : t) ? 0 : 1;
+    }
+    CD_CHECK_MSG(wrong == 0, "output triangles keep their input winding");
+  }
 }
 
 int main(int argc, char* argv[])

@@ -1069,7 +1069,7 @@ CD_TEST_CASE(HalfEdgeNonManifold)
   const int32_t twisted[6] = { 0, 1, 2, 0, 1, 3 };
   report = mesh.Build(4, twisted, 2);
   CheckBuildThreads(4, twisted, 2);
-  CD_CHECK(report.NonManifoldEdges == 1);
+  CD_CHECK(report.NonManifoldEdges == 1 && report.MisorientedEdges == 1);
   CD_CHECK(mesh.IsLocked(0) && mesh.IsLocked(1) && !mesh.IsLocked(2));
 
   // A bow-tie: two fans (0,1,2),(0,2,3) and (0,4,5),(0,5,6) meet only at vertex 0.

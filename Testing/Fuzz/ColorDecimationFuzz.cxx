@@ -290,6 +290,7 @@ struct Settings
   vtkIdType TargetTriangles = 0;
   const char* LockName = nullptr;
   bool Prune = false;
+  bool ConsistentOrientation = false;
 };
 
 /// The trailing controls byte: MaximumError, TargetNumberOfTriangles, a lock array and
@@ -302,6 +303,7 @@ void ReadControls(ByteReader& in, vtkPolyData* mesh, Settings& settings)
   settings.MaximumError = bounds[controls & 7];
   settings.TargetTriangles = targets[(controls >> 3) & 3];
   settings.Prune = (controls & 128) != 0;
+  settings.ConsistentOrientation = (in.Byte() & 1) != 0;
   const int lock = (controls >> 5) & 3; // 0 none, 1 every third point, 2 missing, 3 short
   if (lock == 0)
   {
@@ -486,6 +488,7 @@ colordecimation::testing::RunResult Decimate(vtkPolyData* mesh, const Settings& 
       filter->SetMaximumError(settings.MaximumError);
       filter->SetTargetNumberOfTriangles(settings.TargetTriangles);
       filter->SetPruneComponents(settings.Prune);
+      filter->SetConsistentOrientation(settings.ConsistentOrientation);
       if (settings.LockName)
       {
         filter->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,

@@ -38,6 +38,7 @@
  *  *  controls: bits 0-2 MaximumError (0, 1e-9, 1e-3, 0.1, 10, NaN, -1, inf), 3-4
  *     TargetNumberOfTriangles (0, 1, 5, VTK_ID_MAX), 5-6 lock array (none; "Lock" locking every
  *     third point; a name the input lacks; "Lock" with half the tuples), 7 PruneComponents
+ *  *  more controls: bit 0 ConsistentOrientation
  * @endverbatim
  *
  * With the environment variable COLORDECIMATION_FUZZ_CONSISTENT_ARRAYS set, the colour array

@@ -53,7 +53,7 @@ def encode(points, triangles, *, metric=0, preserve=False, no_ids=False, double=
            by_name=False, extra=False, stale_ids=False, cell_ghosts=None, point_ghosts=None,
            unnamed=False, target=225, angle=125, weight=0, scale=0, polys=(), strips=(),
            verts=(), lines=(), color_kind=2, components=3, raw=False, count_code=0,
-           colors=None, controls=None):
+           colors=None, controls=None, more_controls=None):
     """Encode one input. `colors` is a flat list of values (bytes unless raw)."""
     options = (metric & 3) | (4 if preserve else 0) | (8 if no_ids else 0) | \
         (16 if double else 0) | (32 if by_name else 0) | (64 if extra else 0) | \
@@ -87,6 +87,8 @@ def encode(points, triangles, *, metric=0, preserve=False, no_ids=False, double=
         out += bytes(point_ghosts)
     if controls is not None:
         out.append(controls)
+    if more_controls is not None:
+        out.append(more_controls)
     return bytes(out)
 
 
@@ -205,6 +207,8 @@ def seeds():
     # Mixed orientation: every third triangle reversed.
     mixed = [t if k % 3 else (t[0], t[2], t[1]) for k, t in enumerate(w_t)]
     s["mixed_orientation"] = encode(w_p, mixed, colors=colors_for(w_p))
+    s["mixed_orientation_consistent"] = encode(w_p, mixed, colors=colors_for(w_p), controls=0,
+                                               more_controls=1)
     # Bow-tie: two fans sharing their centre.
     bow_p = [(0, 0, 0)] + [(2 * math.cos(a), 2 * math.sin(a), 0.5)
                            for a in [k * math.pi / 6 for k in range(12)]]

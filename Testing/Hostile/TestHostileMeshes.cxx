@@ -525,12 +525,13 @@ CD_TEST_CASE(IsolatedPoints)
 }
 
 /**
- * A grid whose triangles inside a block are reversed. The seam edges (two triangles of
- * disagreeing orientation) lock their vertices, so each of them keeps its two triangles; both
- * regions are decimated; no output triangle is reversed against its own region (normal turned
- * by more than 120 degrees from the region's side; the flip guard bounds each collapse's turn
- * by MaximumNormalAngle, 90 degrees, so output triangles may stand steeply, see
- * docs/RELIABILITY.md).
+ * A grid whose triangles inside a block are reversed (48 seam edges whose two triangles run
+ * them the same way). The grid is decimated as if wound one way: no warning, the target
+ * reached, and each output triangle keeps the winding of its input triangle (no output
+ * triangle reversed against its own region: normal turned by more than 120 degrees from the
+ * region's side; the flip guard bounds each collapse's turn by MaximumNormalAngle, 90 degrees,
+ * so output triangles may stand steeply, see docs/RELIABILITY.md). With ConsistentOrientation
+ * every output triangle faces the majority's side.
  */
 CD_TEST_CASE(MixedOrientation)
 {
@@ -553,60 +554,88 @@ CD_TEST_CASE(MixedOrientation)
   colordecimation::meshes::ApplyPattern(mesh, Pattern::SmoothGradient);
   AddCellValues(mesh, "Orientation", orientation);
   CD_CHECK_MSG(TriangleNormalZ(mesh, triangles[0]) > 0, "the grid faces +z");
-  // The seam: edges whose two triangles use them in the same direction.
-  std::map<std::pair<vtkIdType, vtkIdType>, int> directed;
-  for (const auto& t : triangles)
+  CD_CHECK_MSG(AnalyseTopology(triangles).MisorientedEdges == 48, "the seam has 48 edges");
+  for (const bool consistent : { false, true })
   {
-    for (int k = 0; k < 3; ++k)
+    RunResult run =
+      Run(mesh, 0.9,
+          [consistent](vtkColorHalfEdgeDecimation* f) { f->SetConsistentOrientation(consistent); });
+    ExpectNoMessages(run);
+    ExpectReached(run, 0.9);
+    vtkIntArray* outOrientation =
+      vtkIntArray::SafeDownCast(run.Output->GetCellData()->GetArray("Orientation"));
+    const Triangles out = GetTriangles(run.Output);
+    int reversed = 0, steep = 0;
+    for (size_t c = 0; c < out.size() && outOrientation; ++c)
     {
-      ++directed[{ t[k], t[(k + 1) % 3] }];
+      double a[3], b[3], d[3], u[3], v[3], n[3];
+      run.Output->GetPoint(out[c][0], a);
+      run.Output->GetPoint(out[c][1], b);
+      run.Output->GetPoint(out[c][2], d);
+      vtkMath::Subtract(b, a, u);
+      vtkMath::Subtract(d, a, v);
+      vtkMath::Cross(u, v, n);
+      const int expected = consistent ? 1 : outOrientation->GetValue(static_cast<vtkIdType>(c));
+      const double side = n[2] * expected;
+      reversed += side < -0.5 * vtkMath::Norm(n) ? 1 : 0;
+      steep += side <= 0 ? 1 : 0;
     }
+    CD_CHECK_MSG(outOrientation && reversed == 0,
+                 reversed << " output triangles are reversed against their region");
+    CD_CHECK_MSG(consistent || AnalyseTopology(out).MisorientedEdges > 0,
+                 "the output keeps the input's two windings");
+    CD_CHECK_MSG(!consistent || AnalyseTopology(out).MisorientedEdges == 0,
+                 "ConsistentOrientation: the output is wound one way");
+    std::cout << "  " << (consistent ? "consistent" : "input winding") << ": " << steep
+              << " output triangles stand at 90 degrees or more to their region\n";
   }
-  std::set<std::pair<vtkIdType, vtkIdType>> seam;
-  for (const auto& e : directed)
-  {
-    if (e.second == 2)
-    {
-      seam.insert(
-        { std::min(e.first.first, e.first.second), std::max(e.first.first, e.first.second) });
-    }
-  }
-  CD_CHECK_MSG(seam.size() == 48, "the seam has 48 edges (" << seam.size() << ")");
+}
 
+/**
+ * A Moebius strip cannot be wound one way: the edges where the orientation must break are
+ * locked (a warning counts them), the rest is decimated.
+ */
+CD_TEST_CASE(MoebiusStrip)
+{
+  std::vector<std::array<double, 3>> points;
+  const int around = 60;
+  for (int i = 0; i < around; ++i)
+  {
+    const double a = 2.0 * vtkMath::Pi() * i / around;
+    for (const double w : { -0.3, 0.0, 0.3 })
+    {
+      const double r = 1.0 + w * std::cos(a / 2);
+      points.push_back({ r * std::cos(a), r * std::sin(a), w * std::sin(a / 2) });
+    }
+  }
+  Triangles triangles;
+  for (int i = 0; i < around; ++i)
+  {
+    const int j = (i + 1) % around;
+    for (int k = 0; k < 2; ++k)
+    {
+      // The last column joins the first one upside down: that is the twist.
+      const vtkIdType a = 3 * i + k, b = 3 * i + k + 1;
+      const vtkIdType c = j == 0 ? 3 * j + (2 - k) : 3 * j + k;
+      const vtkIdType d = j == 0 ? 3 * j + (1 - k) : 3 * j + k + 1;
+      triangles.push_back({ a, c, d });
+      triangles.push_back({ a, d, b });
+    }
+  }
+  auto mesh = Make(points, triangles);
+  colordecimation::meshes::ApplyPattern(mesh, Pattern::SmoothGradient);
   RunResult run = Run(mesh, 0.9);
-  CD_CHECK_MSG(run.Errors == 0, "no error");
-  CD_CHECK_MSG(run.HasWarning("48 non-manifold or inconsistently oriented edges"),
-               "a warning about the 48 seam edges");
-  CD_CHECK_MSG(run.ActualReduction > 0.6, "both regions are decimated");
-  const Triangles original = OriginalTriangles(run.Output);
-  size_t seamKept = 0;
-  for (const auto& e : EdgeUses(original))
-  {
-    seamKept += (seam.count(e.first) && e.second == 2) ? 1 : 0;
-  }
-  CD_CHECK_MSG(seamKept == seam.size(),
-               "every seam edge keeps its two triangles (" << seamKept << " of " << seam.size()
-                                                           << ")");
-  vtkIntArray* outOrientation =
-    vtkIntArray::SafeDownCast(run.Output->GetCellData()->GetArray("Orientation"));
-  const Triangles out = GetTriangles(run.Output);
-  int reversed = 0, steep = 0;
-  for (size_t c = 0; c < out.size() && outOrientation; ++c)
-  {
-    double a[3], b[3], d[3], u[3], v[3], n[3];
-    run.Output->GetPoint(out[c][0], a);
-    run.Output->GetPoint(out[c][1], b);
-    run.Output->GetPoint(out[c][2], d);
-    vtkMath::Subtract(b, a, u);
-    vtkMath::Subtract(d, a, v);
-    vtkMath::Cross(u, v, n);
-    const double side = n[2] * outOrientation->GetValue(static_cast<vtkIdType>(c));
-    reversed += side < -0.5 * vtkMath::Norm(n) ? 1 : 0;
-    steep += side <= 0 ? 1 : 0;
-  }
-  CD_CHECK_MSG(outOrientation && reversed == 0,
-               reversed << " output triangles are reversed against their region");
-  std::cout << "  " << steep << " output triangles stand at 90 degrees or more to their region\n";
+  CD_CHECK_MSG(run.Errors == 0 && run.HasWarning("non-orientable"),
+               "a warning about the non-orientable edges");
+  const Topology in = AnalyseTopology(triangles), out = AnalyseTopology(GetTriangles(run.Output));
+  std::cout << "  Moebius strip: " << in.Faces << " -> " << out.Faces << " triangles, "
+            << in.MisorientedEdges << " -> " << out.MisorientedEdges << " edges run one way\n";
+  CD_CHECK_MSG(in.Euler() == 0 && in.MisorientedEdges == 2, "the input is a Moebius strip");
+  CD_CHECK_MSG(run.ActualReduction > 0.5, "the strip is decimated");
+  // Still a strip with its twist: Euler characteristic 0, no non-manifold edge, and (kept
+  // with the input's winding) an edge its two triangles run the same way.
+  CD_CHECK_MSG(out.Euler() == 0 && out.NonManifoldEdges == 0 && out.MisorientedEdges >= 1,
+               "still a Moebius strip: " << out);
 }
 
 //------------------------------------------------------------------------------

@@ -1,5 +1,8 @@
 #include "engine/Engine.h"
 
+#include "mesh/Orientation.h"
+
+#include <algorithm>
 #include <cmath>
 
 namespace colordecimation
@@ -76,10 +79,30 @@ void EngineBase::ComputeOrder(const DecimatorInput& input)
 void EngineBase::BuildMesh(const DecimatorInput& input, DecimatorStatistics& stats)
 {
   const int32_t n = input.NumberOfPoints;
-  stats.Build = this->Mesh.Build(n, input.Triangles, input.NumberOfTriangles,
-                                 this->ThreadCount(3 * size_t(input.NumberOfTriangles)),
-                                 this->Renumbered ? this->Order.OldFace.data() : nullptr,
-                                 this->Renumbered ? this->Order.NewVertex.data() : nullptr);
+  const auto build = [this, &input, &stats, n](const int32_t* triangles)
+  {
+    stats.Build = this->Mesh.Build(n, triangles, input.NumberOfTriangles,
+                                   this->ThreadCount(3 * size_t(input.NumberOfTriangles)),
+                                   this->Renumbered ? this->Order.OldFace.data() : nullptr,
+                                   this->Renumbered ? this->Order.NewVertex.data() : nullptr);
+  };
+  build(input.Triangles);
+  this->Flipped = std::vector<uint8_t>();
+  if (stats.Build.MisorientedEdges > 0)
+  {
+    // Triangles wound both ways: built again, each piece wound one way (section 10).
+    std::vector<int32_t> oriented;
+    this->Flipped = OrientTriangles(input.Triangles, input.NumberOfTriangles, oriented);
+    stats.ReorientedTriangles = std::count(this->Flipped.begin(), this->Flipped.end(), 1);
+    if (stats.ReorientedTriangles > 0)
+    {
+      build(oriented.data());
+    }
+    else
+    {
+      this->Flipped = std::vector<uint8_t>(); // only non-orientable places: as built
+    }
+  }
   this->Order.NewVertex = std::vector<int32_t>();
   if (input.Fixed)
   {

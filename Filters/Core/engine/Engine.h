@@ -61,7 +61,8 @@ public:
 
   /**
    * The set-up before the metric's state: the spatial order of a large mesh, the connectivity
-   * (with the input's fixed points locked), the frame and the hot records (with colour when
+   * (built again with each piece wound one way if the input's winding disagrees; the input's
+   * fixed points locked), the frame and the hot records (with colour when
    * useColor), and the input normals that bound each face's drift.
    */
   void SetUp(const DecimatorInput& input, bool useColor, DecimatorStatistics& stats);
@@ -84,6 +85,8 @@ public:
   int GetThreadsUsed() const { return this->ThreadsUsed; }
   /// The current colour of v as RGB in [0,1].
   void GetOutputColor(int32_t v, double rgb[3]) const;
+  /// Whether input triangle t was reversed to wind its piece one way (section 10).
+  bool IsFlipped(int32_t t) const { return !this->Flipped.empty() && this->Flipped[t] != 0; }
   /// Whether a MaximumError bound applies.
   bool HasErrorBound() const { return this->Errors.IsEnabled(); }
   /// A squared error of ErrorBound (frame units) as a distance in the input's units.
@@ -144,6 +147,7 @@ protected:
   SpatialOrder Order;
   Buffer<float> ReferenceNormals; ///< the input normal of every face slot (CollapseRules)
   ErrorBound Errors;              ///< the planes of MaximumError (empty without a bound)
+  std::vector<uint8_t> Flipped;   ///< per input triangle: reversed (empty: none was)
   mutable int ThreadsUsed = 1;
 
 private:

@@ -118,6 +118,7 @@ struct DecimatorStatistics
   /// whether the run stopped at the bound.
   double ActualError = 0;
   bool ErrorBoundReached = false;
+  int64_t ReorientedTriangles = 0; ///< reversed to wind their piece one way (section 10)
   int64_t PrunedComponents = 0;    ///< pieces removed by PruneComponents
   int64_t PrunedTriangles = 0;     ///< their triangles
   size_t StateBytes = 0;           ///< bytes held by the decimator's arrays

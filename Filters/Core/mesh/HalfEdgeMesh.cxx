@@ -21,7 +21,7 @@ namespace
 /// What pairing found on one thread: edges to count, vertices to lock.
 struct PairingResult
 {
-  int64_t BoundaryEdges = 0, NonManifoldEdges = 0;
+  int64_t BoundaryEdges = 0, NonManifoldEdges = 0, MisorientedEdges = 0;
   std::vector<int32_t> ToLock;
 };
 } // namespace
@@ -140,6 +140,7 @@ void HalfEdgeMesh::PairTwins(int32_t numVertices, int threads, const OutgoingRow
       if (smallest == h)
       {
         ++result.NonManifoldEdges;
+        result.MisorientedEdges += forward + backward == 2 ? 1 : 0; // two triangles, one way
       }
     }
   };
@@ -171,6 +172,7 @@ void HalfEdgeMesh::Gather(const Result& result, MeshBuildReport& report)
 {
   report.BoundaryEdges += result.BoundaryEdges;
   report.NonManifoldEdges += result.NonManifoldEdges;
+  report.MisorientedEdges += result.MisorientedEdges;
   for (const int32_t v : result.ToLock)
   {
     this->Flags[v] |= Locked;

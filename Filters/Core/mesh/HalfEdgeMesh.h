@@ -47,6 +47,7 @@ struct MeshBuildReport
 {
   int64_t BoundaryEdges = 0;
   int64_t NonManifoldEdges = 0;    ///< edges with 3+ triangles or inconsistent orientation
+  int64_t MisorientedEdges = 0;    ///< of those, edges of two triangles that run them one way
   int64_t NonManifoldVertices = 0; ///< vertices with more than one fan (bow-ties)
   int64_t LockedVertices = 0;
   int64_t IsolatedVertices = 0;
