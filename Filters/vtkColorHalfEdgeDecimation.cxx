@@ -129,6 +129,27 @@ bool ReadGeometry(vtkColorHalfEdgeDecimation* self, vtkPolyData* input, int thre
   return true;
 }
 
+/// Whether `array` (the `role` array named `name`) is point data with a tuple per point; an
+/// error (the output is then empty) if not.
+bool IsPointArray(vtkColorHalfEdgeDecimation* self, const char* role, const char* name,
+                  vtkDataArray* array, int association, vtkIdType numPoints)
+{
+  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  {
+    vtkErrorWithObjectMacro(self, << "The " << role << " array '" << name
+                                  << "' is not a point-data array; output is empty.");
+    return false;
+  }
+  if (array->GetNumberOfTuples() != numPoints)
+  {
+    vtkErrorWithObjectMacro(self, << "The " << role << " array '" << name << "' has "
+                                  << array->GetNumberOfTuples() << " tuples for " << numPoints
+                                  << " points; output is empty.");
+    return false;
+  }
+  return true;
+}
+
 /// The colour array (of the given association), converted to RGB in [0,1]; false (with an
 /// error) for a bad one. Without one, the decimation goes by geometry alone: quietly for a mesh
 /// without point scalars, with a warning when an array selected by name is not there.
@@ -152,17 +173,8 @@ bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int assoc
     }
     return true;
   }
-  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  if (!IsPointArray(self, "colour", name, array, association, numPoints))
   {
-    vtkErrorWithObjectMacro(self, << "The colour array '" << name
-                                  << "' is not a point-data array; output is empty.");
-    return false;
-  }
-  if (array->GetNumberOfTuples() != numPoints)
-  {
-    vtkErrorWithObjectMacro(self, << "The colour array '" << name << "' has "
-                                  << array->GetNumberOfTuples() << " tuples for " << numPoints
-                                  << " points; output is empty.");
     return false;
   }
   if (array->GetNumberOfComponents() < 1)
@@ -198,17 +210,8 @@ bool ReadLocks(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int associ
                                     << "' (SetInputArrayToProcess(1, ...)): no point is locked.");
     return true;
   }
-  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  if (!IsPointArray(self, "lock", name, array, association, numPoints))
   {
-    vtkErrorWithObjectMacro(self, << "The lock array '" << name
-                                  << "' is not a point-data array; output is empty.");
-    return false;
-  }
-  if (array->GetNumberOfTuples() != numPoints)
-  {
-    vtkErrorWithObjectMacro(self, << "The lock array '" << name << "' has "
-                                  << array->GetNumberOfTuples() << " tuples for " << numPoints
-                                  << " points; output is empty.");
     return false;
   }
   const vtkIdType locked = colordecimation::adapter::LockPoints(array, mesh.Soup);
@@ -387,12 +390,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  this->ActualReduction = 0.0;
-  this->ActualError = 0.0;
-  this->NumberOfPrunedComponents = 0;
-  this->NumberOfCollapses = 0;
-  this->StateMemory = 0;
-  this->NumberOfThreadsUsed = 0;
+  this->ResetStatistics();
   if (!input || !output)
   {
     return 0;
@@ -462,6 +460,17 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
     this->UpdateProgress(1.0); // after an abort, the progress stays where the run stopped
   }
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkColorHalfEdgeDecimation::ResetStatistics()
+{
+  this->ActualReduction = 0.0;
+  this->ActualError = 0.0;
+  this->NumberOfPrunedComponents = 0;
+  this->NumberOfCollapses = 0;
+  this->StateMemory = 0;
+  this->NumberOfThreadsUsed = 0;
 }
 
 //------------------------------------------------------------------------------

@@ -412,6 +412,8 @@ protected:
   vtkColorHalfEdgeDecimation();
   ~vtkColorHalfEdgeDecimation() override;
 
+  /// The figures of the last execution back to 0 (ActualReduction, ActualError, ...).
+  void ResetStatistics();
   /// The lock array, or null when none is selected or the input has none of that name (the
   /// caller tells which from GetLockArrayName()).
   vtkDataArray* GetLockArray(vtkInformationVector** inputVector, int& association);

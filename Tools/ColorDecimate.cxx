@@ -113,6 +113,45 @@ CLI::Option* AddFilterNumber(CLI::App& app, Options& options, const std::string&
     RuleComplaint(rule), help);
 }
 
+/// --NAME NAME: a point array's name (not empty) into `name`.
+void AddArrayName(CLI::App& app, const std::string& option, std::string& name,
+                  const std::string& help)
+{
+  AddValue(
+    app, option,
+    [&name](const std::string& text)
+    {
+      name = text;
+      return !text.empty();
+    },
+    FixedComplaint(option + " needs a non-empty array name"), help)
+    ->type_name("NAME");
+}
+
+/// --NAME N: a whole number from 0 to hi, given to the filter with `set`.
+template <typename Count>
+CLI::Option* AddFilterCount(CLI::App& app, Options& options, const std::string& name, double hi,
+                            void (vtkColorHalfEdgeDecimation::*set)(Count), const std::string& rule,
+                            const std::string& help)
+{
+  return AddValue(
+           app, name,
+           [&options, hi, set](const std::string& text)
+           {
+             double count = 0;
+             if (!ParseNumber(text, count) || count < 0 || count > hi || count != std::floor(count))
+             {
+               return false;
+             }
+             const auto value = static_cast<Count>(count);
+             options.Settings.push_back([set, value](vtkColorHalfEdgeDecimation* f)
+                                        { (f->*set)(value); });
+             return true;
+           },
+           RuleComplaint(rule), help)
+    ->type_name("N");
+}
+
 /// --NAME W: a weight of the cost (a number >= 0), set with `set`.
 CLI::Option* AddFilterWeight(CLI::App& app, Options& options, const std::string& name,
                              void (vtkColorHalfEdgeDecimation::*set)(double),
@@ -238,17 +277,9 @@ void AddFilterOptions(CLI::App& app, Options& options)
                   "fraction of the triangles to remove, 0 to 1 (default " +
                     Number(Defaults()->GetTargetReduction()) + ")")
     ->type_name("R");
-  AddValue(
-    app, "--array",
-    [&options](const std::string& name)
-    {
-      options.Array = name;
-      return !name.empty();
-    },
-    FixedComplaint("--array needs a non-empty array name"),
-    "point array holding the colours (default: the active scalars,\n"
-    "e.g. the RGB array read from a PLY file)")
-    ->type_name("NAME");
+  AddArrayName(app, "--array", options.Array,
+               "point array holding the colours (default: the active scalars,\n"
+               "e.g. the RGB array read from a PLY file)");
   AddFilterFlag(app, options, "--preserve-boundary", &F::SetPreserveBoundary, 1,
                 "never remove vertices on open boundaries");
   AddFilterNumber(app, options, "--max-normal-angle", 0, 180, &F::SetMaximumNormalAngle,
@@ -279,25 +310,11 @@ void AddFilterOptions(CLI::App& app, Options& options)
 /// When the run stops (a triangle count, an error bound) and which points stay.
 void AddStopOptions(CLI::App& app, Options& options)
 {
-  AddValue(
-    app, "--target-triangles",
-    [&options](const std::string& text)
-    {
-      double count = 0;
-      const bool ok =
-        ParseNumber(text, count) && count >= 0 && count <= 9.2e18 && count == std::floor(count);
-      const auto triangles = static_cast<vtkIdType>(count);
-      if (ok)
-      {
-        options.Settings.push_back([triangles](vtkColorHalfEdgeDecimation* f)
-                                   { f->SetTargetNumberOfTriangles(triangles); });
-      }
-      return ok;
-    },
-    RuleComplaint("--target-triangles must be a whole number >= 0"),
-    "number of triangles to leave, instead of --reduction (0: use\n"
-    "--reduction)")
-    ->type_name("N");
+  AddFilterCount(app, options, "--target-triangles", 9.2e18,
+                 &vtkColorHalfEdgeDecimation::SetTargetNumberOfTriangles,
+                 "--target-triangles must be a whole number >= 0",
+                 "number of triangles to leave, instead of --reduction (0: use\n"
+                 "--reduction)");
   AddValue(
     app, "--max-error",
     [&options](const std::string& text)
@@ -325,16 +342,8 @@ void AddStopOptions(CLI::App& app, Options& options)
                 1,
                 "when collapses alone cannot reach the target, remove whole\n"
                 "connected pieces, smallest area first (off by default)");
-  AddValue(
-    app, "--lock-array",
-    [&options](const std::string& name)
-    {
-      options.LockArray = name;
-      return !name.empty();
-    },
-    FixedComplaint("--lock-array needs a non-empty array name"),
-    "point array whose non-zero values keep their points in place")
-    ->type_name("NAME");
+  AddArrayName(app, "--lock-array", options.LockArray,
+               "point array whose non-zero values keep their points in place");
 }
 
 /// How the collapses are scheduled, on how many threads.
@@ -349,26 +358,11 @@ void AddScheduleOptions(CLI::App& app, Options& options)
                               "the cheapest: the paper's order) (default ") +
                     ScheduleName(Defaults()->GetCollapseSchedule()) + ")")
     ->type_name("S");
-  AddValue(
-    app, "--threads",
-    [&options](const std::string& text)
-    {
-      double count = 0;
-      const bool ok =
-        ParseNumber(text, count) && count >= 0 && count <= 1024 && count == std::floor(count);
-      const int threads = static_cast<int>(count);
-      if (ok)
-      {
-        options.Settings.push_back([threads](vtkColorHalfEdgeDecimation* f)
-                                   { f->SetNumberOfThreads(threads); });
-      }
-      return ok;
-    },
-    RuleComplaint("--threads must be a whole number from 0 (all cores) to 1024"),
-    "threads of the parallel phases (default 0: as many as vtkSMPTools\n"
-    "runs, i.e. all cores unless VTK_SMP_MAX_THREADS says fewer); the\n"
-    "result does not depend on it")
-    ->type_name("N");
+  AddFilterCount(app, options, "--threads", 1024, &vtkColorHalfEdgeDecimation::SetNumberOfThreads,
+                 "--threads must be a whole number from 0 (all cores) to 1024",
+                 "threads of the parallel phases (default 0: as many as vtkSMPTools\n"
+                 "runs, i.e. all cores unless VTK_SMP_MAX_THREADS says fewer); the\n"
+                 "result does not depend on it");
 }
 
 /// The files written besides OUTPUT, and what is printed.
