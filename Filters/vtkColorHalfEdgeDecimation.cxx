@@ -297,7 +297,9 @@ void ReportBuild(vtkColorHalfEdgeDecimation* self,
     vtkWarningWithObjectMacro(self, << "The input has " << build.NonManifoldEdges
                                     << " non-manifold or non-orientable edges and "
                                     << build.NonManifoldVertices << " non-manifold vertices; their "
-                                    << build.LockedVertices << " vertices are kept as they are.");
+                                    << build.LockedVertices
+                                    << " vertices are kept as they are (unless PruneComponents "
+                                       "removes their whole piece).");
   }
 }
 } // namespace

@@ -315,9 +315,10 @@ public:
    * (triangles connected through shared points) are removed, smallest area first (ties: fewer
    * triangles first), until the target is met: the small fragments of a scan, each of which
    * collapses cannot take below a few triangles. Pieces with a locked point (lock array, ghost
-   * points) are kept, and so is the last piece. Not done after an abort, nor when MaximumError
-   * stopped the run. Off by default (as meshoptimizer's SimplifyPrune), since it removes parts
-   * of the surface: turn it on for scans decimated by 99 % or more.
+   * points) are kept, and so is the last piece; non-manifold places do not keep a piece. Not
+   * done after an abort, nor when MaximumError stopped the run. Off by default (as
+   * meshoptimizer's SimplifyPrune), since it removes parts of the surface: turn it on for scans
+   * decimated by 99 % or more.
    */
   vtkSetMacro(PruneComponents, vtkTypeBool);
   vtkGetMacro(PruneComponents, vtkTypeBool);

@@ -170,8 +170,8 @@ bool IsIntegerType(int type)
 
 /**
  * The input's ids to compose with, when its array `name` is one: one integer component per
- * point, every value >= 0 (e.g. vtkOriginalPointIds from vtkDataSetSurfaceFilter). Null when
- * there is no such array; a warning (and null) when there is one of another kind.
+ * point, every value in [0, 2^53] (e.g. vtkOriginalPointIds from vtkDataSetSurfaceFilter). Null
+ * when there is no such array; a warning (and null) when there is one of another kind.
  */
 vtkDataArray* UpstreamIds(vtkObject* self, vtkPolyData* input, const char* name)
 {
@@ -186,7 +186,7 @@ vtkDataArray* UpstreamIds(vtkObject* self, vtkPolyData* input, const char* name)
   for (vtkIdType i = 0; valid && i < ids->GetNumberOfTuples(); ++i)
   {
     const double id = ids->GetComponent(i, 0);
-    valid = id >= 0 && id <= static_cast<double>(VTK_ID_MAX);
+    valid = id >= 0 && id <= 9007199254740992.0; // 2^53: exact as a double, and a vtkIdType
   }
   if (!valid)
   {

@@ -25,16 +25,17 @@ const Metric* MetricOf(const EngineBase* engine)
  * vertex; Batched: key 8, stamp 4, the batch (at most a quarter of the vertices, 16 B each,
  * collected by the threads and then copied) 8, the list of affected vertices 4, the list of
  * live vertices and its shrunk copy 8, and the block flags 1; choice 4 + 1; moved flags 1 for
- * a metric that moves vertices; the planes of MaximumError; the maps back from the spatial
- * order, kept to the end.
+ * a metric that moves vertices; the planes of MaximumError; the flags of reversed triangles, 1
+ * per triangle, when the input was oriented; the maps back from the spatial order, kept to the
+ * end.
  */
 size_t StateBytes(const DecimatorOptions& options, const DecimatorInput& input, size_t metricBytes,
-                  bool moves, bool renumbered)
+                  bool moves, bool renumbered, bool reoriented)
 {
   const size_t n = size_t(input.NumberOfPoints), triangles = size_t(input.NumberOfTriangles);
   const size_t ordering = options.Schedule == CollapseSchedule::Batched ? 33 : 36;
   const size_t bound = options.MaximumError > 0 ? ErrorBound::BytesPerVertex : 0;
-  size_t bytes = (24 + 12) * triangles +
+  size_t bytes = (24 + 12 + (reoriented ? 1 : 0)) * triangles +
     n * (5 + metricBytes + sizeof(HotVertex) + ordering + 4 + 1 + (moves ? 1 : 0) + bound);
   if (renumbered)
   {
@@ -96,8 +97,9 @@ DecimatorStatistics Decimator::RunWith(const DecimatorInput& input, int64_t targ
   }
   stats.OutputTriangles = engine->GetMesh().GetNumberOfLiveFaces();
   stats.MetricBytesPerVertex = Metric::BytesPerVertex();
-  stats.StateBytes = StateBytes(this->Options, input, Metric::BytesPerVertex(),
-                                engine->GetMetric().MovesVertices(), renumbered);
+  stats.StateBytes =
+    StateBytes(this->Options, input, Metric::BytesPerVertex(), engine->GetMetric().MovesVertices(),
+               renumbered, stats.ReorientedTriangles > 0);
   this->TheEngine = std::move(engine);
   return stats;
 }

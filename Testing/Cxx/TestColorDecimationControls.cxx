@@ -65,32 +65,32 @@ double PyramidError(double h)
 }
 
 /**
- * A flat grid of 20 x 20 quads over [0, 20]^2 and, beside it, ten separate tetrahedra of edge
- * 0.2 k (k = 1 .. 10), which no collapse can reduce: 800 + 40 triangles.
+ * A flat grid of m x m quads over [0, m]^2 (m = 20: 441 points) and, beside it, ten separate
+ * tetrahedra of edge 0.2 k (k = 1 .. 10), which no collapse can reduce: 2 m^2 + 40 triangles.
  */
-vtkSmartPointer<vtkPolyData> GridAndTetrahedra()
+vtkSmartPointer<vtkPolyData> GridAndTetrahedra(int m = 20)
 {
   std::vector<double> xyz;
   std::vector<vtkIdType> triangles;
-  for (int j = 0; j <= 20; ++j)
+  for (int j = 0; j <= m; ++j)
   {
-    for (int i = 0; i <= 20; ++i)
+    for (int i = 0; i <= m; ++i)
     {
       xyz.insert(xyz.end(), { double(i), double(j), 0.0 });
     }
   }
-  for (vtkIdType j = 0; j < 20; ++j)
+  for (vtkIdType j = 0; j < m; ++j)
   {
-    for (vtkIdType i = 0; i < 20; ++i)
+    for (vtkIdType i = 0; i < m; ++i)
     {
-      const vtkIdType a = 21 * j + i, b = a + 1, c = a + 22, d = a + 21;
+      const vtkIdType a = (m + 1) * j + i, b = a + 1, c = a + m + 2, d = a + m + 1;
       triangles.insert(triangles.end(), { a, b, c, a, c, d });
     }
   }
   for (int k = 1; k <= 10; ++k)
   {
     const auto first = static_cast<vtkIdType>(xyz.size() / 3);
-    const double e = 0.2 * k, x = 30.0 + 3.0 * k;
+    const double e = 0.2 * k, x = m + 10.0 + 3.0 * k;
     xyz.insert(xyz.end(), { x, 0, 0, x + e, 0, 0, x, e, 0, x, 0, e });
     for (const vtkIdType t : { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 })
     {
@@ -359,7 +359,7 @@ CD_TEST_CASE(PruneComponents)
   lock->SetName("lock");
   lock->SetNumberOfValues(n);
   lock->Fill(0);
-  lock->SetValue(441, 1); // the first point of the smallest tetrahedron
+  lock->SetValue(441, 1); // the first point of the smallest tetrahedron (after the grid's 441)
   mesh->GetPointData()->AddArray(lock);
   const vtkIdType target = 8; // floor(0.01 * 840)
   for (const int schedule : Schedules)
@@ -460,6 +460,62 @@ CD_TEST_CASE(FlippedSphere)
     }
     CD_CHECK_MSG(wrong == 0, "output triangles keep their input winding");
   }
+}
+
+//------------------------------------------------------------------------------
+CD_TEST_CASE(LargeMeshControls)
+{
+  // From 65,536 points on, the mesh is decimated under a spatial order and mapped back: the
+  // reversed triangles' flags and the pruned pieces must come back to the input's ids. A large
+  // flipped sphere gives the consistent one's output, cell for cell; a 260 x 260 grid with the
+  // ten tetrahedra prunes the smallest ones.
+  auto sphere = meshes::Icosphere(7, Pattern::SharpRegions);
+  CD_CHECK(sphere->GetNumberOfPoints() >= 65536);
+  auto flipped = Copy(sphere);
+  vtkNew<vtkCellArray> polys;
+  long long reversed = 0;
+  for (const Tri& t : GetTriangles(sphere))
+  {
+    const bool back = (t[0] + t[1] + t[2]) % 3 == 0;
+    const vtkIdType ids[3] = { t[0], back ? t[2] : t[1], back ? t[1] : t[2] };
+    polys->InsertNextCell(3, ids);
+    reversed += back ? 1 : 0;
+  }
+  flipped->SetPolys(polys);
+  const RunResult plain = Decimate(sphere, 0.9);
+  const RunResult consistent =
+    Decimate(flipped, 0.9, [](vtkColorHalfEdgeDecimation* f) { f->ConsistentOrientationOn(); });
+  std::cout << reversed << " of " << sphere->GetNumberOfPolys() << " triangles reversed\n";
+  CD_CHECK(consistent.Errors == 0 && consistent.Warnings == 0);
+  CD_CHECK(GetOriginalTriangles(consistent.Output) == GetOriginalTriangles(plain.Output));
+
+  auto mesh = GridAndTetrahedra(260);
+  CD_CHECK(mesh->GetNumberOfPoints() >= 65536);
+  const vtkIdType target = 10;
+  auto run = [target](bool prune)
+  {
+    return [target, prune](vtkColorHalfEdgeDecimation* f)
+    {
+      f->SetTargetNumberOfTriangles(target);
+      f->SetPruneComponents(prune);
+    };
+  };
+  const RunResult unpruned = Decimate(mesh, 0.9, run(false));
+  const vtkIdType grid = unpruned.Output->GetNumberOfPolys() - 40;
+  vtkIdType removed = 0;
+  while (grid + 4 * (10 - removed) > target && removed < 10)
+  {
+    ++removed;
+  }
+  const RunResult pruned = Decimate(mesh, 0.9, run(true));
+  std::cout << "grid " << grid << " triangles, target " << target << ": pruned "
+            << pruned.Filter->GetNumberOfPrunedComponents() << "\n";
+  CD_CHECK(grid >= 1 && removed > 0);
+  CD_CHECK(pruned.Filter->GetNumberOfPrunedComponents() == removed);
+  CD_CHECK(pruned.Output->GetNumberOfPolys() == grid + 4 * (10 - removed));
+  // The largest tetrahedra are left: the points of the last of them are in the output.
+  const std::set<vtkIdType> ids = OriginalIds(pruned.Output);
+  CD_CHECK(ids.count(mesh->GetNumberOfPoints() - 1) == 1);
 }
 
 int main(int argc, char* argv[])

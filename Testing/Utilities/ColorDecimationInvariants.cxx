@@ -74,7 +74,8 @@ void CheckLocks(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter, vtkIdTyp
 {
   const char* name = filter->GetLockArrayName();
   vtkDataArray* locks = name ? input->GetPointData()->GetArray(name) : nullptr;
-  if (!locks || !original || filterReportedError ||
+  // Ghost cells are left out by the filter (their points are kept anyway): not checked here.
+  if (!locks || !original || filterReportedError || input->GetCellGhostArray() ||
       locks->GetNumberOfTuples() != input->GetNumberOfPoints())
   {
     return;
@@ -90,12 +91,20 @@ void CheckLocks(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter, vtkIdTyp
   }
   // Only points some valid triangle uses can be kept (the others are not output at all).
   std::vector<char> used(kept.size(), 0);
-  for (const Tri& t : GetTriangles(input))
+  const auto numPoints = static_cast<vtkIdType>(used.size());
+  for (const Tri& t : GetTriangles(input)) // {-1, -1, -1} for cells that are not triangles
   {
-    const bool valid = t[0] != t[1] && t[1] != t[2] && t[0] != t[2];
+    bool valid = t[0] != t[1] && t[1] != t[2] && t[0] != t[2];
     for (const vtkIdType v : t)
     {
-      used[v] = valid || used[v];
+      valid = valid && v >= 0 && v < numPoints;
+    }
+    for (const vtkIdType v : t)
+    {
+      if (valid)
+      {
+        used[v] = 1;
+      }
     }
   }
   long long lost = 0;
@@ -295,7 +304,7 @@ void CheckPointArrayCopied(vtkDataArray* in, vtkDataArray* out, vtkIdTypeArray* 
  */
 /**
  * The input's own ids of the filter's id array name, when the filter composes with them (one
- * integer id >= 0 per point), else null.
+ * integer id in [0, 2^53] per point), else null.
  */
 vtkDataArray* UpstreamIds(vtkPolyData* input, const char* idsName)
 {
@@ -308,7 +317,8 @@ vtkDataArray* UpstreamIds(vtkPolyData* input, const char* idsName)
   }
   for (vtkIdType i = 0; i < ids->GetNumberOfTuples(); ++i)
   {
-    if (!(ids->GetComponent(i, 0) >= 0))
+    const double id = ids->GetComponent(i, 0);
+    if (!(id >= 0 && id <= 9007199254740992.0)) // as the filter: [0, 2^53]
     {
       return nullptr;
     }
