@@ -1,6 +1,7 @@
 #include "mesh/Components.h"
 
 #include "mesh/HalfEdgeMesh.h"
+#include "util/Parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -46,9 +47,9 @@ Pieces FindPieces(const HalfEdgeMesh& mesh)
       }
     }
   }
-  // Number the pieces by their first face, then list each one's faces.
-  std::vector<int32_t> piece(parent.size(), -1), faceOf;
-  Pieces pieces;
+  // Number the pieces by their first face, then list each one's faces (in face order).
+  std::vector<int32_t> piece(parent.size(), -1), faceOf, faces;
+  int32_t count = 0;
   for (int32_t f = 0; f < slots; ++f)
   {
     if (mesh.IsFaceAlive(f))
@@ -56,26 +57,16 @@ Pieces FindPieces(const HalfEdgeMesh& mesh)
       int32_t ids[3];
       mesh.GetFace(f, ids);
       int32_t& p = piece[Root(parent, ids[0])];
-      p = p >= 0 ? p : static_cast<int32_t>(pieces.Start.size());
-      pieces.Start.resize(std::max<size_t>(pieces.Start.size(), size_t(p) + 1), 0);
-      ++pieces.Start[p];
+      p = p >= 0 ? p : count++;
       faceOf.push_back(p);
-      pieces.Faces.push_back(f);
+      faces.push_back(f);
     }
   }
-  // Counting sort of the faces by piece (stable: face order within a piece).
-  std::vector<int32_t> next(pieces.Start.size() + 1, 0);
-  for (size_t p = 0; p < pieces.Start.size(); ++p)
-  {
-    next[p + 1] = next[p] + pieces.Start[p];
-  }
-  pieces.Start = next;
-  std::vector<int32_t> sorted(pieces.Faces.size());
-  for (size_t i = 0; i < pieces.Faces.size(); ++i)
-  {
-    sorted[next[faceOf[i]]++] = pieces.Faces[i];
-  }
-  pieces.Faces.swap(sorted);
+  Pieces pieces;
+  pieces.Faces.resize(faces.size());
+  CountingSort(
+    faces.size(), static_cast<size_t>(count), 1, [&faceOf](size_t i) { return faceOf[i]; },
+    [&faces, &pieces](size_t i, int32_t slot) { pieces.Faces[slot] = faces[i]; }, pieces.Start);
   return pieces;
 }
 
