@@ -10,6 +10,7 @@
 
 #include "Adapter/InputMesh.h"
 #include "Adapter/OutputMesh.h"
+#include "Adapter/RecordTable.h"
 #include "Core/Decimator.h"
 
 #include "vtkDataArray.h"
@@ -21,6 +22,7 @@
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTable.h"
 
 #include <algorithm>
 #include <cmath>
@@ -79,51 +81,6 @@ bool CheckInput(vtkColorHalfEdgeDecimation* self, vtkPolyData* input)
   {
     vtkErrorWithObjectMacro(self, << "Too many points (" << numPoints
                                   << "); at most 2^31 - 1 are supported.");
-    return false;
-  }
-  return true;
-}
-
-/// The points and the triangles; false (with an error) where they cannot be decimated.
-bool ReadGeometry(vtkColorHalfEdgeDecimation* self, vtkPolyData* input, int threads,
-                  InputMesh& mesh)
-{
-  const vtkIdType numPoints = input->GetNumberOfPoints();
-  if (!colordecimation::adapter::GatherPoints(input->GetPoints(), mesh.Points, threads))
-  {
-    vtkErrorWithObjectMacro(
-      self, << "The input has NaN or infinite point coordinates; output is empty.");
-    return false;
-  }
-  colordecimation::adapter::TriangleSoup& soup = mesh.Soup;
-  colordecimation::adapter::ExtractTriangles(input, soup, threads);
-  if (soup.IdsOutOfRange)
-  {
-    vtkErrorWithObjectMacro(self, << "The input has cells with point ids outside [0, " << numPoints
-                                  << "); output is empty.");
-    return false;
-  }
-  if (soup.Polygons > 0 || soup.Strips > 0)
-  {
-    // Legitimate input: the output is triangles whatever the input's cells.
-    vtkDebugWithObjectMacro(self, << "Triangulated " << soup.Polygons << " polygons and "
-                                  << soup.Strips << " triangle strips.");
-  }
-  if (soup.Degenerate > 0 || soup.BadCells > 0)
-  {
-    vtkWarningWithObjectMacro(self, << "Dropped " << soup.Degenerate
-                                    << " triangles that repeat a point and " << soup.BadCells
-                                    << " polygons with fewer than 3 points.");
-  }
-  const auto numTriangles = static_cast<vtkIdType>(soup.SourceCell.size());
-  if (numTriangles > std::numeric_limits<int32_t>::max() / 3)
-  {
-    vtkErrorWithObjectMacro(self, << "Too many triangles (" << numTriangles << ").");
-    return false;
-  }
-  if (numTriangles == 0)
-  {
-    vtkWarningWithObjectMacro(self, << "The input has no triangles: empty output.");
     return false;
   }
   return true;
@@ -219,19 +176,6 @@ bool ReadLocks(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int associ
   return true;
 }
 
-/// The triangles to leave: TargetNumberOfTriangles, or else (1 - TargetReduction) of them (the
-/// small allowance keeps a product that is an integer on paper, 1 - 0.8 being
-/// 0.19999999999999996 in double, from losing one).
-int64_t TargetTriangles(vtkColorHalfEdgeDecimation* self, vtkIdType numTriangles)
-{
-  if (self->GetTargetNumberOfTriangles() > 0)
-  {
-    return static_cast<int64_t>(self->GetTargetNumberOfTriangles());
-  }
-  return static_cast<int64_t>(
-    std::floor((1.0 - self->GetTargetReduction()) * static_cast<double>(numTriangles) + 1e-6));
-}
-
 /// Distributed data: a piece of several that came without ghosts keeps its open boundary,
 /// where it meets the others.
 void FixSharedPoints(vtkColorHalfEdgeDecimation* self, vtkInformation* outInfo, InputMesh& mesh)
@@ -278,7 +222,27 @@ colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, 
   options.GeometryWeight = self->GetGeometryWeight();
   options.MaximumError = self->GetMaximumError();
   options.PruneComponents = self->GetPruneComponents() != 0;
+  options.RecordCollapses = self->GetGenerateCollapseRecord() && !options.OptimalPlacement;
   return options;
+}
+
+/// The collapse record into `table` (port 1), when asked for; empty otherwise.
+void WriteRecord(vtkColorHalfEdgeDecimation* self, const InputMesh& mesh,
+                 const colordecimation::Decimator& decimator, vtkTable* table)
+{
+  if (!table || !self->GetGenerateCollapseRecord())
+  {
+    return;
+  }
+  if (self->GetOptimalPlacement())
+  {
+    vtkWarningWithObjectMacro(self, << "No collapse record with OptimalPlacement (its collapses "
+                                       "move the surviving point): the record is empty.");
+    return;
+  }
+  colordecimation::adapter::WriteRecordTable(decimator.GetRecord(),
+                                             colordecimation::adapter::Identify(mesh),
+                                             self->GetCollapseScheduleAsString(), table);
 }
 
 /// Non-manifold places are kept as they are: say so (reoriented triangles are legitimate).
@@ -318,6 +282,7 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   , TargetNumberOfTriangles(0)
   , MaximumError(0.0)
   , ActualError(0.0)
+  , GenerateCollapseRecord(false)
   , PruneComponents(false)
   , ConsistentOrientation(false)
   , NumberOfPrunedComponents(0)
@@ -332,6 +297,7 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   , NumberOfThreadsUsed(0)
 {
   this->SetOriginalPointIdsArrayName("vtkOriginalPointIds");
+  this->SetNumberOfOutputPorts(2);
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
                                vtkDataSetAttributes::SCALARS);
 }
@@ -411,7 +377,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
 
   // 2. Read the points and triangles, convert the colours.
   InputMesh mesh;
-  if (!ReadGeometry(this, input, threads, mesh))
+  if (!colordecimation::adapter::ReadGeometry(this, input, threads, mesh))
   {
     return 1;
   }
@@ -431,7 +397,8 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
 
   // 3. Decimate to the target, or until MaximumError or no valid collapse stops it.
   const auto numTriangles = static_cast<vtkIdType>(mesh.Soup.SourceCell.size());
-  const int64_t target = TargetTriangles(this, numTriangles);
+  const int64_t target = colordecimation::adapter::TargetTriangles(
+    this->TargetNumberOfTriangles, this->TargetReduction, numTriangles);
   this->UpdateProgress(0.05);
   colordecimation::Decimator decimator(MakeOptions(this, threads));
   const colordecimation::DecimatorStatistics stats =
@@ -442,14 +409,10 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
                     return !this->GetAbortExecute();
                   });
   ReportBuild(this, stats);
-  this->NumberOfCollapses = stats.Collapses;
-  this->ActualError = stats.ActualError;
-  this->NumberOfPrunedComponents = stats.PrunedComponents;
-  this->StateMemory = static_cast<vtkIdType>(stats.StateBytes);
-  this->NumberOfThreadsUsed =
-    std::max({ stats.Threads, stats.CollapseThreads, stats.WideCollapseThreads });
+  this->KeepStatistics(stats);
 
-  // 4. The output: the surviving triangles on the points they use, in input order.
+  // 4. The output: the surviving triangles on the points they use, in input order, and the
+  // collapse record when asked for.
   colordecimation::adapter::OutputOptions written;
   written.OriginalIdsName =
     this->GenerateOriginalPointIds ? this->OriginalPointIdsArrayName : nullptr;
@@ -457,6 +420,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   const vtkIdType numOutTriangles =
     colordecimation::adapter::WriteOutput(this, input, mesh, decimator, written, output);
   this->ActualReduction = 1.0 - static_cast<double>(numOutTriangles) / numTriangles;
+  WriteRecord(this, mesh, decimator, vtkTable::GetData(outputVector, 1));
   if (!this->GetAbortExecute())
   {
     this->UpdateProgress(1.0); // after an abort, the progress stays where the run stopped
@@ -473,6 +437,34 @@ void vtkColorHalfEdgeDecimation::ResetStatistics()
   this->NumberOfCollapses = 0;
   this->StateMemory = 0;
   this->NumberOfThreadsUsed = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkColorHalfEdgeDecimation::KeepStatistics(const colordecimation::DecimatorStatistics& stats)
+{
+  this->NumberOfCollapses = stats.Collapses;
+  this->ActualError = stats.ActualError;
+  this->NumberOfPrunedComponents = stats.PrunedComponents;
+  this->StateMemory = static_cast<vtkIdType>(stats.StateBytes);
+  this->NumberOfThreadsUsed =
+    std::max({ stats.Threads, stats.CollapseThreads, stats.WideCollapseThreads });
+}
+
+//------------------------------------------------------------------------------
+vtkTable* vtkColorHalfEdgeDecimation::GetCollapseRecord()
+{
+  return vtkTable::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+//------------------------------------------------------------------------------
+int vtkColorHalfEdgeDecimation::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkTable");
+    return 1;
+  }
+  return this->Superclass::FillOutputPortInformation(port, info);
 }
 
 //------------------------------------------------------------------------------
@@ -531,6 +523,8 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TargetReduction: " << this->TargetReduction << "\n";
   os << indent << "TargetNumberOfTriangles: " << this->TargetNumberOfTriangles << "\n";
   os << indent << "MaximumError: " << this->MaximumError << "\n";
+  os << indent << "GenerateCollapseRecord: " << (this->GenerateCollapseRecord ? "On" : "Off")
+     << "\n";
   os << indent << "PruneComponents: " << (this->PruneComponents ? "On" : "Off") << "\n";
   os << indent << "ConsistentOrientation: " << (this->ConsistentOrientation ? "On" : "Off") << "\n";
   os << indent

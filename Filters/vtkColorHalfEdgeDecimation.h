@@ -70,13 +70,19 @@
  * then empty.
  *
  * @sa
- * vtkQuadricDecimation vtkDecimatePro vtkQuadricClustering
+ * vtkColorHalfEdgeLevelOfDetail vtkQuadricDecimation vtkDecimatePro vtkQuadricClustering
  */
 #ifndef vtkColorHalfEdgeDecimation_h
 #define vtkColorHalfEdgeDecimation_h
 
 #include "vtkColorDecimationModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+
+class vtkTable;
+namespace colordecimation
+{
+struct DecimatorStatistics;
+}
 
 class VTKCOLORDECIMATION_EXPORT vtkColorHalfEdgeDecimation : public vtkPolyDataAlgorithm
 {
@@ -332,10 +338,35 @@ public:
 
   /**
    * The largest geometric error (see MaximumError) of the collapses of the last execution, in
-   * the input's units. Only tracked under a bound: 0 when MaximumError is not set (set it to
-   * VTK_DOUBLE_MAX to measure without a bound).
+   * the input's units. Only tracked under a bound or with GenerateCollapseRecord: 0 otherwise
+   * (set MaximumError to VTK_DOUBLE_MAX to measure without a bound).
    */
   vtkGetMacro(ActualError, double);
+
+  ///@{
+  /**
+   * When on, the second output (port 1, a vtkTable) is the record of the collapses made, in
+   * the order made: one row per collapse with RemovedPointId (v0) and SurvivingPointId (v1,
+   * v0's parent in the vertex hierarchy), both input point ids, the Cost that ordered it, its
+   * geometric Error (see MaximumError) and the NumberOfTriangles left after it; its field data
+   * identifies the input (point and triangle counts and a checksum). Every prefix of the
+   * record is a level of detail of the input, nested in the finer ones: set TargetReduction to
+   * 1 to record down to the topological limit, then extract any level with
+   * vtkColorHalfEdgeLevelOfDetail. With the Greedy schedule a level is exactly what a direct
+   * run to that target gives. Off (default): the second output is an empty table.
+   *
+   * Not with OptimalPlacement (its collapses move the survivor): the record is then empty,
+   * with a warning. The pieces PruneComponents removes are not in the record.
+   */
+  vtkSetMacro(GenerateCollapseRecord, vtkTypeBool);
+  vtkGetMacro(GenerateCollapseRecord, vtkTypeBool);
+  vtkBooleanMacro(GenerateCollapseRecord, vtkTypeBool);
+  ///@}
+
+  /**
+   * The collapse record of the last execution (output port 1; see GenerateCollapseRecord).
+   */
+  vtkTable* GetCollapseRecord();
 
   ///@{
   /**
@@ -415,10 +446,13 @@ protected:
 
   /// The figures of the last execution back to 0 (ActualReduction, ActualError, ...).
   void ResetStatistics();
+  /// The figures of a run into the statistics properties.
+  void KeepStatistics(const colordecimation::DecimatorStatistics& stats);
   /// The lock array, or null when none is selected or the input has none of that name (the
   /// caller tells which from GetLockArrayName()).
   vtkDataArray* GetLockArray(vtkInformationVector** inputVector, int& association);
 
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
@@ -434,6 +468,7 @@ protected:
   vtkIdType TargetNumberOfTriangles;
   double MaximumError;
   double ActualError;
+  vtkTypeBool GenerateCollapseRecord;
   vtkTypeBool PruneComponents;
   vtkTypeBool ConsistentOrientation;
   vtkIdType NumberOfPrunedComponents;

@@ -10,9 +10,11 @@
 #include "JsonOutput.h"
 #include "MeshIO.h"
 #include "ProcessMemory.h"
+#include "RecordIO.h"
 
 #include "ColorDecimationFidelity.h"
 #include "vtkColorHalfEdgeDecimation.h"
+#include "vtkColorHalfEdgeLevelOfDetail.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -21,6 +23,7 @@
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkTable.h"
 
 #include <algorithm>
 #include <chrono>
@@ -57,6 +60,9 @@ struct Options
   int SnapshotSize = 512;
   std::string WriteInput;
   bool Quiet = false;
+  std::vector<double> Levels; ///< --lod: the reductions, in the order given
+  std::string SaveRecord;
+  std::string FromRecord;
 };
 
 const char* MetricName(int metric)
@@ -401,6 +407,46 @@ void AddOutputOptions(CLI::App& app, Options& options)
                "print nothing but errors (no figures, no progress bar)");
 }
 
+/// Levels of detail from one run, and the collapse record.
+void AddLevelOptions(CLI::App& app, Options& options)
+{
+  AddValue(
+    app, "--lod",
+    [&options](const std::string& text)
+    {
+      options.Levels.clear();
+      std::stringstream list(text);
+      std::string item;
+      while (std::getline(list, item, ','))
+      {
+        double reduction = 0;
+        if (!ParseNumber(item, reduction) || reduction < 0 || reduction > 1)
+        {
+          return false;
+        }
+        options.Levels.push_back(reduction);
+      }
+      return !options.Levels.empty();
+    },
+    RuleComplaint("--lod must be reductions from 0 to 1 separated by commas, e.g. 0.5,0.9,0.97"),
+    "levels of detail from one decimation run: a file per reduction, in\n"
+    "the order given, named as OUTPUT with .lod1, .lod2, ... before its\n"
+    "extension (k.ply -> k.lod1.ply); the run goes to the largest\n"
+    "reduction (with --max-error, every level also stops there)")
+    ->type_name("R1,R2,...");
+  app
+    .add_option("--save-record", options.SaveRecord,
+                "also write the run's collapse record (every level it passed\n"
+                "through) to FILE, a VTK XML table, for --from-record")
+    ->type_name("FILE.vtt");
+  app
+    .add_option("--from-record", options.FromRecord,
+                "no decimation: take the level of INPUT that --reduction,\n"
+                "--target-triangles and --max-error ask for (or the --lod levels)\n"
+                "from the collapse record FILE, saved for this same INPUT")
+    ->type_name("FILE.vtt");
+}
+
 /// What --help prints after the options.
 std::string Footer()
 {
@@ -453,6 +499,25 @@ std::string CheckFiles(Options& options)
   if (!options.Stats.empty() && options.Stats == options.Output)
   {
     return "--stats file and OUTPUT are the same file";
+  }
+  for (const std::string* record : { &options.SaveRecord, &options.FromRecord })
+  {
+    if (!record->empty() && Extension(*record) != ".vtt")
+    {
+      return "the collapse record '" + *record + "' must be a .vtt file";
+    }
+  }
+  if (!options.Snapshot.empty() && (!options.Levels.empty() || !options.FromRecord.empty()))
+  {
+    return "--snapshot shows one decimation: not with --lod or --from-record";
+  }
+  if (!options.SaveRecord.empty() && !options.FromRecord.empty())
+  {
+    return "--save-record and --from-record cannot be combined";
+  }
+  if ((!options.Levels.empty() || !options.FromRecord.empty()) && options.Output.empty())
+  {
+    return "missing OUTPUT (the levels' files are named after it)";
   }
   return "";
 }
@@ -533,9 +598,24 @@ struct Input
   long long Triangles = 0;
 };
 
+/// One level of detail written (--lod, --from-record).
+struct LevelFigures
+{
+  std::string Path;
+  double Asked = 0; ///< the reduction asked for
+  double Reduction = 0;
+  double Error = 0;
+  long long Points = 0;
+  long long Triangles = 0;
+  long long Collapses = 0;
+  double ExtractSeconds = 0;
+  double WriteSeconds = 0;
+};
+
 /// What the decimation and the writing measured.
 struct Figures
 {
+  std::vector<LevelFigures> Levels;
   double FilterSeconds = 0;
   double WriteSeconds = 0;
   long long FilterPeak = -1;
@@ -730,6 +810,27 @@ Json Settings(vtkColorHalfEdgeDecimation* filter)
   return settings;
 }
 
+/// The levels' figures as a JSON list.
+Json LevelList(const std::vector<LevelFigures>& levels)
+{
+  Json list = Json::array();
+  for (const LevelFigures& level : levels)
+  {
+    Json item;
+    item["output"] = level.Path;
+    item["target_reduction"] = level.Asked;
+    item["reduction"] = level.Reduction;
+    item["actual_error"] = level.Error;
+    item["output_points"] = level.Points;
+    item["output_triangles"] = level.Triangles;
+    item["collapses"] = level.Collapses;
+    item["extract_seconds"] = level.ExtractSeconds;
+    item["write_seconds"] = level.WriteSeconds;
+    list.push_back(item);
+  }
+  return list;
+}
+
 /// --stats: the figures as JSON.
 Json Statistics(vtkColorHalfEdgeDecimation* filter, const Options& options, const Input& input,
                 const Figures& figures)
@@ -757,6 +858,11 @@ Json Statistics(vtkColorHalfEdgeDecimation* filter, const Options& options, cons
   stats["state_memory_bytes"] = static_cast<long long>(filter->GetStateMemory());
   stats["filter_peak_memory_bytes"] = figures.FilterPeak;
   stats["peak_rss_bytes"] = figures.PeakRss;
+  if (!options.Levels.empty() || !options.FromRecord.empty())
+  {
+    stats["levels"] = LevelList(figures.Levels);
+    stats["from_record"] = options.FromRecord;
+  }
   return stats;
 }
 
@@ -780,6 +886,129 @@ int Snapshot(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkPoly
   return Continue;
 }
 
+/// --lod and --save-record: a run that keeps its collapse record, to the largest level.
+int PrepareRecordRun(vtkColorHalfEdgeDecimation* filter, const Options& options)
+{
+  if (options.Levels.empty() && options.SaveRecord.empty())
+  {
+    return Continue;
+  }
+  if (filter->GetOptimalPlacement())
+  {
+    return Fail("--lod and --save-record need half-edge collapses: not with --placement", 2);
+  }
+  if (!options.Levels.empty())
+  {
+    if (filter->GetTargetNumberOfTriangles() > 0)
+    {
+      return Fail("--lod takes reductions: it cannot be combined with --target-triangles", 2);
+    }
+    filter->SetTargetReduction(*std::max_element(options.Levels.begin(), options.Levels.end()));
+  }
+  filter->GenerateCollapseRecordOn();
+  return Continue;
+}
+
+/// The decimation (OUTPUT written unless --lod), or with --from-record the record read.
+int DecimateOrLoad(vtkColorHalfEdgeDecimation* filter, const Options& options,
+                   vtkSmartPointer<vtkTable>& record, Figures& figures)
+{
+  std::string error;
+  if (!options.FromRecord.empty())
+  {
+    record = ReadRecord(options.FromRecord, error);
+    return record ? Continue : Fail(error);
+  }
+  int status = PrepareRecordRun(filter, options);
+  status = status == Continue ? Decimate(filter, options, figures) : status;
+  if (status == Continue && options.Levels.empty())
+  {
+    status = WriteOutput(filter, options, figures);
+  }
+  record = filter->GetCollapseRecord();
+  if (status == Continue && !options.SaveRecord.empty() &&
+      !WriteRecord(record, options.SaveRecord, error))
+  {
+    return Fail(error);
+  }
+  if (status == Continue && !options.Quiet && !options.SaveRecord.empty())
+  {
+    std::cout << "wrote   " << options.SaveRecord << " (the collapse record, "
+              << record->GetNumberOfRows() << " collapses)\n";
+  }
+  return status;
+}
+
+/// One level from the record into `level.Path`; its figures printed unless --quiet.
+int WriteLevel(vtkColorHalfEdgeLevelOfDetail* lod, const Options& options, LevelFigures& level)
+{
+  {
+    MessageCatcher::Scope scope;
+    const auto start = std::chrono::steady_clock::now();
+    lod->Update();
+    level.ExtractSeconds = Seconds(start, std::chrono::steady_clock::now());
+    if (!scope.Get()->Errors.empty())
+    {
+      return Fail("level of detail failed: " + MessageCatcher::Clean(scope.Get()->Errors.front()));
+    }
+  }
+  const auto start = std::chrono::steady_clock::now();
+  std::string error;
+  if (!WriteMesh(lod->GetOutput(), level.Path, options.Array, error))
+  {
+    return Fail(error);
+  }
+  level.WriteSeconds = Seconds(start, std::chrono::steady_clock::now());
+  level.Points = lod->GetOutput()->GetNumberOfPoints();
+  level.Triangles = CountTriangles(lod->GetOutput());
+  level.Reduction = lod->GetActualReduction();
+  level.Error = lod->GetActualError();
+  level.Collapses = static_cast<long long>(lod->GetNumberOfCollapses());
+  if (!options.Quiet)
+  {
+    char line[512];
+    std::snprintf(line, sizeof(line),
+                  "level   %s: %lld points, %lld triangles, reduction %.4f (target %.4f), "
+                  "%lld collapses, error %g, extract %.3f s, write %.3f s\n",
+                  level.Path.c_str(), level.Points, level.Triangles, level.Reduction, level.Asked,
+                  level.Collapses, level.Error, level.ExtractSeconds, level.WriteSeconds);
+    std::cout << line << std::flush;
+  }
+  return Continue;
+}
+
+/// --lod (each level, from the run's record) or --from-record (OUTPUT, or the --lod levels).
+int WriteLevels(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkPolyData* input,
+                vtkTable* record, Figures& figures)
+{
+  vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+  lod->SetInputData(input);
+  lod->SetRecordData(record);
+  lod->SetMaximumError(filter->GetMaximumError());
+  lod->SetGenerateOriginalPointIds(filter->GetGenerateOriginalPointIds());
+  lod->SetOriginalPointIdsArrayName(filter->GetOriginalPointIdsArrayName());
+  std::vector<double> asked = options.Levels;
+  if (asked.empty())
+  {
+    asked.push_back(filter->GetTargetReduction()); // --from-record alone: the options' level
+    lod->SetTargetNumberOfTriangles(filter->GetTargetNumberOfTriangles());
+  }
+  for (size_t i = 0; i < asked.size(); ++i)
+  {
+    LevelFigures level;
+    level.Asked = asked[i];
+    level.Path = options.Levels.empty() ? options.Output : LevelPath(options.Output, int(i) + 1);
+    lod->SetTargetReduction(asked[i]);
+    const int status = WriteLevel(lod, options, level);
+    if (status != Continue)
+    {
+      return status;
+    }
+    figures.Levels.push_back(level);
+  }
+  return Continue;
+}
+
 /// Everything after the command line, step by step; the exit status.
 int Run(const Options& options)
 {
@@ -796,13 +1025,18 @@ int Run(const Options& options)
   vtkNew<vtkColorHalfEdgeDecimation> filter;
   Configure(filter, options, input.Mesh);
   Figures figures;
-  status = Decimate(filter, options, figures);
-  status = status == Continue ? WriteOutput(filter, options, figures) : status;
+  vtkSmartPointer<vtkTable> record;
+  status = DecimateOrLoad(filter, options, record, figures);
+  const bool levels = !options.Levels.empty() || !options.FromRecord.empty();
+  if (status == Continue && levels)
+  {
+    status = WriteLevels(filter, options, input.Mesh, record, figures);
+  }
   if (status != Continue)
   {
     return status;
   }
-  if (!options.Quiet)
+  if (!options.Quiet && !levels)
   {
     PrintFigures(filter, options, input, figures);
   }
@@ -812,7 +1046,7 @@ int Run(const Options& options)
   {
     return Fail("cannot write the statistics to '" + options.Stats + "'");
   }
-  status = options.Snapshot.empty() ? Continue : Snapshot(filter, options, input.Mesh);
+  status = options.Snapshot.empty() || levels ? Continue : Snapshot(filter, options, input.Mesh);
   return status == Continue ? 0 : status;
 }
 } // namespace
@@ -836,6 +1070,7 @@ int main(int argc, char* argv[])
   AddStopOptions(app, options);
   AddScheduleOptions(app, options);
   AddOutputOptions(app, options);
+  AddLevelOptions(app, options);
   app.footer(Footer());
   const int status = ParseCommandLine(app, argc, argv);
   if (status >= 0)

@@ -10,9 +10,11 @@
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
+#include "vtkObject.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolygon.h"
+#include "vtkSetGet.h"
 #include "vtkSmartPointer.h"
 #include "vtkTriangleStrip.h"
 #include "vtkTypeInt32Array.h"
@@ -482,6 +484,62 @@ void WriteColor(vtkDataArray* array, vtkIdType i, const double rgb[3], const dou
   {
     array->SetComponent(i, 0, value((rgb[0] + rgb[1] + rgb[2]) / 3.0));
   }
+}
+
+/// The points and the triangles; false (with an error) where they cannot be decimated.
+bool ReadGeometry(vtkObject* self, vtkPolyData* input, int threads, InputMesh& mesh)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  if (!GatherPoints(input->GetPoints(), mesh.Points, threads))
+  {
+    vtkErrorWithObjectMacro(
+      self, << "The input has NaN or infinite point coordinates; output is empty.");
+    return false;
+  }
+  TriangleSoup& soup = mesh.Soup;
+  ExtractTriangles(input, soup, threads);
+  if (soup.IdsOutOfRange)
+  {
+    vtkErrorWithObjectMacro(self, << "The input has cells with point ids outside [0, " << numPoints
+                                  << "); output is empty.");
+    return false;
+  }
+  if (soup.Polygons > 0 || soup.Strips > 0)
+  {
+    // Legitimate input: the output is triangles whatever the input's cells.
+    vtkDebugWithObjectMacro(self, << "Triangulated " << soup.Polygons << " polygons and "
+                                  << soup.Strips << " triangle strips.");
+  }
+  if (soup.Degenerate > 0 || soup.BadCells > 0)
+  {
+    vtkWarningWithObjectMacro(self, << "Dropped " << soup.Degenerate
+                                    << " triangles that repeat a point and " << soup.BadCells
+                                    << " polygons with fewer than 3 points.");
+  }
+  const auto numTriangles = static_cast<vtkIdType>(soup.SourceCell.size());
+  if (numTriangles > std::numeric_limits<int32_t>::max() / 3)
+  {
+    vtkErrorWithObjectMacro(self, << "Too many triangles (" << numTriangles << ").");
+    return false;
+  }
+  if (numTriangles == 0)
+  {
+    vtkWarningWithObjectMacro(self, << "The input has no triangles: empty output.");
+    return false;
+  }
+  return true;
+}
+
+/// (The small allowance keeps a product that is an integer on paper, 1 - 0.8 being
+/// 0.19999999999999996 in double, from losing one.)
+int64_t TargetTriangles(vtkIdType targetNumber, double reduction, vtkIdType numTriangles)
+{
+  if (targetNumber > 0)
+  {
+    return static_cast<int64_t>(targetNumber);
+  }
+  return static_cast<int64_t>(
+    std::floor((1.0 - reduction) * static_cast<double>(numTriangles) + 1e-6));
 }
 
 } // namespace adapter

@@ -16,6 +16,7 @@
 #include <vector>
 
 class vtkDataArray;
+class vtkObject;
 class vtkPoints;
 class vtkPolyData;
 
@@ -56,6 +57,16 @@ struct InputMesh
   /// The core's view of it (pointers into this mesh).
   DecimatorInput CoreInput() const;
 };
+
+/**
+ * The points and the triangles of `input` into `mesh`; false (with an error or warning on
+ * `self`, the output to be left empty) when they cannot be decimated: NaN or infinite
+ * coordinates, point ids out of range, too many triangles, or none.
+ */
+bool ReadGeometry(vtkObject* self, vtkPolyData* input, int threads, InputMesh& mesh);
+
+/// The triangles to leave: targetNumber when > 0, or else (1 - reduction) of numTriangles.
+int64_t TargetTriangles(vtkIdType targetNumber, double reduction, vtkIdType numTriangles);
 
 /// Points as doubles (copied on `threads` threads); false if a coordinate is NaN or infinite.
 bool GatherPoints(vtkPoints* points, Buffer<double>& xyz, int threads);

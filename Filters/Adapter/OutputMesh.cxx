@@ -26,6 +26,47 @@ namespace adapter
 {
 namespace
 {
+/// The decimator's surviving faces, each wound as its input triangle or (consistent) as the
+/// decimation wound its piece.
+struct DecimatedFaces
+{
+  const Decimator& Result;
+  bool Consistent;
+  int32_t Count() const { return this->Result.GetMesh().GetNumberOfFaceSlots(); }
+  bool Get(int32_t f, int32_t tri[3]) const
+  {
+    const HalfEdgeMesh& mesh = this->Result.GetMesh();
+    if (!mesh.IsFaceAlive(f))
+    {
+      return false;
+    }
+    mesh.GetFace(f, tri);
+    if (!this->Consistent && this->Result.IsFlipped(f))
+    {
+      std::swap(tri[1], tri[2]); // back to the input triangle's winding
+    }
+    return true;
+  }
+};
+
+/// The faces of a level of detail: each input triangle on its points' survivors (Where), kept
+/// if they are three different points.
+struct LevelFaces
+{
+  const int32_t* Triangles;
+  int32_t NumberOfTriangles;
+  const int32_t* Where;
+  int32_t Count() const { return this->NumberOfTriangles; }
+  bool Get(int32_t f, int32_t tri[3]) const
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      tri[k] = this->Where[this->Triangles[3 * size_t(f) + k]];
+    }
+    return tri[0] != tri[1] && tri[1] != tri[2] && tri[2] != tri[0];
+  }
+};
+
 /// The points the surviving triangles use: input id -> output id (-1 if unused), and the
 /// lists of both for copying the point data.
 struct UsedPoints
@@ -36,16 +77,16 @@ struct UsedPoints
   vtkIdType Triangles = 0;  ///< the surviving triangles
 };
 
-void FindUsedPoints(const HalfEdgeMesh& mesh, vtkIdType numPoints, UsedPoints& used)
+template <typename Faces>
+void FindUsedPoints(const Faces& faces, vtkIdType numPoints, UsedPoints& used)
 {
   used.NewId.assign(numPoints, -1);
-  for (int32_t f = 0; f < mesh.GetNumberOfFaceSlots(); ++f)
+  for (int32_t f = 0; f < faces.Count(); ++f)
   {
-    if (mesh.IsFaceAlive(f))
+    int32_t tri[3];
+    if (faces.Get(f, tri))
     {
       ++used.Triangles;
-      int32_t tri[3];
-      mesh.GetFace(f, tri);
       used.NewId[tri[0]] = used.NewId[tri[1]] = used.NewId[tri[2]] = 0;
     }
   }
@@ -60,8 +101,9 @@ void FindUsedPoints(const HalfEdgeMesh& mesh, vtkIdType numPoints, UsedPoints& u
   }
 }
 
-/// The used points, copied from the input (in its own type), moved ones at their new place.
-void WritePoints(vtkPolyData* input, const Decimator& decimator, const UsedPoints& used,
+/// The used points, copied from the input (in its own type), moved ones (with a decimator) at
+/// their new place.
+void WritePoints(vtkPolyData* input, const Decimator* decimator, const UsedPoints& used,
                  vtkPolyData* output)
 {
   const vtkIdType numOutPoints = used.Source->GetNumberOfIds();
@@ -69,16 +111,16 @@ void WritePoints(vtkPolyData* input, const Decimator& decimator, const UsedPoint
   outPoints->SetDataType(input->GetPoints()->GetDataType());
   outPoints->SetNumberOfPoints(numOutPoints);
   input->GetPoints()->GetData()->GetTuples(used.Source, outPoints->GetData());
-  if (decimator.HasMovedVertices())
+  if (decimator && decimator->HasMovedVertices())
   {
     // Full collapses (ColorQuadric with OptimalPlacement) moved some surviving vertices.
     for (vtkIdType i = 0; i < numOutPoints; ++i)
     {
       const auto source = static_cast<int32_t>(used.Source->GetId(i));
-      if (decimator.IsMoved(source))
+      if (decimator->IsMoved(source))
       {
         double p[3];
-        decimator.GetOutputPosition(source, p);
+        decimator->GetOutputPosition(source, p);
         outPoints->SetPoint(i, p);
       }
     }
@@ -87,26 +129,20 @@ void WritePoints(vtkPolyData* input, const Decimator& decimator, const UsedPoint
 }
 
 /// The surviving triangles, in input order, and the input cell of each (sourceCells).
-void WriteTriangles(const Decimator& decimator, bool consistent, const TriangleSoup& soup,
-                    const UsedPoints& used, vtkIdList* sourceCells, vtkIdList* targetCells,
-                    vtkPolyData* output)
+template <typename Faces>
+void WriteTriangles(const Faces& faces, const TriangleSoup& soup, const UsedPoints& used,
+                    vtkIdList* sourceCells, vtkIdList* targetCells, vtkPolyData* output)
 {
-  const HalfEdgeMesh& mesh = decimator.GetMesh();
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfValues(3 * used.Triangles);
   sourceCells->SetNumberOfIds(used.Triangles);
   targetCells->SetNumberOfIds(used.Triangles);
   vtkIdType t = 0;
-  for (int32_t f = 0; f < mesh.GetNumberOfFaceSlots(); ++f)
+  for (int32_t f = 0; f < faces.Count(); ++f)
   {
-    if (mesh.IsFaceAlive(f))
+    int32_t tri[3];
+    if (faces.Get(f, tri))
     {
-      int32_t tri[3];
-      mesh.GetFace(f, tri);
-      if (!consistent && decimator.IsFlipped(f))
-      {
-        std::swap(tri[1], tri[2]); // back to the input triangle's winding
-      }
       for (int k = 0; k < 3; ++k)
       {
         connectivity->SetValue(3 * t + k, used.NewId[tri[k]]);
@@ -245,19 +281,21 @@ void KeepConsistentArrays(vtkDataSetAttributes* data, vtkIdType tuples,
   }
 }
 
-} // namespace
-
-vtkIdType WriteOutput(vtkObject* self, vtkPolyData* input, const InputMesh& mesh,
-                      const Decimator& decimator, const OutputOptions& options, vtkPolyData* output)
+/**
+ * The output of `faces` (DecimatedFaces or LevelFaces): points, triangles, point data (moved
+ * points with their new colour, with a decimator), the original ids, cell data.
+ */
+template <typename Faces>
+vtkIdType Write(vtkObject* self, vtkPolyData* input, const InputMesh& mesh, const Faces& faces,
+                const Decimator* decimator, const char* originalIdsName, vtkPolyData* output)
 {
   const vtkIdType numPoints = input->GetNumberOfPoints();
   UsedPoints used;
-  FindUsedPoints(decimator.GetMesh(), numPoints, used);
+  FindUsedPoints(faces, numPoints, used);
   WritePoints(input, decimator, used, output);
   vtkNew<vtkIdList> sourceCells;
   vtkNew<vtkIdList> targetCells;
-  WriteTriangles(decimator, options.ConsistentOrientation, mesh.Soup, used, sourceCells,
-                 targetCells, output);
+  WriteTriangles(faces, mesh.Soup, used, sourceCells, targetCells, output);
 
   // Arrays whose tuple count does not match their points or cells cannot be carried.
   vtkNew<vtkPointData> inPD;
@@ -276,18 +314,36 @@ vtkIdType WriteOutput(vtkObject* self, vtkPolyData* input, const InputMesh& mesh
   vtkPointData* outPD = output->GetPointData();
   outPD->CopyAllocate(inPD, used.Source->GetNumberOfIds());
   outPD->CopyData(inPD, used.Source, used.Target);
-  if (decimator.HasMovedVertices() && !mesh.Colors.empty())
+  if (decimator && decimator->HasMovedVertices() && !mesh.Colors.empty())
   {
-    WriteMovedColors(mesh, decimator, used, outPD);
+    WriteMovedColors(mesh, *decimator, used, outPD);
   }
-  if (options.OriginalIdsName && *options.OriginalIdsName)
+  if (originalIdsName && *originalIdsName)
   {
-    WriteOriginalIds(self, input, options.OriginalIdsName, used, outPD);
+    WriteOriginalIds(self, input, originalIdsName, used, outPD);
   }
   vtkCellData* outCD = output->GetCellData();
   outCD->CopyAllocate(inCD, used.Triangles);
   outCD->CopyData(inCD, sourceCells, targetCells);
   return used.Triangles;
+}
+
+} // namespace
+
+vtkIdType WriteOutput(vtkObject* self, vtkPolyData* input, const InputMesh& mesh,
+                      const Decimator& decimator, const OutputOptions& options, vtkPolyData* output)
+{
+  const DecimatedFaces faces{ decimator, options.ConsistentOrientation };
+  return Write(self, input, mesh, faces, &decimator, options.OriginalIdsName, output);
+}
+
+vtkIdType WriteLevel(vtkObject* self, vtkPolyData* input, const InputMesh& mesh,
+                     const std::vector<int32_t>& where, const char* originalIdsName,
+                     vtkPolyData* output)
+{
+  const LevelFaces faces{ mesh.Soup.Triangles.data(),
+                          static_cast<int32_t>(mesh.Soup.SourceCell.size()), where.data() };
+  return Write(self, input, mesh, faces, nullptr, originalIdsName, output);
 }
 
 } // namespace adapter

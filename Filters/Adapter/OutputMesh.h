@@ -9,6 +9,9 @@
 
 #include "vtkType.h"
 
+#include <cstdint>
+#include <vector>
+
 class vtkObject;
 class vtkPolyData;
 
@@ -38,6 +41,16 @@ struct OutputOptions
 vtkIdType WriteOutput(vtkObject* self, vtkPolyData* input, const InputMesh& mesh,
                       const Decimator& decimator, const OutputOptions& options,
                       vtkPolyData* output);
+
+/**
+ * Fill `output` with a level of detail of the input: each triangle of the input on its points'
+ * survivors (`where`, from a collapse record), kept if they are three different points, wound
+ * as in the input, with the point data of those points, the original point ids (when
+ * originalIdsName is given) and the cell data. Returns the number of output triangles.
+ */
+vtkIdType WriteLevel(vtkObject* self, vtkPolyData* input, const InputMesh& mesh,
+                     const std::vector<int32_t>& where, const char* originalIdsName,
+                     vtkPolyData* output);
 
 } // namespace adapter
 } // namespace colordecimation

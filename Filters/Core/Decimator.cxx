@@ -100,6 +100,14 @@ DecimatorStatistics Decimator::RunWith(const DecimatorInput& input, int64_t targ
   stats.StateBytes =
     StateBytes(this->Options, input, Metric::BytesPerVertex(), engine->GetMetric().MovesVertices(),
                renumbered, stats.ReorientedTriangles > 0);
+  if (this->Options.RecordCollapses)
+  {
+    // The record (32 B a collapse, and as much again while the schedule collects it) and the
+    // error planes it measures with.
+    stats.StateBytes += 64 * size_t(stats.Collapses) +
+      (this->Options.MaximumError > 0 ? 0
+                                      : ErrorBound::BytesPerVertex * size_t(input.NumberOfPoints));
+  }
   this->TheEngine = std::move(engine);
   return stats;
 }
@@ -126,6 +134,12 @@ const std::vector<ColorQuadric>& Decimator::GetColorQuadrics() const
   static const std::vector<ColorQuadric> none;
   const auto* metric = MetricOf<ColorQuadricMetric>(this->TheEngine.get());
   return metric ? metric->States : none;
+}
+
+const CollapseRecord& Decimator::GetRecord() const
+{
+  static const CollapseRecord none;
+  return this->TheEngine ? this->TheEngine->GetRecord() : none;
 }
 
 bool Decimator::IsFlipped(int32_t t) const

@@ -12,12 +12,15 @@
  * - the schedule, a loop over the engine: schedule/Greedy.h (a min-heap, the paper's order) or
  *   schedule/Batched.h (passes by blocks on several threads);
  * - the stop rules: the target, MaximumError (rules/ErrorBound.h), and after the schedule the
- *   removal of small pieces (mesh/Components.h).
+ *   removal of small pieces (mesh/Components.h);
+ * - optionally, the record of the collapses made, which holds every coarser level of detail
+ *   (lod/CollapseRecord.h).
  */
 #ifndef colordecimation_Decimator_h
 #define colordecimation_Decimator_h
 
 #include "engine/Options.h"
+#include "lod/CollapseRecord.h"
 #include "mesh/HalfEdgeMesh.h"
 #include "metric/ColorQuadric.h"
 #include "metric/HalfEdgeColor.h"
@@ -54,6 +57,9 @@ public:
   const Buffer<VertexMetric>& GetMetrics() const;
   /// The per-vertex state of ColorQuadric (each centred at its vertex's point of R^6).
   const std::vector<ColorQuadric>& GetColorQuadrics() const;
+
+  /// With RecordCollapses: the collapses made, in order, by input ids (lod/CollapseRecord.h).
+  const CollapseRecord& GetRecord() const;
 
   /**
    * Whether input triangle t was decimated reversed, so that its piece is wound one way (the

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace colordecimation
 {
@@ -55,8 +56,15 @@ void EngineBase::SetUp(const DecimatorInput& input, bool useColor, DecimatorStat
   CollapseRules::ComputeReferenceNormals(this->Mesh, this->Positions(), HotStride,
                                          this->ReferenceNormals,
                                          this->ThreadCount(size_t(input.NumberOfTriangles)));
-  this->Errors.Initialize(this->Mesh, this->Positions(), HotStride,
-                          this->Options.MaximumError * this->Geometry.Scale);
+  // A record measures every collapse's error: an infinite bound, if none is given.
+  const double bound = this->Options.MaximumError > 0 ? this->Options.MaximumError
+    : this->Options.RecordCollapses                   ? std::numeric_limits<double>::infinity()
+                                                      : 0.0;
+  this->Errors.Initialize(this->Mesh, this->Positions(), HotStride, bound * this->Geometry.Scale);
+  this->Record.Clear();
+  this->Record.InputPoints = n;
+  this->Record.InputTriangles = input.NumberOfTriangles;
+  this->Recorded.clear();
   this->ThreadsUsed = 1;
 }
 
@@ -121,6 +129,13 @@ void EngineBase::Finish(bool keepHot)
 {
   this->ReferenceNormals = Buffer<float>();
   this->Errors.Release();
+  if (this->Options.RecordCollapses)
+  {
+    this->Record.Append(this->Recorded,
+                        this->Order.Empty() ? nullptr : this->Order.OldVertex.data(),
+                        this->Geometry.Scale);
+    this->Recorded = std::vector<RecordedCollapse>();
+  }
   if (this->Order.Empty())
   {
     return;

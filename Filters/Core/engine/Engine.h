@@ -21,6 +21,7 @@
 
 #include "engine/Frame.h"
 #include "engine/Options.h"
+#include "lod/CollapseRecord.h"
 #include "mesh/HalfEdgeMesh.h"
 #include "mesh/SpatialOrder.h"
 #include "metric/ColorQuadric.h"
@@ -108,6 +109,11 @@ public:
   std::vector<int32_t> Best;
   /// Each vertex: its key is a lower bound, to be made exact (Greedy).
   std::vector<uint8_t> Bounded;
+  /// With RecordCollapses: the collapses made, in order (the schedules append to it); Finish
+  /// turns them into the record.
+  std::vector<RecordedCollapse> Recorded;
+  /// The record of the run, by input ids (after Finish).
+  const CollapseRecord& GetRecord() const { return this->Record; }
 
   static constexpr size_t MinimumThreadWork = 4096;
   /// From this many points on, the arrays are far larger than the cache: the mesh is
@@ -148,6 +154,7 @@ protected:
   Buffer<float> ReferenceNormals; ///< the input normal of every face slot (CollapseRules)
   ErrorBound Errors;              ///< the planes of MaximumError (empty without a bound)
   std::vector<uint8_t> Flipped;   ///< per input triangle: reversed (empty: none was)
+  CollapseRecord Record;          ///< with RecordCollapses, after Finish
   mutable int ThreadsUsed = 1;
 
 private:

@@ -87,6 +87,9 @@ struct DecimatorOptions
   /// When collapses alone leave more than the target, remove whole connected pieces, smallest
   /// area first (mesh/Components.h; section 14). Not after an abort or at MaximumError.
   bool PruneComponents = false;
+  /// Keep the collapses made, in order, for levels of detail (lod/CollapseRecord.h; section
+  /// 15). Each collapse's geometric error is then measured even without MaximumError.
+  bool RecordCollapses = false;
 };
 
 struct DecimatorInput

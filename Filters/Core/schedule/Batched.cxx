@@ -31,10 +31,14 @@ struct Lane
   int64_t Collapses = 0, Rejections = 0, RemovedFaces = 0;
   double LargestSquaredError = 0; ///< under MaximumError: of the collapses made
   bool Exceeded = false;          ///< a candidate beyond MaximumError was skipped
+  /// With RecordCollapses: the collapses made, in the order made, each with its block (Block).
+  std::vector<RecordedCollapse> Record;
+  int32_t Block = -1; ///< the block being collapsed (-1: the deferred ones)
   void ClearPass()
   {
     this->Rejected.clear();
     this->Deferred.clear();
+    this->Record.clear();
     this->Collapses = this->Rejections = this->RemovedFaces = 0;
   }
 };
@@ -109,6 +113,9 @@ private:
   void TryCollapse(int32_t v0, int32_t v1, int32_t pass, Workspace& ws, Lane& lane, bool counted);
   /// Add a lane's results of a pass to the pass's lists and to the statistics.
   void Gather(Lane& lane, DecimatorStatistics& stats);
+  /// With RecordCollapses: the gathered collapses to the engine's record, by block (blocks are
+  /// independent, so any prefix of the record is a mesh some order of them reaches).
+  void FlushRecord();
   /// Fetch the neighbourhoods of candidates[i + a few] into the cache (block >= 0: reading
   /// the records of that block of `level` only).
   void PrefetchCandidates(const Candidate* candidates, size_t i, size_t count, int32_t block,
@@ -130,6 +137,7 @@ private:
   std::vector<Candidate> Batch, Deferred;
   std::vector<size_t> BlockStart;
   std::vector<int32_t> Affected, Rejected;
+  std::vector<RecordedCollapse> Recorded; ///< gathered from the lanes, to be flushed
   /// The vertices that may have a collapse, in vertex order: the collapsible ones, less those
   /// collapsed away after each pass, so that the scans of a pass shrink with the mesh.
   std::vector<int32_t> Live, Kept;
@@ -213,6 +221,7 @@ void BatchedSchedule<Metric>::CollapseByBlocks(int32_t pass, DecimatorStatistics
       this->Gather(lane, stats);
     }
     this->Batch.swap(this->Deferred);
+    this->FlushRecord();
   }
   this->Deferred.swap(this->Batch);
 }
@@ -254,6 +263,7 @@ void BatchedSchedule<Metric>::CollapseBlock(Candidate* begin, Candidate* end, in
                                             Lane& lane)
 {
   SortByKey(begin, end, lane.SortRoom); // cost order (they come in vertex order)
+  lane.Block = block;
   const int32_t* stamp = this->Stamp.data();
   const size_t count = static_cast<size_t>(end - begin);
   this->WarmBlock(block, level, count);
@@ -295,6 +305,7 @@ void BatchedSchedule<Metric>::CollapseDeferred(int32_t pass, DecimatorStatistics
   Workspace& ws = this->E.GetWorkspace(0);
   Lane& lane = this->Lanes[0];
   lane.ClearPass();
+  lane.Block = -1;
   const HalfEdgeMesh& mesh = this->E.GetMesh();
   for (size_t i = 0; i < this->Deferred.size(); ++i)
   {
@@ -322,6 +333,7 @@ void BatchedSchedule<Metric>::CollapseDeferred(int32_t pass, DecimatorStatistics
     }
   }
   this->Gather(lane, stats); // the mesh counted these faces itself: lane.RemovedFaces is 0
+  this->FlushRecord();
 }
 
 template <typename Metric>
@@ -382,6 +394,10 @@ void BatchedSchedule<Metric>::TryCollapse(int32_t v0, int32_t v1, int32_t pass, 
   const int removed = this->E.ApplyCollapse(v0, v1, moves, place, ws, counted);
   lane.RemovedFaces += counted ? 0 : removed; // what the mesh has not counted itself
   ++lane.Collapses;
+  if (this->E.GetOptions().RecordCollapses)
+  {
+    lane.Record.push_back({ v0, v1, removed, lane.Block, this->Keys[v0], squared });
+  }
   this->E.ForEachAffected(v1, ws.FormerNeighbors, [pass, stamp](int32_t u) { stamp[u] = pass; });
 }
 
@@ -395,6 +411,17 @@ void BatchedSchedule<Metric>::Gather(Lane& lane, DecimatorStatistics& stats)
   stats.ErrorBoundReached = stats.ErrorBoundReached || lane.Exceeded;
   this->LargestSquaredError = std::max(this->LargestSquaredError, lane.LargestSquaredError);
   this->E.GetMesh().RemoveLiveFaces(lane.RemovedFaces);
+  this->Recorded.insert(this->Recorded.end(), lane.Record.begin(), lane.Record.end());
+}
+
+template <typename Metric>
+void BatchedSchedule<Metric>::FlushRecord()
+{
+  std::stable_sort(this->Recorded.begin(), this->Recorded.end(),
+                   [](const RecordedCollapse& a, const RecordedCollapse& b)
+                   { return a.Block < b.Block; });
+  this->E.Recorded.insert(this->E.Recorded.end(), this->Recorded.begin(), this->Recorded.end());
+  this->Recorded.clear();
 }
 
 template <typename Metric>

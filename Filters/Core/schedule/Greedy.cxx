@@ -98,22 +98,29 @@ private:
       this->Requeue(v0, true); // over its legal collapses only
       return false;
     }
-    if (this->E.HasErrorBound() && !this->KeepsWithinBound(v0, v1, moves, place))
+    double squared = 0;
+    if (this->E.HasErrorBound() && !this->KeepsWithinBound(v0, v1, moves, place, squared))
     {
       stats.ErrorBoundReached = true; // the run stops before this collapse
       return false;
     }
+    const double cost = this->Heap.TopKey();
     this->Heap.Pop();
-    this->E.ApplyCollapse(v0, v1, moves, place, ws, true);
+    const int removed = this->E.ApplyCollapse(v0, v1, moves, place, ws, true);
     ++stats.Collapses;
+    if (this->E.GetOptions().RecordCollapses)
+    {
+      this->E.Recorded.push_back({ v0, v1, removed, 0, cost, squared });
+    }
     this->E.ForEachAffected(v1, ws.FormerNeighbors, [this](int32_t u) { this->Update(u); });
     return true;
   }
 
-  /// Whether v0 -> v1 keeps within MaximumError; the largest error so far is kept.
-  bool KeepsWithinBound(int32_t v0, int32_t v1, bool moves, const typename Metric::Placement& place)
+  /// Whether v0 -> v1 keeps within MaximumError (its squared error into `squared`); the
+  /// largest error so far is kept.
+  bool KeepsWithinBound(int32_t v0, int32_t v1, bool moves, const typename Metric::Placement& place,
+                        double& squared)
   {
-    double squared = 0;
     if (!this->E.IsWithinErrorBound(v0, v1, moves, place, squared))
     {
       return false;

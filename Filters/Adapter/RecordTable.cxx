@@ -1,0 +1,227 @@
+#include "Adapter/RecordTable.h"
+
+#include "Adapter/InputMesh.h"
+
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkStringArray.h"
+#include "vtkTable.h"
+
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+namespace colordecimation
+{
+namespace adapter
+{
+namespace
+{
+const char* const RemovedColumn = "RemovedPointId";
+const char* const SurvivorColumn = "SurvivingPointId";
+const char* const CostColumn = "Cost";
+const char* const ErrorColumn = "Error";
+const char* const TrianglesColumn = "NumberOfTriangles";
+const char* const PointsField = "InputNumberOfPoints";
+const char* const TrianglesField = "InputNumberOfTriangles";
+const char* const ChecksumField = "InputChecksum";
+const char* const ScheduleField = "CollapseSchedule";
+
+/// A 64-bit hash of `count` words (FNV-1a over 8-byte words, then a final mix).
+uint64_t HashWords(const void* data, size_t bytes, uint64_t h)
+{
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (size_t i = 0; i + 8 <= bytes; i += 8)
+  {
+    uint64_t word;
+    std::memcpy(&word, p + i, 8);
+    h = (h ^ word) * 0x100000001b3ULL;
+  }
+  for (size_t i = bytes - bytes % 8; i < bytes; ++i)
+  {
+    h = (h ^ p[i]) * 0x100000001b3ULL;
+  }
+  return h;
+}
+
+template <typename Array, typename T>
+void AddColumn(vtkTable* table, const char* name, const std::vector<T>& values)
+{
+  vtkNew<Array> column;
+  column->SetName(name);
+  column->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    column->SetValue(static_cast<vtkIdType>(i), values[i]);
+  }
+  table->AddColumn(column);
+}
+
+void AddField(vtkFieldData* field, const char* name, vtkIdType value)
+{
+  vtkNew<vtkIdTypeArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  field->AddArray(array);
+}
+
+void AddField(vtkFieldData* field, const char* name, const std::string& value)
+{
+  vtkNew<vtkStringArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  field->AddArray(array);
+}
+
+/// A column of `rows` single values, or null.
+vtkDataArray* Column(vtkTable* table, const char* name, vtkIdType rows)
+{
+  vtkDataArray* column = vtkDataArray::SafeDownCast(table->GetColumnByName(name));
+  return column && column->GetNumberOfComponents() == 1 && column->GetNumberOfTuples() == rows
+    ? column
+    : nullptr;
+}
+
+/// Integer ids from a column; false if one is not an integer that fits.
+bool ReadIds(vtkDataArray* column, std::vector<int32_t>& ids)
+{
+  ids.resize(static_cast<size_t>(column->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < column->GetNumberOfTuples(); ++i)
+  {
+    const double v = column->GetComponent(i, 0);
+    if (!(v >= -1.0 && v <= 2147483647.0) || v != std::floor(v))
+    {
+      return false;
+    }
+    ids[i] = static_cast<int32_t>(v);
+  }
+  return true;
+}
+
+template <typename T>
+void ReadValues(vtkDataArray* column, std::vector<T>& values)
+{
+  values.resize(static_cast<size_t>(column->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < column->GetNumberOfTuples(); ++i)
+  {
+    values[i] = static_cast<T>(column->GetComponent(i, 0));
+  }
+}
+
+/// The identity kept in the table's field data; false if it is not there.
+bool ReadIdentity(vtkTable* table, MeshIdentity& identity)
+{
+  vtkFieldData* field = table->GetFieldData();
+  auto* points = vtkDataArray::SafeDownCast(field->GetAbstractArray(PointsField));
+  auto* triangles = vtkDataArray::SafeDownCast(field->GetAbstractArray(TrianglesField));
+  auto* checksum = vtkStringArray::SafeDownCast(field->GetAbstractArray(ChecksumField));
+  if (!points || !triangles || !checksum || points->GetNumberOfTuples() != 1 ||
+      triangles->GetNumberOfTuples() != 1 || checksum->GetNumberOfValues() != 1)
+  {
+    return false;
+  }
+  identity.Points = static_cast<vtkIdType>(points->GetComponent(0, 0));
+  identity.Triangles = static_cast<vtkIdType>(triangles->GetComponent(0, 0));
+  identity.Checksum = checksum->GetValue(0);
+  return true;
+}
+
+/// The columns into `record`; false (and why) if one is missing or malformed.
+bool ReadColumns(vtkTable* table, CollapseRecord& record, std::string& why)
+{
+  const vtkIdType rows = table->GetNumberOfRows();
+  vtkDataArray* removed = Column(table, RemovedColumn, rows);
+  vtkDataArray* survivor = Column(table, SurvivorColumn, rows);
+  vtkDataArray* cost = Column(table, CostColumn, rows);
+  vtkDataArray* error = Column(table, ErrorColumn, rows);
+  vtkDataArray* triangles = Column(table, TrianglesColumn, rows);
+  if (!removed || !survivor || !cost || !error || !triangles)
+  {
+    why = std::string("it lacks one of the columns ") + RemovedColumn + ", " + SurvivorColumn +
+      ", " + CostColumn + ", " + ErrorColumn + ", " + TrianglesColumn +
+      " (numeric, one component, one value per row)";
+    return false;
+  }
+  if (!ReadIds(removed, record.Removed) || !ReadIds(survivor, record.Survivor))
+  {
+    why = "its point ids are not all integers";
+    return false;
+  }
+  ReadValues(cost, record.Cost);
+  ReadValues(error, record.Error);
+  ReadValues(triangles, record.Triangles);
+  return true;
+}
+} // namespace
+
+MeshIdentity Identify(const InputMesh& mesh)
+{
+  MeshIdentity identity;
+  identity.Points = static_cast<vtkIdType>(mesh.Points.size() / 3);
+  identity.Triangles = static_cast<vtkIdType>(mesh.Soup.SourceCell.size());
+  uint64_t h = 0xcbf29ce484222325ULL;
+  h = HashWords(mesh.Points.data(), mesh.Points.size() * sizeof(double), h);
+  h = HashWords(mesh.Soup.Triangles.data(), mesh.Soup.Triangles.size() * sizeof(int32_t), h);
+  h ^= h >> 33; // a final mix, so that every input bit reaches every digit
+  h *= 0xff51afd7ed558ccdULL;
+  h ^= h >> 33;
+  std::ostringstream hex;
+  hex << std::hex;
+  hex.width(16);
+  hex.fill('0');
+  hex << h;
+  identity.Checksum = hex.str();
+  return identity;
+}
+
+void WriteRecordTable(const CollapseRecord& record, const MeshIdentity& mesh, const char* schedule,
+                      vtkTable* table)
+{
+  table->Initialize();
+  std::vector<vtkIdType> triangles(record.Triangles.begin(), record.Triangles.end());
+  AddColumn<vtkIdTypeArray>(table, RemovedColumn, record.Removed);
+  AddColumn<vtkIdTypeArray>(table, SurvivorColumn, record.Survivor);
+  AddColumn<vtkDoubleArray>(table, CostColumn, record.Cost);
+  AddColumn<vtkDoubleArray>(table, ErrorColumn, record.Error);
+  AddColumn<vtkIdTypeArray>(table, TrianglesColumn, triangles);
+  vtkFieldData* field = table->GetFieldData();
+  AddField(field, PointsField, mesh.Points);
+  AddField(field, TrianglesField, mesh.Triangles);
+  AddField(field, ChecksumField, mesh.Checksum);
+  AddField(field, ScheduleField, std::string(schedule));
+}
+
+bool ReadRecordTable(vtkTable* table, const MeshIdentity& mesh, CollapseRecord& record,
+                     std::string& why)
+{
+  record.Clear();
+  MeshIdentity recorded;
+  if (!table || !ReadIdentity(table, recorded))
+  {
+    why = std::string("it is not a collapse record (no ") + PointsField + ", " + TrianglesField +
+      " and " + ChecksumField + " in its field data)";
+    return false;
+  }
+  if (recorded.Points != mesh.Points || recorded.Triangles != mesh.Triangles ||
+      recorded.Checksum != mesh.Checksum)
+  {
+    why = "it belongs to another mesh (" + std::to_string(recorded.Points) + " points, " +
+      std::to_string(recorded.Triangles) + " triangles, checksum " + recorded.Checksum +
+      "; this input: " + std::to_string(mesh.Points) + ", " + std::to_string(mesh.Triangles) +
+      ", " + mesh.Checksum + ")";
+    return false;
+  }
+  if (!ReadColumns(table, record, why))
+  {
+    return false;
+  }
+  record.InputPoints = static_cast<int32_t>(mesh.Points);
+  record.InputTriangles = mesh.Triangles;
+  return IsConsistent(record, why);
+}
+
+} // namespace adapter
+} // namespace colordecimation

@@ -1,0 +1,113 @@
+#include "lod/CollapseRecord.h"
+
+#include <cmath>
+#include <numeric>
+
+namespace colordecimation
+{
+
+void CollapseRecord::Clear()
+{
+  *this = CollapseRecord();
+}
+
+void CollapseRecord::Append(const std::vector<RecordedCollapse>& made, const int32_t* toInput,
+                            double scale)
+{
+  const size_t start = this->Size(), count = start + made.size();
+  this->Removed.resize(count);
+  this->Survivor.resize(count);
+  this->Cost.resize(count);
+  this->Error.resize(count);
+  this->Triangles.resize(count);
+  int64_t left = start > 0 ? this->Triangles[start - 1] : this->InputTriangles;
+  for (size_t i = 0; i < made.size(); ++i)
+  {
+    const RecordedCollapse& c = made[i];
+    left -= c.RemovedFaces;
+    this->Removed[start + i] = toInput ? toInput[c.V0] : c.V0;
+    this->Survivor[start + i] = toInput ? toInput[c.V1] : c.V1;
+    this->Cost[start + i] = c.Cost;
+    this->Error[start + i] = std::sqrt(c.SquaredError) / scale;
+    this->Triangles[start + i] = left;
+  }
+}
+
+size_t LevelLength(const CollapseRecord& record, int64_t targetTriangles, double maximumError)
+{
+  int64_t left = record.InputTriangles;
+  size_t i = 0;
+  for (; i < record.Size(); ++i)
+  {
+    if (left <= targetTriangles || (maximumError > 0 && record.Error[i] > maximumError))
+    {
+      break;
+    }
+    left = record.Triangles[i];
+  }
+  return i;
+}
+
+bool IsConsistent(const CollapseRecord& record, std::string& why)
+{
+  const size_t n = record.Size();
+  if (record.Survivor.size() != n || record.Cost.size() != n || record.Error.size() != n ||
+      record.Triangles.size() != n || record.InputPoints < 0 || record.InputTriangles < 0)
+  {
+    why = "its columns differ in length, or its mesh sizes are negative";
+    return false;
+  }
+  std::vector<uint8_t> removed(static_cast<size_t>(record.InputPoints), 0);
+  int64_t left = record.InputTriangles;
+  for (size_t i = 0; i < n; ++i)
+  {
+    const int32_t v0 = record.Removed[i], v1 = record.Survivor[i];
+    if (v0 < 0 || v1 < 0 || v0 >= record.InputPoints || v1 >= record.InputPoints || v0 == v1)
+    {
+      why = "collapse " + std::to_string(i) + " names a point id out of range [0, " +
+        std::to_string(record.InputPoints) + ") or the same point twice";
+      return false;
+    }
+    if (removed[v0] || removed[v1])
+    {
+      why = "collapse " + std::to_string(i) + " names a point that an earlier one removed";
+      return false;
+    }
+    removed[v0] = 1;
+    if (record.Triangles[i] >= left || record.Triangles[i] < 0)
+    {
+      why = "its triangle counts do not decrease from the input's " +
+        std::to_string(record.InputTriangles) + " (collapse " + std::to_string(i) + ")";
+      return false;
+    }
+    left = record.Triangles[i];
+  }
+  return true;
+}
+
+void ResolveSurvivors(const CollapseRecord& record, size_t count, std::vector<int32_t>& where)
+{
+  where.resize(static_cast<size_t>(record.InputPoints));
+  std::iota(where.begin(), where.end(), 0);
+  for (size_t i = 0; i < count && i < record.Size(); ++i)
+  {
+    where[record.Removed[i]] = record.Survivor[i];
+  }
+  // Each chain of parents ends at a survivor; every vertex on it is pointed there at once.
+  for (size_t v = 0; v < where.size(); ++v)
+  {
+    int32_t root = where[v];
+    while (where[root] != root)
+    {
+      root = where[root];
+    }
+    for (int32_t u = static_cast<int32_t>(v); where[u] != root;)
+    {
+      const int32_t next = where[u];
+      where[u] = root;
+      u = next;
+    }
+  }
+}
+
+} // namespace colordecimation

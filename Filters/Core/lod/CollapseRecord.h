@@ -1,0 +1,81 @@
+/**
+ * @file CollapseRecord.h
+ * @brief The collapses of a run in the order they were made, and the levels of detail they
+ * hold (docs/ALGORITHM.md, section 15).
+ *
+ * A half-edge collapse keeps the surviving vertex where it is, so the mesh after the first k
+ * collapses of a run is the input with each removed vertex replaced by the vertex it went into
+ * (followed to the one that survives them all) and the triangles that then repeat a vertex
+ * dropped. Every prefix of the record is such a level, nested in every shorter prefix: the
+ * points of a coarser level are a subset of those of each finer one.
+ */
+#ifndef colordecimation_CollapseRecord_h
+#define colordecimation_CollapseRecord_h
+
+#include "vtkColorDecimationModule.h" // for export macro
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace colordecimation
+{
+
+/// One collapse as a schedule makes it (the run's own vertex ids; its squared error in the
+/// frame's units); Block orders the Batched schedule's parallel collapses.
+struct RecordedCollapse
+{
+  int32_t V0;
+  int32_t V1;
+  int32_t RemovedFaces;
+  int32_t Block;
+  double Cost;
+  double SquaredError;
+};
+
+/// The record of a run, by input ids, in collapse order.
+struct VTKCOLORDECIMATION_EXPORT CollapseRecord
+{
+  std::vector<int32_t> Removed;   ///< v0: the vertex collapsed away
+  std::vector<int32_t> Survivor;  ///< v1: the vertex it collapsed into (its parent)
+  std::vector<double> Cost;       ///< the cost the schedule ordered it by
+  std::vector<double> Error;      ///< its geometric error (rules/ErrorBound.h), input units
+  std::vector<int64_t> Triangles; ///< triangles left after it
+  int32_t InputPoints = 0;
+  int64_t InputTriangles = 0;
+
+  size_t Size() const { return this->Removed.size(); }
+  void Clear();
+  /// Append the schedule's collapses; `toInput` maps the run's ids to the input's (null: the
+  /// same), `scale` turns the frame's distances into the input's.
+  void Append(const std::vector<RecordedCollapse>& made, const int32_t* toInput, double scale);
+};
+
+/**
+ * How many of the record's first collapses make the level that a run to `targetTriangles`
+ * (and `maximumError`, when > 0) stops at: up to the first collapse that leaves at most
+ * targetTriangles, and before the first whose error exceeds maximumError; all of them if
+ * neither stops it first.
+ */
+VTKCOLORDECIMATION_EXPORT size_t LevelLength(const CollapseRecord& record, int64_t targetTriangles,
+                                             double maximumError);
+
+/**
+ * Whether the record is one of a mesh of `points` points: every id in range, no vertex
+ * removed twice or collapsed into after its removal, the triangle counts decreasing. On
+ * failure, `why` says what is wrong.
+ */
+VTKCOLORDECIMATION_EXPORT bool IsConsistent(const CollapseRecord& record, std::string& why);
+
+/**
+ * Each vertex's vertex in the level of the first `count` collapses: itself if it survives
+ * them, else the survivor it ended in (`where` has InputPoints entries). Linear in the points
+ * and `count`.
+ */
+VTKCOLORDECIMATION_EXPORT void ResolveSurvivors(const CollapseRecord& record, size_t count,
+                                                std::vector<int32_t>& where);
+
+} // namespace colordecimation
+
+#endif

@@ -1,0 +1,193 @@
+/*=========================================================================
+
+  Program:   ColorDecimation (a VTK module)
+  Module:    vtkColorHalfEdgeLevelOfDetail.cxx
+
+  Distributed under the OSI-approved BSD 3-Clause License; see LICENSE.
+
+=========================================================================*/
+#include "vtkColorHalfEdgeLevelOfDetail.h"
+
+#include "Adapter/InputMesh.h"
+#include "Adapter/OutputMesh.h"
+#include "Adapter/RecordTable.h"
+#include "Core/lod/CollapseRecord.h"
+
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkTable.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkColorHalfEdgeLevelOfDetail);
+
+/// The mesh and the record of the last execution, kept while neither changes.
+struct vtkColorHalfEdgeLevelOfDetail::Cache
+{
+  colordecimation::adapter::InputMesh Mesh;
+  colordecimation::CollapseRecord Record;
+  std::vector<int32_t> Where; ///< each input point's point in the level
+  vtkPolyData* Input = nullptr;
+  vtkDataObject* RecordData = nullptr;
+  vtkMTimeType InputTime = 0, RecordTime = 0;
+  bool Valid = false;
+};
+
+//------------------------------------------------------------------------------
+vtkColorHalfEdgeLevelOfDetail::vtkColorHalfEdgeLevelOfDetail()
+  : TargetReduction(0.9)
+  , TargetNumberOfTriangles(0)
+  , MaximumError(0.0)
+  , GenerateOriginalPointIds(true)
+  , OriginalPointIdsArrayName(nullptr)
+  , ActualReduction(0.0)
+  , ActualError(0.0)
+  , NumberOfCollapses(0)
+  , NumberOfRecordedCollapses(0)
+  , Cached(new Cache)
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetOriginalPointIdsArrayName("vtkOriginalPointIds");
+}
+
+//------------------------------------------------------------------------------
+vtkColorHalfEdgeLevelOfDetail::~vtkColorHalfEdgeLevelOfDetail()
+{
+  this->SetOriginalPointIdsArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkColorHalfEdgeLevelOfDetail::SetRecordConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+//------------------------------------------------------------------------------
+void vtkColorHalfEdgeLevelOfDetail::SetRecordData(vtkDataObject* record)
+{
+  this->SetInputData(1, record);
+}
+
+//------------------------------------------------------------------------------
+int vtkColorHalfEdgeLevelOfDetail::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkTable");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1); // so that its absence gets our own error
+    return 1;
+  }
+  return this->Superclass::FillInputPortInformation(port, info);
+}
+
+//------------------------------------------------------------------------------
+bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObject* record)
+{
+  Cache& cache = *this->Cached;
+  if (cache.Valid && cache.Input == input && cache.RecordData == record &&
+      cache.InputTime == input->GetMTime() && cache.RecordTime == record->GetMTime())
+  {
+    return true;
+  }
+  cache = Cache();
+  const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+  if (input->GetNumberOfPoints() == 0 ||
+      !colordecimation::adapter::ReadGeometry(this, input, threads, cache.Mesh))
+  {
+    return false;
+  }
+  std::string why;
+  if (!colordecimation::adapter::ReadRecordTable(vtkTable::SafeDownCast(record),
+                                                 colordecimation::adapter::Identify(cache.Mesh),
+                                                 cache.Record, why))
+  {
+    vtkErrorMacro(<< "The collapse record cannot be used: " << why << ". Output is empty.");
+    return false;
+  }
+  cache.Input = input;
+  cache.RecordData = record;
+  cache.InputTime = input->GetMTime();
+  cache.RecordTime = record->GetMTime();
+  cache.Valid = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(request),
+                                               vtkInformationVector** inputVector,
+                                               vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkDataObject* record = vtkDataObject::GetData(inputVector[1], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->ActualReduction = this->ActualError = 0.0;
+  this->NumberOfCollapses = this->NumberOfRecordedCollapses = 0;
+  if (!input || !output)
+  {
+    return 0;
+  }
+  output->GetFieldData()->PassData(input->GetFieldData());
+
+  // 1. The mesh and the record, checked against each other (kept from the last execution
+  // while neither changed).
+  if (!std::isfinite(this->MaximumError))
+  {
+    vtkErrorMacro(<< "MaximumError is NaN or infinite; output is empty.");
+    return 1;
+  }
+  if (!record)
+  {
+    vtkErrorMacro(<< "No collapse record on input port 1 (SetRecordConnection); output is empty.");
+    return 1;
+  }
+  if (!this->UpdateCache(input, record))
+  {
+    return 1;
+  }
+  Cache& cache = *this->Cached;
+
+  // 2. The level: the prefix a run to the target stops at, and each point's survivor in it.
+  const colordecimation::CollapseRecord& collapses = cache.Record;
+  const int64_t target = colordecimation::adapter::TargetTriangles(
+    this->TargetNumberOfTriangles, this->TargetReduction, collapses.InputTriangles);
+  const size_t count = colordecimation::LevelLength(collapses, target, this->MaximumError);
+  colordecimation::ResolveSurvivors(collapses, count, cache.Where);
+  this->UpdateProgress(0.5);
+
+  // 3. The output, as the decimation writes it.
+  const vtkIdType triangles = colordecimation::adapter::WriteLevel(
+    this, input, cache.Mesh, cache.Where,
+    this->GenerateOriginalPointIds ? this->OriginalPointIdsArrayName : nullptr, output);
+  this->NumberOfCollapses = static_cast<vtkIdType>(count);
+  this->NumberOfRecordedCollapses = static_cast<vtkIdType>(collapses.Size());
+  this->ActualReduction = collapses.InputTriangles > 0
+    ? 1.0 - static_cast<double>(triangles) / static_cast<double>(collapses.InputTriangles)
+    : 0.0;
+  this->ActualError =
+    count > 0 ? *std::max_element(collapses.Error.begin(), collapses.Error.begin() + count) : 0.0;
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkColorHalfEdgeLevelOfDetail::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "TargetReduction: " << this->TargetReduction << "\n";
+  os << indent << "TargetNumberOfTriangles: " << this->TargetNumberOfTriangles << "\n";
+  os << indent << "MaximumError: " << this->MaximumError << "\n";
+  os << indent << "GenerateOriginalPointIds: " << (this->GenerateOriginalPointIds ? "On" : "Off")
+     << "\n";
+  os << indent << "OriginalPointIdsArrayName: "
+     << (this->OriginalPointIdsArrayName ? this->OriginalPointIdsArrayName : "(none)") << "\n";
+  os << indent << "ActualReduction: " << this->ActualReduction << "\n";
+  os << indent << "ActualError: " << this->ActualError << "\n";
+  os << indent << "NumberOfCollapses: " << this->NumberOfCollapses << "\n";
+  os << indent << "NumberOfRecordedCollapses: " << this->NumberOfRecordedCollapses << "\n";
+}

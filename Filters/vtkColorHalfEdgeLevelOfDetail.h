@@ -1,0 +1,146 @@
+/*=========================================================================
+
+  Program:   ColorDecimation (a VTK module)
+  Module:    vtkColorHalfEdgeLevelOfDetail.h
+
+  Distributed under the OSI-approved BSD 3-Clause License; see LICENSE.
+
+=========================================================================*/
+/**
+ * @class   vtkColorHalfEdgeLevelOfDetail
+ * @brief   extract a level of detail of a mesh from a collapse record, without decimating again
+ *
+ * vtkColorHalfEdgeDecimation with GenerateCollapseRecord on writes, on its second output, the
+ * collapses it made in order. Since a half-edge collapse keeps the surviving point where it
+ * is, every prefix of that record is a decimation of the input: this filter takes the
+ * original mesh (input 0) and the record (input 1, see SetRecordConnection) and outputs the
+ * level a run to TargetReduction, TargetNumberOfTriangles or MaximumError stops at, in time
+ * linear in the mesh (no costs, no rules: each input triangle is put on its points'
+ * survivors, and dropped if two of them are the same point).
+ *
+ * The output is what vtkColorHalfEdgeDecimation writes: the surviving triangles in input
+ * order, each wound as in the input, on the points they use, with every point-data array of
+ * those points and the cell data of those triangles copied bit-exactly, and the original
+ * point ids (GenerateOriginalPointIds, composed with an upstream array as the decimation
+ * does). With the Greedy schedule a level is exactly the output of a direct run to that
+ * target (same triangles, same order); with Batched it is the same prefix of the Batched run's
+ * order. Levels are nested: the points of a coarser level are a subset of those of each finer
+ * one, and RemovedPointId -> SurvivingPointId is each removed point's parent.
+ *
+ * The level is the longest prefix that a run would make: up to the first collapse that leaves
+ * at most the target (TargetNumberOfTriangles when > 0, else (1 - TargetReduction) of the
+ * input's triangles), and, when MaximumError > 0, before the first collapse whose geometric
+ * error exceeds it. A target beyond the record's end gives its last level.
+ *
+ * The record is checked against input 0 (point and triangle counts and a checksum of points
+ * and triangles) and for consistency (ids in range, no point removed twice, triangle counts
+ * decreasing); a record that fails is an error and the output is empty. The mesh and the
+ * record are read once and kept while neither changes, so that moving TargetReduction (a
+ * ParaView slider) only redoes the linear extraction.
+ *
+ * @sa
+ * vtkColorHalfEdgeDecimation
+ */
+#ifndef vtkColorHalfEdgeLevelOfDetail_h
+#define vtkColorHalfEdgeLevelOfDetail_h
+
+#include "vtkColorDecimationModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+
+class VTKCOLORDECIMATION_EXPORT vtkColorHalfEdgeLevelOfDetail : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkColorHalfEdgeLevelOfDetail* New();
+  vtkTypeMacro(vtkColorHalfEdgeLevelOfDetail, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The collapse record (input port 1), vtkColorHalfEdgeDecimation's output port 1 or a
+   * vtkTable read back from a file.
+   */
+  void SetRecordConnection(vtkAlgorithmOutput* output);
+  void SetRecordData(vtkDataObject* record);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the reduction of the level: the fraction of the input triangles to remove.
+   * Default 0.9.
+   */
+  vtkSetClampMacro(TargetReduction, double, 0.0, 1.0);
+  vtkGetMacro(TargetReduction, double);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the number of triangles of the level, instead of TargetReduction. 0 (default): use
+   * TargetReduction.
+   */
+  vtkSetClampMacro(TargetNumberOfTriangles, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(TargetNumberOfTriangles, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the largest geometric error (vtkColorHalfEdgeDecimation::MaximumError, in the
+   * input's units) of the level's collapses: the level ends before the first collapse beyond
+   * it. 0 or negative (default): no bound.
+   */
+  vtkSetMacro(MaximumError, double);
+  vtkGetMacro(MaximumError, double);
+  ///@}
+
+  ///@{
+  /**
+   * As in vtkColorHalfEdgeDecimation: an array (default "vtkOriginalPointIds") with each output
+   * point's input id, composed with an upstream array of that name. Default on.
+   */
+  vtkSetMacro(GenerateOriginalPointIds, vtkTypeBool);
+  vtkGetMacro(GenerateOriginalPointIds, vtkTypeBool);
+  vtkBooleanMacro(GenerateOriginalPointIds, vtkTypeBool);
+  vtkSetStringMacro(OriginalPointIdsArrayName);
+  vtkGetStringMacro(OriginalPointIdsArrayName);
+  ///@}
+
+  /// The reduction of the last level extracted: 1 - its triangles / the input's.
+  vtkGetMacro(ActualReduction, double);
+  /// The largest geometric error of the last level's collapses (input units).
+  vtkGetMacro(ActualError, double);
+  /// The number of collapses of the last level (the prefix of the record it takes).
+  vtkGetMacro(NumberOfCollapses, vtkIdType);
+  /// The number of collapses in the record (the finest-to-coarsest range of levels).
+  vtkGetMacro(NumberOfRecordedCollapses, vtkIdType);
+
+protected:
+  vtkColorHalfEdgeLevelOfDetail();
+  ~vtkColorHalfEdgeLevelOfDetail() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /// Read the mesh and the record, unless they are those of the last execution; false (with
+  /// an error) if they cannot be used.
+  bool UpdateCache(vtkPolyData* input, vtkDataObject* record);
+
+  double TargetReduction;
+  vtkIdType TargetNumberOfTriangles;
+  double MaximumError;
+  vtkTypeBool GenerateOriginalPointIds;
+  char* OriginalPointIdsArrayName;
+  double ActualReduction;
+  double ActualError;
+  vtkIdType NumberOfCollapses;
+  vtkIdType NumberOfRecordedCollapses;
+
+private:
+  vtkColorHalfEdgeLevelOfDetail(const vtkColorHalfEdgeLevelOfDetail&) = delete;
+  void operator=(const vtkColorHalfEdgeLevelOfDetail&) = delete;
+
+  struct Cache;
+  std::unique_ptr<Cache> Cached;
+};
+
+#endif

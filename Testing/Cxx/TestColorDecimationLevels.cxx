@@ -1,0 +1,414 @@
+// Tests of the collapse record (vtkColorHalfEdgeDecimation::GenerateCollapseRecord) and of the
+// levels of detail extracted from it (vtkColorHalfEdgeLevelOfDetail): a record computed by
+// hand, Greedy levels equal to direct runs, Batched levels valid and nested, the vertex
+// hierarchy, the round trip through a .vtt file, and every bad record.
+#include "ColorDecimationTestUtilities.h"
+
+#include "ColorDecimationMeshes.h"
+#include "vtkColorHalfEdgeDecimation.h"
+#include "vtkColorHalfEdgeLevelOfDetail.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkTable.h"
+#include "vtkXMLTableReader.h"
+#include "vtkXMLTableWriter.h"
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <set>
+#include <string>
+
+using namespace colordecimation;
+using namespace colordecimation::testing;
+using meshes::Pattern;
+
+namespace
+{
+/// A decimation with the record on (`configure` may set anything else); its record is a copy.
+struct Recorded
+{
+  vtkSmartPointer<vtkPolyData> Output;
+  vtkSmartPointer<vtkTable> Record;
+};
+
+Recorded RecordRun(vtkPolyData* input, double reduction, int schedule,
+                   const Configure& configure = nullptr)
+{
+  vtkNew<vtkColorHalfEdgeDecimation> filter;
+  filter->SetInputData(input);
+  filter->SetTargetReduction(reduction);
+  filter->SetCollapseSchedule(schedule);
+  filter->GenerateCollapseRecordOn();
+  if (configure)
+  {
+    configure(filter);
+  }
+  filter->Update();
+  Recorded run;
+  run.Output = vtkSmartPointer<vtkPolyData>::New();
+  run.Output->DeepCopy(filter->GetOutput());
+  run.Record = vtkSmartPointer<vtkTable>::New();
+  run.Record->DeepCopy(filter->GetCollapseRecord());
+  return run;
+}
+
+/// The level of `record` that `configure` asks for; its messages in `messages` if given.
+vtkSmartPointer<vtkPolyData> Extract(
+  vtkPolyData* input, vtkTable* record,
+  const std::function<void(vtkColorHalfEdgeLevelOfDetail*)>& configure,
+  Messages* messages = nullptr)
+{
+  vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+  EventRecorder recorder;
+  recorder.Watch(lod);
+  lod->SetInputData(input);
+  lod->SetRecordData(record);
+  configure(lod);
+  lod->Update();
+  if (messages)
+  {
+    *messages = recorder;
+  }
+  else
+  {
+    CD_CHECK_MSG(recorder.Errors == 0 && recorder.Warnings == 0,
+                 "no message: " << recorder.ErrorText() << recorder.WarningText());
+  }
+  auto level = vtkSmartPointer<vtkPolyData>::New();
+  level->DeepCopy(lod->GetOutput());
+  return level;
+}
+
+/// Every array of `a` and `b` (points, point data, cells, cell data) the same, byte for byte.
+bool SameArrays(vtkDataSetAttributes* a, vtkDataSetAttributes* b, std::string& why)
+{
+  if (a->GetNumberOfArrays() != b->GetNumberOfArrays())
+  {
+    why = "different numbers of arrays";
+    return false;
+  }
+  for (int i = 0; i < a->GetNumberOfArrays(); ++i)
+  {
+    vtkDataArray* x = a->GetArray(i);
+    vtkDataArray* y = x && x->GetName() ? b->GetArray(x->GetName()) : nullptr;
+    if (!x || !y || x->GetDataType() != y->GetDataType() ||
+        x->GetNumberOfTuples() != y->GetNumberOfTuples())
+    {
+      why = std::string("array ") + (x && x->GetName() ? x->GetName() : "?") + " differs";
+      return false;
+    }
+    for (vtkIdType t = 0; t < x->GetNumberOfTuples(); ++t)
+    {
+      if (!SameTupleBytes(x, t, y, t))
+      {
+        why = std::string("array ") + x->GetName() + " differs at tuple " + std::to_string(t);
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+/// The same mesh: points, triangles in the same order, point and cell data, bit for bit.
+bool SameMesh(vtkPolyData* a, vtkPolyData* b, std::string& why)
+{
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints() || GetTriangles(a) != GetTriangles(b))
+  {
+    why = "points " + std::to_string(a->GetNumberOfPoints()) + " / " +
+      std::to_string(b->GetNumberOfPoints()) + ", triangles " +
+      std::to_string(a->GetNumberOfCells()) + " / " + std::to_string(b->GetNumberOfCells()) +
+      (a->GetNumberOfPoints() == b->GetNumberOfPoints() ? " (other triangles)" : "");
+    return false;
+  }
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    if (!SameTupleBytes(a->GetPoints()->GetData(), i, b->GetPoints()->GetData(), i))
+    {
+      why = "point " + std::to_string(i) + " differs";
+      return false;
+    }
+  }
+  return SameArrays(a->GetPointData(), b->GetPointData(), why) &&
+    SameArrays(a->GetCellData(), b->GetCellData(), why);
+}
+
+vtkSmartPointer<vtkPolyData> DecoratedSphere(int level)
+{
+  auto mesh = meshes::Icosphere(level, Pattern::SharpRegions);
+  Decorate(mesh);
+  return mesh;
+}
+
+/// A record's column as numbers.
+std::vector<double> ColumnValues(vtkTable* record, const char* name)
+{
+  std::vector<double> values;
+  vtkDataArray* column = vtkDataArray::SafeDownCast(record->GetColumnByName(name));
+  for (vtkIdType i = 0; column && i < column->GetNumberOfTuples(); ++i)
+  {
+    values.push_back(column->GetComponent(i, 0));
+  }
+  return values;
+}
+} // namespace
+
+// The pyramid with PreserveBoundary allows one collapse only, the apex (point 4) into a base
+// point: the record has that one row, with the pyramid's hand-computed error (see
+// TestColorDecimationControls' MaximumErrorByHand: sqrt(4/3) / sqrt(2 + 1/h^2)) and 2 triangles
+// left of 4.
+CD_TEST_CASE(RecordByHand)
+{
+  const double h = 0.1;
+  auto pyramid = meshes::FromTriangles({ 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0, 0, 0, h },
+                                       { 4, 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0 });
+  for (int schedule : { vtkColorHalfEdgeDecimation::Greedy, vtkColorHalfEdgeDecimation::Batched })
+  {
+    const Recorded run = RecordRun(pyramid, 1.0, schedule,
+                                   [](vtkColorHalfEdgeDecimation* f) { f->PreserveBoundaryOn(); });
+    CD_CHECK(run.Record->GetNumberOfRows() == 1);
+    CD_CHECK(ColumnValues(run.Record, "RemovedPointId") == std::vector<double>{ 4 });
+    const double survivor = ColumnValues(run.Record, "SurvivingPointId").at(0);
+    CD_CHECK(survivor >= 0 && survivor <= 3);
+    CD_CHECK(ColumnValues(run.Record, "NumberOfTriangles") == std::vector<double>{ 2 });
+    CD_CHECK_NEAR(ColumnValues(run.Record, "Error").at(0),
+                  std::sqrt(4.0 / 3.0) / std::sqrt(2.0 + 1.0 / (h * h)), 1e-6);
+    vtkFieldData* field = run.Record->GetFieldData();
+    CD_CHECK(field->GetArray("InputNumberOfPoints")->GetComponent(0, 0) == 5);
+    CD_CHECK(field->GetArray("InputNumberOfTriangles")->GetComponent(0, 0) == 4);
+    CD_CHECK(field->GetAbstractArray("InputChecksum") != nullptr);
+  }
+  // Off by default: an empty second output.
+  vtkNew<vtkColorHalfEdgeDecimation> plain;
+  plain->SetInputData(pyramid);
+  plain->Update();
+  CD_CHECK(plain->GetCollapseRecord()->GetNumberOfRows() == 0);
+  CD_CHECK(plain->GetCollapseRecord()->GetNumberOfColumns() == 0);
+}
+
+// Greedy: the level of a record taken to the topological limit is, triangle for triangle and
+// array for array, the output of a direct run to that target (reduction, triangle count,
+// MaximumError), on a small mesh and on one large enough to be decimated in a spatial order.
+CD_TEST_CASE(GreedyLevelsEqualDirectRuns)
+{
+  for (int level : { 3, 7 })
+  {
+    auto mesh = DecoratedSphere(level); // level 7: 163,842 points (renumbered)
+    const Recorded all = RecordRun(mesh, 1.0, vtkColorHalfEdgeDecimation::Greedy);
+    CD_CHECK(all.Record->GetNumberOfRows() > 0);
+    struct Level
+    {
+      double Reduction;
+      vtkIdType Triangles;
+      double Error;
+    };
+    const double diagonal = mesh->GetLength();
+    for (const Level& l : { Level{ 0.5, 0, 0 }, Level{ 0.9, 0, 0 }, Level{ 0.97, 0, 0 },
+                            Level{ 0.0, 601, 0 }, Level{ 0.99, 0, 0.002 * diagonal } })
+    {
+      const auto configure = [&l](auto* f)
+      {
+        f->SetTargetReduction(l.Reduction);
+        f->SetTargetNumberOfTriangles(l.Triangles);
+        f->SetMaximumError(l.Error);
+      };
+      const RunResult direct = Decimate(mesh, l.Reduction,
+                                        [&](vtkColorHalfEdgeDecimation* f)
+                                        {
+                                          f->SetCollapseScheduleToGreedy();
+                                          configure(f);
+                                        });
+      auto extracted = Extract(mesh, all.Record, configure);
+      std::string why;
+      CD_CHECK_MSG(SameMesh(direct.Output, extracted, why),
+                   "level " << level << " at " << l.Reduction << " / " << l.Triangles << " / "
+                            << l.Error << ": " << why);
+    }
+  }
+}
+
+// Batched: the record run's own output is its last level; every level is a valid decimation
+// (CheckDecimatedMesh), on target, and the levels are nested with a consistent hierarchy.
+CD_TEST_CASE(BatchedLevelsNestedAndValid)
+{
+  auto mesh = DecoratedSphere(5);
+  const vtkIdType input = mesh->GetNumberOfCells();
+  for (int schedule : { vtkColorHalfEdgeDecimation::Batched, vtkColorHalfEdgeDecimation::Greedy })
+  {
+    const Recorded run = RecordRun(mesh, 0.99, schedule);
+    std::string why;
+    auto last = Extract(mesh, run.Record, [](auto* f) { f->SetTargetReduction(0.99); });
+    CD_CHECK_MSG(SameMesh(run.Output, last, why), "the run's output is its last level: " << why);
+    const auto removed = ColumnValues(run.Record, "RemovedPointId");
+    const auto parent = ColumnValues(run.Record, "SurvivingPointId");
+    std::set<vtkIdType> finer;
+    bool first = true;
+    for (double reduction : { 0.5, 0.75, 0.9, 0.97, 0.99 })
+    {
+      vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+      lod->SetInputData(mesh);
+      lod->SetRecordData(run.Record);
+      lod->SetTargetReduction(reduction);
+      lod->Update();
+      vtkPolyData* level = lod->GetOutput();
+      const auto target = static_cast<vtkIdType>(std::floor((1 - reduction) * input + 1e-6));
+      CD_CHECK_MSG(level->GetNumberOfCells() <= target && level->GetNumberOfCells() >= target - 1,
+                   reduction << ": " << level->GetNumberOfCells() << " triangles for " << target);
+      CD_CHECK(CheckDecimatedMesh(mesh, level, ClosedSurface(2, SphereNormal),
+                                  "level " + std::to_string(reduction)) == 0);
+      // Nested: a coarser level's points are among the finer one's.
+      const std::set<vtkIdType> kept = OriginalIds(level);
+      for (vtkIdType id : kept)
+      {
+        CD_CHECK_MSG(first || finer.count(id),
+                     "point " << id << " of " << reduction << " is not in the finer level");
+      }
+      // The hierarchy: each removed point's parents lead to a point of the level.
+      std::map<vtkIdType, vtkIdType> parentOf;
+      for (vtkIdType i = 0; i < lod->GetNumberOfCollapses(); ++i)
+      {
+        parentOf[vtkIdType(removed[i])] = vtkIdType(parent[i]);
+      }
+      for (const auto& entry : parentOf)
+      {
+        vtkIdType root = entry.second;
+        while (parentOf.count(root))
+        {
+          root = parentOf[root];
+        }
+        CD_CHECK(kept.count(root) == 1 && kept.count(entry.first) == 0);
+      }
+      CD_CHECK(kept.size() + parentOf.size() == size_t(mesh->GetNumberOfPoints()));
+      finer = kept;
+      first = false;
+    }
+  }
+}
+
+// Saved with vtkXMLTableWriter and read back, the record gives the same level.
+CD_TEST_CASE(RecordRoundTrip)
+{
+  auto mesh = DecoratedSphere(4);
+  const Recorded run = RecordRun(mesh, 1.0, vtkColorHalfEdgeDecimation::Batched);
+  const std::string file = "ColorDecimationRecordRoundTrip.vtt";
+  vtkNew<vtkXMLTableWriter> writer;
+  writer->SetInputData(run.Record);
+  writer->SetFileName(file.c_str());
+  CD_CHECK(writer->Write() == 1);
+  vtkNew<vtkXMLTableReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  CD_CHECK(reader->GetOutput()->GetNumberOfRows() == run.Record->GetNumberOfRows());
+  for (double reduction : { 0.6, 0.95 })
+  {
+    const auto configure = [reduction](auto* f) { f->SetTargetReduction(reduction); };
+    auto fromMemory = Extract(mesh, run.Record, configure);
+    auto fromFile = Extract(mesh, reader->GetOutput(), configure);
+    std::string why;
+    CD_CHECK_MSG(SameMesh(fromMemory, fromFile, why), reduction << ": " << why);
+    CD_CHECK(CheckPointDataCopied(mesh, fromFile) == 0);
+  }
+}
+
+// Bad records: each gives an error naming what is wrong and an empty output.
+CD_TEST_CASE(BadRecords)
+{
+  auto mesh = DecoratedSphere(3);
+  const Recorded run = RecordRun(mesh, 1.0, vtkColorHalfEdgeDecimation::Greedy);
+  const auto expectError = [&mesh](vtkTable* record, vtkPolyData* input, const std::string& part)
+  {
+    Messages messages;
+    auto level = Extract(
+      input ? input : mesh.GetPointer(), record, [](auto* f) { f->SetTargetReduction(0.5); },
+      &messages);
+    CD_CHECK_MSG(messages.HasError(part),
+                 "expected an error with '" << part << "': " << messages.ErrorText());
+    CD_CHECK(level->GetNumberOfPoints() == 0 && level->GetNumberOfCells() == 0);
+  };
+  // Another mesh: one point moved (same counts), then another mesh altogether.
+  auto moved = Copy(mesh);
+  double p[3];
+  moved->GetPoint(7, p);
+  p[0] += 1e-9;
+  moved->GetPoints()->SetPoint(7, p);
+  expectError(run.Record, moved, "belongs to another mesh");
+  expectError(run.Record, DecoratedSphere(2), "belongs to another mesh");
+  // Not a record: the empty table of a run without GenerateCollapseRecord.
+  vtkNew<vtkTable> empty;
+  expectError(empty, nullptr, "not a collapse record");
+  // A column missing.
+  vtkNew<vtkTable> noColumn;
+  noColumn->DeepCopy(run.Record);
+  noColumn->RemoveColumnByName("SurvivingPointId");
+  expectError(noColumn, nullptr, "lacks one of the columns");
+  // Ids out of range, a point removed twice, triangle counts that do not decrease.
+  const auto tampered = [&run](const char* column, vtkIdType row, double value)
+  {
+    auto table = vtkSmartPointer<vtkTable>::New();
+    table->DeepCopy(run.Record);
+    vtkDataArray::SafeDownCast(table->GetColumnByName(column))->SetComponent(row, 0, value);
+    return table;
+  };
+  expectError(tampered("SurvivingPointId", 3, mesh->GetNumberOfPoints()), nullptr, "out of range");
+  expectError(tampered("RemovedPointId", 0, -1), nullptr, "out of range");
+  expectError(tampered("RemovedPointId", 5, ColumnValues(run.Record, "RemovedPointId")[2]), nullptr,
+              "an earlier one removed");
+  expectError(tampered("NumberOfTriangles", 4, mesh->GetNumberOfCells()), nullptr,
+              "do not decrease");
+  // A file cut short: the reader fails, and so does the extraction.
+  const std::string file = "ColorDecimationRecordTruncated.vtt";
+  {
+    vtkNew<vtkXMLTableWriter> writer;
+    writer->SetInputData(run.Record);
+    writer->SetDataModeToAscii();
+    writer->SetFileName(file.c_str());
+    writer->Write();
+    std::ifstream in(file, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    in.close();
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes.substr(0, bytes.size() / 2);
+  }
+  vtkNew<vtkXMLTableReader> reader;
+  EventRecorder readerMessages;
+  readerMessages.Watch(reader);
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  CD_CHECK(readerMessages.Errors > 0);
+  expectError(reader->GetOutput(), nullptr, "collapse record");
+  // No record connected at all.
+  vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+  EventRecorder lodMessages;
+  lodMessages.Watch(lod);
+  lod->SetInputData(mesh);
+  lod->Update();
+  CD_CHECK(lodMessages.Errors > 0);
+  CD_CHECK(lod->GetOutput()->GetNumberOfCells() == 0);
+}
+
+// OptimalPlacement moves points: no record, with a warning; the decimation itself is unchanged.
+CD_TEST_CASE(RecordNotWithOptimalPlacement)
+{
+  auto mesh = DecoratedSphere(3);
+  const RunResult run = RunFilter(mesh, 0.9,
+                                  [](vtkColorHalfEdgeDecimation* f)
+                                  {
+                                    f->SetErrorMetricToColorQuadric();
+                                    f->OptimalPlacementOn();
+                                    f->GenerateCollapseRecordOn();
+                                  });
+  CD_CHECK(run.HasWarning("No collapse record with OptimalPlacement"));
+  CD_CHECK(run.Filter->GetCollapseRecord()->GetNumberOfRows() == 0);
+  CD_CHECK(run.Output->GetNumberOfCells() > 0);
+}
+
+int main(int argc, char* argv[])
+{
+  return RunTestCases(argc, argv);
+}

@@ -1,0 +1,36 @@
+# Checks the "levels" list of color-decimate --lod --stats (a ctest helper).
+#
+#   cmake -DSTATS=file.json -DREDUCTIONS=r1;r2;... -DOUTPUTS=f1;f2;... -P CheckLevels.cmake
+#
+# One level per reduction, in the order given, each naming its file (which must exist) and
+# reporting points, triangles, collapses and its times.
+if (NOT EXISTS "${STATS}")
+  message(FATAL_ERROR "${STATS} was not written")
+endif ()
+file(READ "${STATS}" json)
+message(STATUS "${STATS}:\n${json}")
+string(JSON count ERROR_VARIABLE problem LENGTH "${json}" levels)
+list(LENGTH REDUCTIONS expected)
+if (problem OR NOT count EQUAL expected)
+  message(FATAL_ERROR "expected ${expected} levels, got '${count}' ${problem}")
+endif ()
+math(EXPR last "${count} - 1")
+foreach (i RANGE ${last})
+  list(GET REDUCTIONS ${i} reduction)
+  list(GET OUTPUTS ${i} output)
+  string(JSON asked GET "${json}" levels ${i} target_reduction)
+  string(JSON path GET "${json}" levels ${i} output)
+  if (NOT asked EQUAL reduction AND NOT asked STREQUAL reduction)
+    message(FATAL_ERROR "level ${i}: target_reduction ${asked}, expected ${reduction}")
+  endif ()
+  if (NOT path STREQUAL output OR NOT EXISTS "${output}")
+    message(FATAL_ERROR "level ${i}: output '${path}', expected '${output}' (written)")
+  endif ()
+  foreach (key IN ITEMS output_points output_triangles collapses extract_seconds write_seconds
+      reduction actual_error)
+    string(JSON value ERROR_VARIABLE problem GET "${json}" levels ${i} ${key})
+    if (problem)
+      message(FATAL_ERROR "level ${i}: key '${key}' missing")
+    endif ()
+  endforeach ()
+endforeach ()
