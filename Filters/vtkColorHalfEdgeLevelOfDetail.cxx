@@ -19,6 +19,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
 
 #include <algorithm>
@@ -172,6 +173,25 @@ int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(reques
     : 0.0;
   this->ActualError =
     count > 0 ? *std::max_element(collapses.Error.begin(), collapses.Error.begin() + count) : 0.0;
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkColorHalfEdgeLevelOfDetail::RequestUpdateExtent(vtkInformation* request,
+                                                       vtkInformationVector** inputVector,
+                                                       vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestUpdateExtent(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  if (inInfo && outInfo &&
+      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1)
+  {
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 1);
+  }
   return 1;
 }
 

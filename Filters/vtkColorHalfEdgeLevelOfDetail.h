@@ -34,8 +34,10 @@
  *
  * The record is checked against input 0 (point and triangle counts and a checksum of points
  * and triangles) and for consistency (ids in range, no point removed twice, triangle counts
- * decreasing); a record that fails is an error and the output is empty. The mesh and the
- * record are read once and kept while neither changes, so that moving TargetReduction (a
+ * decreasing); a record that fails is an error and the output is empty. Distributed data
+ * works piece by piece: each piece is extracted with the record made of that piece (this
+ * filter asks for the ghost level the decimation asks for, so the pieces are the same). The mesh
+ * and the record are read once and kept while neither changes, so that moving TargetReduction (a
  * ParaView slider) only redoes the linear extraction.
  *
  * @sa
@@ -120,6 +122,9 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// Distributed data: one level of ghost cells, as vtkColorHalfEdgeDecimation asks for, so
+  /// that each piece is the piece its record was made of.
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   /// Read the mesh and the record, unless they are those of the last execution; false (with
   /// an error) if they cannot be used.

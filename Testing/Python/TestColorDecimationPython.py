@@ -8,7 +8,7 @@ import math
 import os
 import sys
 
-from colordecimation import vtkColorHalfEdgeDecimation
+from colordecimation import vtkColorHalfEdgeDecimation, vtkColorHalfEdgeLevelOfDetail
 import colordecimation
 from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
 from vtkmodules.vtkFiltersCore import vtkAppendFilter
@@ -157,6 +157,42 @@ def main():
     print("OK")
 
 
+def check_levels_of_detail():
+    """One Greedy run with its collapse record to 0.95; the level at 0.8 from the record is the
+    output of a direct Greedy run to 0.8, and a coarser level's points are among a finer one's."""
+    mesh = coloured_sphere(30)
+    record_run = vtkColorHalfEdgeDecimation()
+    record_run.SetInputData(mesh)
+    record_run.SetCollapseScheduleToGreedy()
+    record_run.GenerateCollapseRecordOn()
+    record_run.SetTargetReduction(0.95)
+    lod = vtkColorHalfEdgeLevelOfDetail()
+    lod.SetInputData(mesh)
+    lod.SetRecordConnection(record_run.GetOutputPort(1))
+    direct = vtkColorHalfEdgeDecimation()
+    direct.SetInputData(mesh)
+    direct.SetCollapseScheduleToGreedy()
+    ids = []
+    for reduction in (0.5, 0.8):
+        lod.SetTargetReduction(reduction)
+        lod.Update()
+        direct.SetTargetReduction(reduction)
+        direct.Update()
+        a, b = lod.GetOutput(), direct.GetOutput()
+        if a.GetNumberOfPolys() != b.GetNumberOfPolys() or a.GetNumberOfPoints() != b.GetNumberOfPoints():
+            fail("level %g: %d triangles, direct run %d" % (reduction, a.GetNumberOfPolys(),
+                                                          b.GetNumberOfPolys()))
+        level_ids = a.GetPointData().GetArray("vtkOriginalPointIds")
+        direct_ids = b.GetPointData().GetArray("vtkOriginalPointIds")
+        if any(level_ids.GetValue(i) != direct_ids.GetValue(i) for i in range(a.GetNumberOfPoints())):
+            fail("level %g keeps other points than the direct run" % reduction)
+        ids.append(set(level_ids.GetValue(i) for i in range(a.GetNumberOfPoints())))
+    if not ids[1] <= ids[0]:
+        fail("the coarser level's points are not among the finer level's")
+    print("levels of detail: %d records, levels of %d and %d points, nested"
+          % (record_run.GetCollapseRecord().GetNumberOfRows(), len(ids[0]), len(ids[1])))
+
+
 def check_surface_ids():
     """A surface from vtkDataSetSurfaceFilter keeps the link to its unstructured grid: the
     output's vtkOriginalPointIds are composed with the surface filter's."""
@@ -184,3 +220,4 @@ def check_surface_ids():
 
 if __name__ == "__main__":
     main()
+    check_levels_of_detail()

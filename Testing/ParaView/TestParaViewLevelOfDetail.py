@@ -1,0 +1,96 @@
+"""Levels of detail in ParaView: the decimation's collapse record and the level filter.
+
+    pvpython TestParaViewLevelOfDetail.py --plugin <ColorDecimation.so>
+    mpiexec -np 2 pvbatch TestParaViewLevelOfDetail.py --plugin <ColorDecimation.so>
+
+On a coloured sphere made here, one Greedy "Color Half-Edge Decimation" run with Generate
+Collapse Record to 0.99 feeds "Color Half-Edge Level Of Detail"; each level (the slider moved
+to 0.5, 0.9, 0.97) has the triangles and points of a direct Greedy decimation to that target.
+Under MPI each process decimates its piece and extracts the level of that piece from its own
+record, so the totals agree too. The time of each slider move (the level filter's update) is
+printed.
+"""
+import argparse
+import sys
+import time
+
+from paraview.simple import *  # noqa: F401,F403
+from paraview import servermanager
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--plugin", required=True)
+parser.add_argument("--resolution", type=int, default=120)
+args = parser.parse_args()
+
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("FAILED: " + message)
+
+
+LoadPlugin(args.plugin, remote=False, ns=globals())
+check("ColorHalfEdgeLevelOfDetail" in globals(),
+      "the plugin did not define ColorHalfEdgeLevelOfDetail")
+sm = servermanager.filters.ColorHalfEdgeLevelOfDetail().SMProxy
+for name in ("Input", "Record", "TargetReduction", "TargetNumberOfTriangles", "MaximumError",
+             "GenerateOriginalPointIds", "OriginalPointIdsArrayName"):
+    prop = sm.GetProperty(name)
+    doc = prop.GetDocumentation() if prop is not None else None
+    check(doc is not None and len(doc.GetDescription().split()) >= 5,
+          "property %s missing or not documented" % name)
+
+resolution = args.resolution
+sphere = Sphere(ThetaResolution=resolution, PhiResolution=resolution, Radius=1.0)
+colors = Calculator(Input=sphere, ResultArrayName="RGB", ResultArrayType="Unsigned Char",
+                    Function="(coordsZ>0.3)*225*iHat + (coordsZ<=0.3)*(coordsX>0)*190*jHat"
+                             " + (coordsZ<=0.3)*(coordsX<=0)*215*kHat + 30*(iHat+jHat+kHat)")
+record_run = ColorHalfEdgeDecimation(Input=colors)
+record_run.Colors = ["POINTS", "RGB"]
+record_run.CollapseSchedule = "Greedy"
+record_run.GenerateCollapseRecord = 1
+record_run.TargetReduction = 0.99
+start = time.time()
+record_run.UpdatePipeline()
+print("record run: %.3f s, %d collapses recorded"
+      % (time.time() - start,
+         record_run.GetDataInformation(1).GetNumberOfRows()
+         if hasattr(record_run.GetDataInformation(1), "GetNumberOfRows") else -1))
+
+lod = ColorHalfEdgeLevelOfDetail(Input=colors, Record=OutputPort(record_run, 1))
+direct = ColorHalfEdgeDecimation(Input=colors)
+direct.Colors = ["POINTS", "RGB"]
+direct.CollapseSchedule = "Greedy"
+for reduction in (0.5, 0.9, 0.97):
+    lod.TargetReduction = reduction
+    start = time.time()
+    lod.UpdatePipeline()
+    seconds = time.time() - start
+    direct.TargetReduction = reduction
+    direct.UpdatePipeline()
+    level = lod.GetDataInformation()
+    run = direct.GetDataInformation()
+    print("level %.2f: %d triangles, %d points (direct run: %d, %d); slider move %.3f s"
+          % (reduction, level.GetNumberOfCells(), level.GetNumberOfPoints(),
+             run.GetNumberOfCells(), run.GetNumberOfPoints(), seconds))
+    check(level.GetNumberOfCells() == run.GetNumberOfCells() and
+          level.GetNumberOfPoints() == run.GetNumberOfPoints(),
+          "level %.2f differs from the direct run" % reduction)
+    check(level.GetNumberOfCells() > 0, "level %.2f is empty" % reduction)
+
+# In one process the level is the direct run's output point for point.
+if servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions() == 1:
+    a = servermanager.Fetch(lod)
+    b = servermanager.Fetch(direct)
+    ids_a = a.GetPointData().GetArray("vtkOriginalPointIds")
+    ids_b = b.GetPointData().GetArray("vtkOriginalPointIds")
+    check(ids_a is not None and ids_b is not None and
+          all(ids_a.GetValue(i) == ids_b.GetValue(i) for i in range(a.GetNumberOfPoints())),
+          "the level keeps other points than the direct run")
+
+if failures:
+    print("%d check(s) failed" % len(failures))
+    sys.exit(1)
+print("OK")
