@@ -1006,6 +1006,7 @@ int WriteLevels(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkP
     }
     figures.Levels.push_back(level);
   }
+  figures.PeakRss = PeakRSS();
   return Continue;
 }
 

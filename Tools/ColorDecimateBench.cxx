@@ -16,6 +16,7 @@
 #include "QuadricPeer.h"
 
 #include "vtkColorHalfEdgeDecimation.h"
+#include "vtkColorHalfEdgeLevelOfDetail.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -28,6 +29,7 @@
 #include "vtkPolyData.h"
 #include "vtkQuadricDecimation.h"
 #include "vtkSmartPointer.h"
+#include "vtkTable.h"
 #include "vtkVersion.h"
 
 #ifndef COLORDECIMATION_WITH_MESHOPTIMIZER
@@ -179,6 +181,8 @@ struct Options
   int Repeat = 1;
   long long QuadricMax = 1000000;
   bool NoQuadric = false;
+  bool NoLod = false;
+  long long LodMax = 1000000;
   std::string Markdown;
   std::string Array;
   std::string CommandLine;
@@ -199,6 +203,28 @@ struct RunResult
   double RoundTripSeconds = 0; // WebAssembly: the whole call, node's start included; median
 };
 
+/// The reductions of the levels-of-detail section, finest first.
+const double LodLevels[] = { 0.5, 0.75, 0.9, 0.97, 0.99 };
+const int NumberOfLevels = 5;
+
+/// The methods of the levels-of-detail section that run once per level.
+const int LodSeparateMethods[] = { OursDefaults, QuadricAttributes, MeshOptimizer,
+                                   MeshOptimizerJSAttributes };
+
+/// The levels-of-detail section on one mesh (RunLevels).
+struct LevelsResult
+{
+  bool Ran = false;
+  std::string Skipped; // why it did not run on this mesh
+  RunResult OneRun;    // the run to the coarsest level with the record; its peak spans the
+                       // extractions too
+  RunResult Extractions[NumberOfLevels]; // each level from the record
+  std::string SeparateSkipped[NumberOfMethods];
+  RunResult Separate[NumberOfMethods][NumberOfLevels]; // one run per level
+  bool Reused[NumberOfMethods] = {}; // the level at --reduction is the Meshes table's run
+  bool QuadricCleaned = false;       // vtkQuadricDecimation ran on the cleaned input
+};
+
 struct CaseResult
 {
   std::string Name;
@@ -206,6 +232,7 @@ struct CaseResult
   long long Points = 0;
   long long Triangles = 0;
   RunResult Runs[NumberOfMethods];
+  LevelsResult Levels;
 };
 
 /// What --help says before the options.
@@ -225,7 +252,12 @@ std::string Description()
          "--prefix Tools/MeshOptimizerJS). For each run it prints the filter's own time\n"
          "(wall clock and CPU), the output triangles, vtkQuadricDecimation's time divided by\n"
          "the run's time, and the peak resident memory of the run above the memory before it\n"
-         "(VmHWM after resetting it through /proc/self/clear_refs).";
+         "(VmHWM after resetting it through /proc/self/clear_refs).\n"
+         "Then, on each mesh of up to --lod-max triangles, five levels of detail (reductions\n"
+         "0.5, 0.75, 0.9, 0.97, 0.99) from one run with the collapse record and\n"
+         "vtkColorHalfEdgeLevelOfDetail, against a run per level of this filter at its\n"
+         "defaults, vtkQuadricDecimation (attribute metric on) and meshoptimizer (--no-lod\n"
+         "skips them).";
 }
 
 /// --sizes LIST: comma-separated triangle counts of at least 8.
@@ -306,6 +338,16 @@ void AddRunOptions(CLI::App& app, Options& options)
     "(default 1M; 0 = no limit). Given meshes always run it.")
     ->type_name("N");
   app.add_flag("--no-quadric", options.NoQuadric, "skip vtkQuadricDecimation everywhere");
+  app.add_flag("--no-lod", options.NoLod,
+               "skip the levels-of-detail section (levels 0.5, 0.75, 0.9, 0.97, 0.99 from\n"
+               "one run with the collapse record, against a run per level)");
+  AddValue(
+    app, "--lod-max",
+    [&options](const std::string& text) { return ParseCount(text, options.LodMax); },
+    RuleComplaint("--lod-max must be a triangle count such as 1M"),
+    "run the levels-of-detail section only on meshes of up to N triangles\n"
+    "(default 1M: the 977k sphere, not the 1.5M kitchen; 0 = no limit)")
+    ->type_name("N");
   app
     .add_option("--markdown", options.Markdown,
                 "also write the report as Markdown (e.g. docs/BENCHMARK.md)")
@@ -508,9 +550,30 @@ struct Measurement
   vtkSmartPointer<vtkPolyData> Mesh; // the mesh as given, or its cleaned copy (see below)
 };
 
-/// Run `r` (0-based) of `method`, added to `m`.
+/// One run's figures added to `m` (times, whose medians are kept, and the largest peak).
+void AddRun(const Single& single, long long peak, bool reset, Measurement& m)
+{
+  RunResult& result = m.Result;
+  if (!single.Ok)
+  {
+    result.Error = single.Error;
+  }
+  m.Times.push_back(single.Seconds);
+  m.CpuTimes.push_back(single.CpuSeconds);
+  m.RoundTrips.push_back(single.RoundTripSeconds);
+  result.OutputTriangles = single.OutputTriangles;
+  result.StateBytes = single.StateBytes;
+  result.PeakBytes = std::max(result.PeakBytes, peak);
+  result.PeakReset = result.PeakReset && reset;
+  result.Ran = true;
+  result.Seconds = Median(m.Times);
+  result.CpuSeconds = Median(m.CpuTimes);
+  result.RoundTripSeconds = Median(m.RoundTrips);
+}
+
+/// Run `r` (0-based) of `method` to `reduction`, added to `m`.
 void MeasureOnce(int method, vtkPolyData* given, const Options& options, const std::string& name,
-                 int r, Measurement& m)
+                 int r, double reduction, Measurement& m)
 {
   RunResult& result = m.Result;
   if (!m.Mesh)
@@ -530,7 +593,7 @@ void MeasureOnce(int method, vtkPolyData* given, const Options& options, const s
     bool reset = true;
     {
       PeakMemoryProbe probe;
-      single = RunMethod(method, m.Mesh, options.Reduction);
+      single = RunMethod(method, m.Mesh, reduction);
       peak = single.PeakBytes >= 0 ? single.PeakBytes : probe.PeakAboveBaseline();
       reset = single.PeakBytes >= 0 || probe.PeakWasReset();
     }
@@ -556,25 +619,17 @@ void MeasureOnce(int method, vtkPolyData* given, const Options& options, const s
     {
       std::fprintf(stderr, "[bench] %s: %s reported an error: %s (%lld output triangles)\n",
                    name.c_str(), MethodName(method), single.Error.c_str(), single.OutputTriangles);
-      result.Error = single.Error;
     }
-    m.Times.push_back(single.Seconds);
-    m.CpuTimes.push_back(single.CpuSeconds);
-    m.RoundTrips.push_back(single.RoundTripSeconds);
-    result.OutputTriangles = single.OutputTriangles;
-    result.StateBytes = single.StateBytes;
-    result.PeakBytes = std::max(result.PeakBytes, peak);
-    result.PeakReset = result.PeakReset && reset;
-    result.Ran = true;
-    result.Seconds = Median(m.Times);
-    result.CpuSeconds = Median(m.CpuTimes);
-    result.RoundTripSeconds = Median(m.RoundTrips);
+    AddRun(single, peak, reset, m);
     return;
   }
 }
 
+/// Every available method on `mesh`; `quadricInput` gets the cleaned copy that
+/// vtkQuadricDecimation's attribute metric needed, if it did.
 CaseResult RunCase(const std::string& name, const std::string& description, vtkPolyData* mesh,
-                   const Options& options, bool runQuadric)
+                   const Options& options, bool runQuadric,
+                   vtkSmartPointer<vtkPolyData>* quadricInput = nullptr)
 {
   CaseResult result;
   result.Name = name;
@@ -607,12 +662,209 @@ CaseResult RunCase(const std::string& name, const std::string& description, vtkP
   {
     for (const int method : methods)
     {
-      MeasureOnce(method, mesh, options, name, r, measured[method]);
+      MeasureOnce(method, mesh, options, name, r, options.Reduction, measured[method]);
     }
   }
   for (const int method : methods)
   {
     result.Runs[method] = measured[method].Result;
+  }
+  if (quadricInput && measured[QuadricAttributes].Mesh != mesh)
+  {
+    *quadricInput = measured[QuadricAttributes].Mesh;
+  }
+  return result;
+}
+
+//------------------------------------------------------------------------------
+// Levels of detail: five levels from one run with the collapse record, against a run per
+// level of this filter and of the peers.
+
+/// Wall clock and process CPU time from construction to Stop().
+struct Stopwatch
+{
+  std::chrono::steady_clock::time_point Start = std::chrono::steady_clock::now();
+  double Cpu = ProcessCpuSeconds();
+  void Stop(Single& result) const
+  {
+    result.Seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - this->Start).count();
+    result.CpuSeconds = ProcessCpuSeconds() - this->Cpu;
+  }
+};
+
+/// One round of the one-run row: the run, then each level.
+struct LevelsOnce
+{
+  Single Run;
+  Single Levels[NumberOfLevels];
+};
+
+/// vtkColorHalfEdgeDecimation at its defaults with the collapse record, to the coarsest
+/// level, then each level extracted by one vtkColorHalfEdgeLevelOfDetail (which keeps the
+/// mesh and the record between levels, as a viewer's slider would).
+LevelsOnce RunOneRunLevels(vtkPolyData* mesh)
+{
+  LevelsOnce result;
+  MessageCatcher::Scope quiet;
+  vtkNew<vtkColorHalfEdgeDecimation> filter;
+  filter->SetInputData(mesh);
+  filter->SetTargetReduction(LodLevels[NumberOfLevels - 1]);
+  filter->GenerateCollapseRecordOn();
+  const Stopwatch run;
+  filter->Update();
+  run.Stop(result.Run);
+  result.Run.OutputTriangles = CountTriangles(filter->GetOutput());
+  result.Run.StateBytes = filter->GetStateMemory();
+  vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+  lod->SetInputData(mesh);
+  lod->SetRecordData(filter->GetCollapseRecord());
+  for (int i = 0; i < NumberOfLevels; ++i)
+  {
+    lod->SetTargetReduction(LodLevels[i]);
+    const Stopwatch extraction;
+    lod->Update();
+    extraction.Stop(result.Levels[i]);
+    result.Levels[i].OutputTriangles = CountTriangles(lod->GetOutput());
+  }
+  if (!quiet.Get()->Errors.empty())
+  {
+    result.Run.Ok = false;
+    result.Run.Error = quiet.Get()->FirstError();
+  }
+  return result;
+}
+
+/// Round `r` of the one-run row, added to `run` and `levels`; the peak spans the whole round.
+void MeasureOneRunLevels(vtkPolyData* mesh, const Options& options, const std::string& name, int r,
+                         Measurement& run, Measurement* levels)
+{
+  std::fprintf(
+    stderr, "[bench] %s: levels of detail, one run with the record + %d extractions%s ...",
+    name.c_str(), NumberOfLevels,
+    options.Repeat > 1
+      ? (" (run " + std::to_string(r + 1) + "/" + std::to_string(options.Repeat) + ")").c_str()
+      : "");
+  std::fflush(stderr);
+  LevelsOnce once;
+  long long peak = -1;
+  bool reset = true;
+  {
+    PeakMemoryProbe probe;
+    once = RunOneRunLevels(mesh);
+    peak = probe.PeakAboveBaseline();
+    reset = probe.PeakWasReset();
+  }
+  double extraction = 0;
+  for (int i = 0; i < NumberOfLevels; ++i)
+  {
+    extraction += once.Levels[i].Seconds;
+    AddRun(once.Levels[i], -1, true, levels[i]);
+  }
+  std::fprintf(stderr, " %.3f s + %.3f s\n", once.Run.Seconds, extraction);
+  if (!once.Run.Ok)
+  {
+    std::fprintf(stderr, "[bench] %s: levels of detail reported an error: %s\n", name.c_str(),
+                 once.Run.Error.c_str());
+  }
+  AddRun(once.Run, peak, reset, run);
+}
+
+/// Why the section does not run on a mesh of `triangles`, or "".
+std::string LevelsSkipReason(const Options& options, long long triangles)
+{
+  if (options.NoLod)
+  {
+    return "not run (--no-lod)";
+  }
+  if (options.LodMax > 0 && triangles > options.LodMax)
+  {
+    return "not run (above --lod-max " + SizeLabel(options.LodMax) + "; `--lod-max 0` runs it)";
+  }
+  return "";
+}
+
+/// The methods run once per level, with the reason for those that are not.
+std::vector<int> SeparateMethods(const Options& options, LevelsResult& result)
+{
+  std::vector<int> methods;
+  for (const int method : LodSeparateMethods)
+  {
+    if (!MethodAvailable(method))
+    {
+      result.SeparateSkipped[method] = IsWebAssembly(method)
+        ? "not run (" + MeshOptimizerJSUnavailable() + ")"
+        : "not built (meshoptimizer not found)";
+    }
+    else if (method == QuadricAttributes && options.NoQuadric)
+    {
+      result.SeparateSkipped[method] = "not run (--no-quadric)";
+    }
+    else
+    {
+      methods.push_back(method);
+    }
+  }
+  return methods;
+}
+
+/// Whether level `i` of `method`'s runs per level is the Meshes table's run (the same run).
+bool LevelIsCaseRun(const CaseResult& c, int method, int i, const Options& options)
+{
+  return std::abs(LodLevels[i] - options.Reduction) < 1e-9 && c.Runs[method].Ran;
+}
+
+/// The levels-of-detail section on `mesh`, in rounds as RunCase; the level at --reduction of
+/// the runs per level is the Meshes table's run (`c`), not run again. `quadricInput`: the
+/// cleaned copy that vtkQuadricDecimation needed there, or null.
+LevelsResult RunLevels(const CaseResult& c, vtkPolyData* mesh, vtkPolyData* quadricInput,
+                       const Options& options)
+{
+  LevelsResult result;
+  result.Skipped = LevelsSkipReason(options, c.Triangles);
+  if (!result.Skipped.empty())
+  {
+    return result;
+  }
+  const std::vector<int> methods = SeparateMethods(options, result);
+  Measurement oneRun, extractions[NumberOfLevels];
+  std::vector<Measurement> separate(NumberOfMethods * NumberOfLevels);
+  for (const int method : methods)
+  {
+    for (int i = 0; i < NumberOfLevels; ++i)
+    {
+      separate[method * NumberOfLevels + i].Mesh =
+        method == QuadricAttributes && quadricInput ? quadricInput : mesh;
+    }
+  }
+  result.QuadricCleaned = quadricInput != nullptr;
+  for (int r = 0; r < options.Repeat; ++r)
+  {
+    MeasureOneRunLevels(mesh, options, c.Name, r, oneRun, extractions);
+    for (const int method : methods)
+    {
+      for (int i = 0; i < NumberOfLevels; ++i)
+      {
+        result.Reused[method] = result.Reused[method] || LevelIsCaseRun(c, method, i, options);
+        if (!LevelIsCaseRun(c, method, i, options))
+        {
+          MeasureOnce(method, mesh, options, c.Name + ", level " + Format("%g", LodLevels[i]), r,
+                      LodLevels[i], separate[method * NumberOfLevels + i]);
+        }
+      }
+    }
+  }
+  result.Ran = true;
+  result.OneRun = oneRun.Result;
+  for (int i = 0; i < NumberOfLevels; ++i)
+  {
+    result.Extractions[i] = extractions[i].Result;
+    for (const int method : methods)
+    {
+      result.Separate[method][i] = LevelIsCaseRun(c, method, i, options)
+        ? c.Runs[method]
+        : separate[method * NumberOfLevels + i].Result;
+    }
   }
   return result;
 }
@@ -701,6 +953,162 @@ std::string CaseTable(const CaseResult& c, double reduction)
   }
   os << RoundTripNote(c);
   return os.str();
+}
+
+/// The figures of one row of the levels-of-detail table.
+struct LevelsRow
+{
+  std::string Name;
+  std::string Skipped;
+  double Seconds = 0, CpuSeconds = 0, RoundTripSeconds = 0;
+  double ExtractionSeconds = -1; // the one-run row only
+  long long PeakBytes = -1;
+  bool PeakReset = true;
+  std::string Error;
+  long long Triangles[NumberOfLevels] = {};
+};
+
+/// The one-run row: the run's time plus the extractions' (medians), the round's peak.
+LevelsRow OneRunRow(const LevelsResult& l)
+{
+  LevelsRow row;
+  row.Name = "vtkColorHalfEdgeDecimation, defaults, one run to " +
+    Format("%g", LodLevels[NumberOfLevels - 1]) + " with GenerateCollapseRecord, then " +
+    std::to_string(NumberOfLevels) + " vtkColorHalfEdgeLevelOfDetail extractions";
+  row.Seconds = l.OneRun.Seconds;
+  row.CpuSeconds = l.OneRun.CpuSeconds;
+  row.ExtractionSeconds = 0;
+  for (int i = 0; i < NumberOfLevels; ++i)
+  {
+    row.Seconds += l.Extractions[i].Seconds;
+    row.CpuSeconds += l.Extractions[i].CpuSeconds;
+    row.ExtractionSeconds += l.Extractions[i].Seconds;
+    row.Triangles[i] = l.Extractions[i].OutputTriangles;
+  }
+  row.PeakBytes = l.OneRun.PeakBytes;
+  row.PeakReset = l.OneRun.PeakReset;
+  row.Error = l.OneRun.Error;
+  return row;
+}
+
+/// A row of runs per level: the sums of their median times, their largest peak.
+LevelsRow SeparateRow(const LevelsResult& l, int method)
+{
+  LevelsRow row;
+  row.Name = std::string(MethodName(method)) + ", a run per level";
+  row.Skipped = l.SeparateSkipped[method];
+  for (int i = 0; i < NumberOfLevels; ++i)
+  {
+    const RunResult& r = l.Separate[method][i];
+    row.Seconds += r.Seconds;
+    row.CpuSeconds += r.CpuSeconds;
+    row.RoundTripSeconds += r.RoundTripSeconds;
+    row.PeakBytes = std::max(row.PeakBytes, r.PeakBytes);
+    row.PeakReset = row.PeakReset && r.PeakReset;
+    row.Error = row.Error.empty() ? r.Error : row.Error;
+    row.Triangles[i] = r.OutputTriangles;
+  }
+  return row;
+}
+
+std::string LevelsRowText(const LevelsRow& row, double oneRunSeconds)
+{
+  std::ostringstream os;
+  os << "| " << row.Name << (row.Error.empty() ? "" : " (error, see below)") << " | ";
+  if (!row.Skipped.empty())
+  {
+    os << row.Skipped << " |";
+    for (int k = 0; k < 4 + NumberOfLevels; ++k)
+    {
+      os << " |";
+    }
+    return os.str() + "\n";
+  }
+  os << Format("%.3f", row.Seconds) << " | " << Format("%.3f", row.CpuSeconds) << " | "
+     << (row.ExtractionSeconds >= 0 ? Format("%.3f", row.ExtractionSeconds) : std::string("—"))
+     << " | "
+     << (oneRunSeconds > 0 && row.Error.empty() ? Format("%.1f", row.Seconds / oneRunSeconds)
+                                                : std::string("—"))
+     << " | " << MiB(row.PeakBytes) << (row.PeakReset ? "" : " (process peak)") << " |";
+  for (const long long n : row.Triangles)
+  {
+    os << " " << WithThousands(n) << " |";
+  }
+  return os.str() + "\n";
+}
+
+/// What the table's rows are, under it.
+std::string LevelsNotes(const LevelsResult& l, const std::vector<LevelsRow>& rows,
+                        const Options& options)
+{
+  std::ostringstream os;
+  std::string reused;
+  for (const int method : LodSeparateMethods)
+  {
+    reused += l.Reused[method] ? std::string(reused.empty() ? "" : "; ") + MethodName(method) : "";
+  }
+  if (!reused.empty())
+  {
+    os << "\n- The level at " << Format("%g", options.Reduction)
+       << " of these runs per level is the Meshes table's run (the same run): " << reused << ".\n";
+  }
+  if (l.QuadricCleaned)
+  {
+    os << "\n- vtkQuadricDecimation ran on the output of vtkCleanPolyData, as in the Meshes "
+          "table.\n";
+  }
+  for (const LevelsRow& row : rows)
+  {
+    if (!row.Error.empty())
+    {
+      os << "\n- " << row.Name << ": the error \"" << row.Error << "\" was reported.\n";
+    }
+    if (row.Skipped.empty() && row.RoundTripSeconds > 0)
+    {
+      os << "\n- " << row.Name << ": the whole calls (node's start included) took "
+         << Format("%.3f", row.RoundTripSeconds) << " s.\n";
+    }
+  }
+  return os.str();
+}
+
+std::string LevelsTable(const CaseResult& c, const Options& options)
+{
+  const LevelsResult& l = c.Levels;
+  std::ostringstream os;
+  os << "### Levels of detail: " << c.Name << "\n\n";
+  if (!l.Ran)
+  {
+    return os.str() + l.Skipped + ".\n";
+  }
+  os << c.Description << ": " << WithThousands(c.Points) << " points, "
+     << WithThousands(c.Triangles) << " triangles.\n\n"
+     << "| method | seconds | CPU seconds | extraction seconds | this ÷ one run | peak memory "
+        "(MiB) |";
+  std::string target = "| target triangles | | | | | |", rule = "|---|--:|--:|--:|--:|--:|";
+  for (const double reduction : LodLevels)
+  {
+    os << " triangles at " << Format("%g", reduction) << " |";
+    target += " " +
+      WithThousands(static_cast<long long>(std::floor((1.0 - reduction) * c.Triangles + 1e-6))) +
+      " |";
+    rule += "--:|";
+  }
+  os << "\n" << rule << "\n" << target << "\n";
+  std::vector<LevelsRow> rows = { OneRunRow(l) };
+  for (const int method : LodSeparateMethods)
+  {
+    if ((method == MeshOptimizer || IsWebAssembly(method)) && !MethodAvailable(method))
+    {
+      continue;
+    }
+    rows.push_back(SeparateRow(l, method));
+  }
+  for (const LevelsRow& row : rows)
+  {
+    os << LevelsRowText(row, rows.front().Seconds);
+  }
+  return os.str() + LevelsNotes(l, rows, options);
 }
 
 std::string SweepTable(const std::vector<CaseResult>& sweep)
@@ -879,6 +1287,38 @@ std::string ReportHeader(const Options& options, const std::string& date, double
   return os.str();
 }
 
+/// The levels-of-detail section of the report: what it measures, then a table per mesh.
+std::string LevelsSection(const Options& options, const std::vector<CaseResult>& cases)
+{
+  std::ostringstream os;
+  os << "## Levels of detail: five levels from one run against a run per level\n\n"
+        "Levels at reductions 0.5, 0.75, 0.9, 0.97 and 0.99 of each mesh above";
+  if (options.LodMax > 0)
+  {
+    os << " that has at most " << WithThousands(options.LodMax)
+       << " triangles (--lod-max; `--lod-max 0` takes every mesh)";
+  }
+  os << ".\n\n"
+        "- The first row: one run of vtkColorHalfEdgeDecimation at its defaults with "
+        "GenerateCollapseRecord on, to 0.99, then the five levels from its record by one "
+        "vtkColorHalfEdgeLevelOfDetail (TargetReduction set five times; it keeps the mesh "
+        "and the record between levels). *seconds*: the run plus the five extractions; "
+        "*extraction seconds*: the five extractions alone; *peak memory*: over the run and "
+        "the extractions together (record, cached mesh and level included).\n"
+        "- The other rows: one run per level, each measured as in the Meshes tables; "
+        "*seconds* and *CPU seconds* add up the five runs' medians, *peak memory* is the "
+        "largest of the five (each run's output is freed before the next).\n"
+        "- *this ÷ one run*: the row's seconds divided by the first row's.\n"
+        "- *triangles at R*: the triangles of the level; the *target triangles* row gives "
+        "(1 - R) × the input's triangles, rounded down (the filter's rule); a closed mesh "
+        "loses two triangles a collapse, so it may stop one below.\n\n";
+  for (const CaseResult& c : cases)
+  {
+    os << LevelsTable(c, options) << "\n";
+  }
+  return os.str();
+}
+
 std::string Report(const Options& options, const std::vector<CaseResult>& cases,
                    const std::vector<CaseResult>& sweep, const std::string& date,
                    double totalSeconds, const std::string& loadBefore, const std::string& loadAfter)
@@ -930,6 +1370,10 @@ std::string Report(const Options& options, const std::vector<CaseResult>& cases,
     {
       os << CaseTable(c, options.Reduction) << "\n";
     }
+  }
+  if (!cases.empty() && !options.NoLod)
+  {
+    os << LevelsSection(options, cases);
   }
   if (!sweep.empty())
   {
@@ -1057,8 +1501,15 @@ bool RunCases(const Options& options, std::vector<CaseResult>& cases)
         "[bench] %s has no colour (active scalars): the colour-aware runs use geometry only\n",
         input.Name.c_str());
     }
-    cases.push_back(RunCase(input.Name, description, mesh, options, !options.NoQuadric));
+    vtkSmartPointer<vtkPolyData> quadricInput;
+    cases.push_back(
+      RunCase(input.Name, description, mesh, options, !options.NoQuadric, &quadricInput));
     std::cout << "\n" << CaseTable(cases.back(), options.Reduction) << std::endl;
+    cases.back().Levels = RunLevels(cases.back(), mesh, quadricInput, options);
+    if (!options.NoLod)
+    {
+      std::cout << "\n" << LevelsTable(cases.back(), options) << std::endl;
+    }
   }
   return true;
 }
