@@ -498,13 +498,7 @@ int vtkColorHalfEdgeDecimation::RequestUpdateExtent(vtkInformation* request,
     return 0;
   }
   // Distributed data: one level of ghost cells tells which points are shared with other pieces.
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  if (inInfo && outInfo &&
-      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1)
-  {
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 1);
-  }
+  colordecimation::adapter::RequestGhostCells(inputVector, outputVector);
   return 1;
 }
 

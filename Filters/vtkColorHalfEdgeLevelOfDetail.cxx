@@ -19,7 +19,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
 
 #include <algorithm>
@@ -185,13 +184,7 @@ int vtkColorHalfEdgeLevelOfDetail::RequestUpdateExtent(vtkInformation* request,
   {
     return 0;
   }
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  if (inInfo && outInfo &&
-      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1)
-  {
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 1);
-  }
+  colordecimation::adapter::RequestGhostCells(inputVector, outputVector);
   return 1;
 }
 

@@ -9,6 +9,8 @@
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
 #include "vtkPoints.h"
@@ -16,6 +18,7 @@
 #include "vtkPolygon.h"
 #include "vtkSetGet.h"
 #include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTriangleStrip.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
@@ -540,6 +543,17 @@ int64_t TargetTriangles(vtkIdType targetNumber, double reduction, vtkIdType numT
   }
   return static_cast<int64_t>(
     std::floor((1.0 - reduction) * static_cast<double>(numTriangles) + 1e-6));
+}
+
+void RequestGhostCells(vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  if (inInfo && outInfo &&
+      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1)
+  {
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 1);
+  }
 }
 
 } // namespace adapter

@@ -16,6 +16,7 @@
 #include <vector>
 
 class vtkDataArray;
+class vtkInformationVector;
 class vtkObject;
 class vtkPoints;
 class vtkPolyData;
@@ -64,6 +65,12 @@ struct InputMesh
  * coordinates, point ids out of range, too many triangles, or none.
  */
 bool ReadGeometry(vtkObject* self, vtkPolyData* input, int threads, InputMesh& mesh);
+
+/**
+ * In RequestUpdateExtent: when the output is one piece of several, ask input 0 for one level
+ * of ghost cells (they tell which points the piece shares with the others).
+ */
+void RequestGhostCells(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
 
 /// The triangles to leave: targetNumber when > 0, or else (1 - reduction) of numTriangles.
 int64_t TargetTriangles(vtkIdType targetNumber, double reduction, vtkIdType numTriangles);
