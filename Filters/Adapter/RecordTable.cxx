@@ -85,30 +85,56 @@ vtkDataArray* Column(vtkTable* table, const char* name, vtkIdType rows)
     : nullptr;
 }
 
+/// The column's values as doubles: read in place for the types the filter writes
+/// (vtkIdType, double), converted for any other (e.g. a table read from another format).
+template <typename Function>
+void ForEachValue(vtkDataArray* column, Function&& f)
+{
+  const vtkIdType n = column->GetNumberOfTuples();
+  if (auto* ids = vtkIdTypeArray::FastDownCast(column))
+  {
+    const vtkIdType* p = ids->GetPointer(0);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      f(i, static_cast<double>(p[i]));
+    }
+  }
+  else if (auto* doubles = vtkDoubleArray::FastDownCast(column))
+  {
+    const double* p = doubles->GetPointer(0);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      f(i, p[i]);
+    }
+  }
+  else
+  {
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      f(i, column->GetComponent(i, 0));
+    }
+  }
+}
+
 /// Integer ids from a column; false if one is not an integer that fits.
 bool ReadIds(vtkDataArray* column, std::vector<int32_t>& ids)
 {
   ids.resize(static_cast<size_t>(column->GetNumberOfTuples()));
-  for (vtkIdType i = 0; i < column->GetNumberOfTuples(); ++i)
-  {
-    const double v = column->GetComponent(i, 0);
-    if (!(v >= -1.0 && v <= 2147483647.0) || v != std::floor(v))
-    {
-      return false;
-    }
-    ids[i] = static_cast<int32_t>(v);
-  }
-  return true;
+  bool valid = true;
+  ForEachValue(column,
+               [&ids, &valid](vtkIdType i, double v)
+               {
+                 valid = valid && v >= -1.0 && v <= 2147483647.0 && v == std::floor(v);
+                 ids[i] = valid ? static_cast<int32_t>(v) : -1;
+               });
+  return valid;
 }
 
 template <typename T>
 void ReadValues(vtkDataArray* column, std::vector<T>& values)
 {
   values.resize(static_cast<size_t>(column->GetNumberOfTuples()));
-  for (vtkIdType i = 0; i < column->GetNumberOfTuples(); ++i)
-  {
-    values[i] = static_cast<T>(column->GetComponent(i, 0));
-  }
+  ForEachValue(column, [&values](vtkIdType i, double v) { values[i] = static_cast<T>(v); });
 }
 
 /// The identity kept in the table's field data; false if it is not there.
