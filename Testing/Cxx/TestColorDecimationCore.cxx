@@ -3,6 +3,7 @@
 #include "ColorDecimationTestUtilities.h"
 
 #include "Decimator.h"
+#include "lod/CollapseRecord.h"
 #include "mesh/HalfEdgeMesh.h"
 #include "mesh/SpatialOrder.h"
 #include "metric/HalfEdgeColor.h"
@@ -1852,6 +1853,54 @@ CD_TEST_CASE(RulesBoundary)
 }
 
 } // namespace
+
+// The record by hand: a mesh of 8 points and 10 triangles; collapses 0 -> 1 (2 triangles), a
+// seam pair 2 -> 3 and 4 -> 5 (2 each, made together), 6 -> 7 (2). Append gives the pair the
+// count after both and the larger error; a level never ends inside the pair; the survivors
+// follow chains of parents; a bad record is found out.
+CD_TEST_CASE(CollapseRecordByHand)
+{
+  CollapseRecord record;
+  record.InputPoints = 8;
+  record.InputTriangles = 10;
+  const double scale = 2.0; // frame units per input unit
+  std::vector<RecordedCollapse> made = { { 0, 1, 2, 0, 0, 0.5, 4.0 },
+                                         { 2, 3, 2, 0, 0, 0.7, 36.0 },
+                                         { 4, 5, 2, 1, 0, 0.7, 16.0 },
+                                         { 1, 7, 2, 0, 0, 0.9, 64.0 } };
+  const int32_t toInput[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
+  record.Append(made, toInput, scale);
+  CD_CHECK((record.Triangles == std::vector<int64_t>{ 8, 4, 4, 2 }));
+  CD_CHECK((record.Error == std::vector<double>{ 1.0, 3.0, 3.0, 4.0 }));
+  std::string why;
+  CD_CHECK_MSG(IsConsistent(record, why), why);
+  // Target 6: the first collapse leaves 8 > 6, the pair 4: both go in, then stop.
+  CD_CHECK(LevelLength(record, 6, 0.0) == 3);
+  CD_CHECK(LevelLength(record, 8, 0.0) == 1);
+  CD_CHECK(LevelLength(record, 10, 0.0) == 0);
+  CD_CHECK(LevelLength(record, 0, 0.0) == 4);
+  // MaximumError 2: the pair's error is 3, so the level stops before it; 3.5: after it.
+  CD_CHECK(LevelLength(record, 0, 2.0) == 1);
+  CD_CHECK(LevelLength(record, 0, 3.5) == 3);
+  std::vector<int32_t> where;
+  ResolveSurvivors(record, 4, where);
+  CD_CHECK((where == std::vector<int32_t>{ 7, 7, 3, 3, 5, 5, 6, 7 }));
+  ResolveSurvivors(record, 1, where);
+  CD_CHECK((where == std::vector<int32_t>{ 1, 1, 2, 3, 4, 5, 6, 7 }));
+  // Bad records: a point removed twice, a collapse into a removed point, three equal counts.
+  CollapseRecord bad = record;
+  bad.Removed[3] = 0;
+  CD_CHECK(!IsConsistent(bad, why) && why.find("earlier") != std::string::npos);
+  bad = record;
+  bad.Survivor[3] = 2;
+  CD_CHECK(!IsConsistent(bad, why) && why.find("earlier") != std::string::npos);
+  bad = record;
+  bad.Triangles[3] = 4;
+  CD_CHECK(!IsConsistent(bad, why) && why.find("decrease") != std::string::npos);
+  bad = record;
+  bad.Survivor[0] = 8;
+  CD_CHECK(!IsConsistent(bad, why) && why.find("out of range") != std::string::npos);
+}
 
 int main(int argc, char* argv[])
 {

@@ -1,5 +1,6 @@
 #include "lod/CollapseRecord.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -30,6 +31,13 @@ void CollapseRecord::Append(const std::vector<RecordedCollapse>& made, const int
     this->Cost[start + i] = c.Cost;
     this->Error[start + i] = std::sqrt(c.SquaredError) / scale;
     this->Triangles[start + i] = left;
+    if (c.SecondOfPair && start + i > 0)
+    {
+      // A pair is one step: both show the count after both, and the larger error.
+      this->Triangles[start + i - 1] = left;
+      const double larger = std::max(this->Error[start + i - 1], this->Error[start + i]);
+      this->Error[start + i - 1] = this->Error[start + i] = larger;
+    }
   }
 }
 
@@ -39,7 +47,9 @@ size_t LevelLength(const CollapseRecord& record, int64_t targetTriangles, double
   size_t i = 0;
   for (; i < record.Size(); ++i)
   {
-    if (left <= targetTriangles || (maximumError > 0 && record.Error[i] > maximumError))
+    const bool second = i > 0 && record.Triangles[i] == record.Triangles[i - 1];
+    if (!second &&
+        (left <= targetTriangles || (maximumError > 0 && record.Error[i] > maximumError)))
     {
       break;
     }
@@ -59,6 +69,7 @@ bool IsConsistent(const CollapseRecord& record, std::string& why)
   }
   std::vector<uint8_t> removed(static_cast<size_t>(record.InputPoints), 0);
   int64_t left = record.InputTriangles;
+  bool paired = false; // the last collapse was the second of a pair
   for (size_t i = 0; i < n; ++i)
   {
     const int32_t v0 = record.Removed[i], v1 = record.Survivor[i];
@@ -74,7 +85,10 @@ bool IsConsistent(const CollapseRecord& record, std::string& why)
       return false;
     }
     removed[v0] = 1;
-    if (record.Triangles[i] >= left || record.Triangles[i] < 0)
+    // Equal counts: the second collapse of a pair (not a third).
+    const bool second = i > 0 && record.Triangles[i] == left && !paired;
+    paired = second;
+    if ((record.Triangles[i] >= left && !second) || record.Triangles[i] < 0)
     {
       why = "its triangle counts do not decrease from the input's " +
         std::to_string(record.InputTriangles) + " (collapse " + std::to_string(i) + ")";

@@ -23,18 +23,24 @@ namespace colordecimation
 {
 
 /// One collapse as a schedule makes it (the run's own vertex ids; its squared error in the
-/// frame's units); Block orders the Batched schedule's parallel collapses.
+/// frame's units); Block orders the Batched schedule's parallel collapses; SecondOfPair marks
+/// the mirror collapse of a seam pair, made together with the collapse before it.
 struct RecordedCollapse
 {
   int32_t V0;
   int32_t V1;
-  int32_t RemovedFaces;
+  int16_t RemovedFaces;
+  int16_t SecondOfPair;
   int32_t Block;
   double Cost;
   double SquaredError;
 };
 
-/// The record of a run, by input ids, in collapse order.
+/**
+ * The record of a run, by input ids, in collapse order. The two collapses of a seam pair
+ * (mesh/Seams.h), made together, follow each other with the same NumberOfTriangles (the count
+ * after both) and the same Error (the larger): a level never ends between them.
+ */
 struct VTKCOLORDECIMATION_EXPORT CollapseRecord
 {
   std::vector<int32_t> Removed;   ///< v0: the vertex collapsed away
@@ -56,15 +62,15 @@ struct VTKCOLORDECIMATION_EXPORT CollapseRecord
  * How many of the record's first collapses make the level that a run to `targetTriangles`
  * (and `maximumError`, when > 0) stops at: up to the first collapse that leaves at most
  * targetTriangles, and before the first whose error exceeds maximumError; all of them if
- * neither stops it first.
+ * neither stops it first. The second collapse of a pair always goes with the first.
  */
 VTKCOLORDECIMATION_EXPORT size_t LevelLength(const CollapseRecord& record, int64_t targetTriangles,
                                              double maximumError);
 
 /**
  * Whether the record is one of a mesh of `points` points: every id in range, no vertex
- * removed twice or collapsed into after its removal, the triangle counts decreasing. On
- * failure, `why` says what is wrong.
+ * removed twice or collapsed into after its removal, the triangle counts decreasing (equal
+ * only for the two collapses of a pair). On failure, `why` says what is wrong.
  */
 VTKCOLORDECIMATION_EXPORT bool IsConsistent(const CollapseRecord& record, std::string& why);
 

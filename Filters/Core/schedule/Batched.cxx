@@ -396,7 +396,7 @@ void BatchedSchedule<Metric>::TryCollapse(int32_t v0, int32_t v1, int32_t pass, 
   ++lane.Collapses;
   if (this->E.GetOptions().RecordCollapses)
   {
-    lane.Record.push_back({ v0, v1, removed, lane.Block, this->Keys[v0], squared });
+    lane.Record.push_back({ v0, v1, int16_t(removed), 0, lane.Block, this->Keys[v0], squared });
   }
   this->E.ForEachAffected(v1, ws.FormerNeighbors, [pass, stamp](int32_t u) { stamp[u] = pass; });
 }

@@ -110,7 +110,7 @@ private:
     ++stats.Collapses;
     if (this->E.GetOptions().RecordCollapses)
     {
-      this->E.Recorded.push_back({ v0, v1, removed, 0, cost, squared });
+      this->E.Recorded.push_back({ v0, v1, int16_t(removed), 0, 0, cost, squared });
     }
     this->E.ForEachAffected(v1, ws.FormerNeighbors, [this](int32_t u) { this->Update(u); });
     return true;
