@@ -77,7 +77,7 @@ PY
 
 # The slider: the level filter updated for each level in one process (first update excluded).
 if [ "${mesh##*.}" = ply ] && [ -d "$build/lib/python3/dist-packages/colordecimation" ]; then
-  PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" python3 - "$mesh" "$levels" <<'PY'
+  PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" /usr/bin/python3 - "$mesh" "$levels" <<'PY'
 import statistics, sys, time
 from vtkmodules.vtkIOPLY import vtkPLYReader
 from colordecimation import vtkColorHalfEdgeDecimation, vtkColorHalfEdgeLevelOfDetail

@@ -207,12 +207,11 @@ void WriteRecordTable(const CollapseRecord& record, const MeshIdentity& mesh, co
                       vtkTable* table)
 {
   table->Initialize();
-  std::vector<vtkIdType> triangles(record.Triangles.begin(), record.Triangles.end());
   AddColumn<vtkIdTypeArray>(table, RemovedColumn, record.Removed);
   AddColumn<vtkIdTypeArray>(table, SurvivorColumn, record.Survivor);
   AddColumn<vtkDoubleArray>(table, CostColumn, record.Cost);
   AddColumn<vtkDoubleArray>(table, ErrorColumn, record.Error);
-  AddColumn<vtkIdTypeArray>(table, TrianglesColumn, triangles);
+  AddColumn<vtkIdTypeArray>(table, TrianglesColumn, record.Triangles);
   vtkFieldData* field = table->GetFieldData();
   AddField(field, PointsField, mesh.Points);
   AddField(field, TrianglesField, mesh.Triangles);

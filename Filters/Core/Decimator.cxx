@@ -77,6 +77,12 @@ DecimatorStatistics Decimator::RunWith(const DecimatorInput& input, int64_t targ
   stats.InputTriangles = input.NumberOfTriangles;
   stats.TargetTriangles = std::max<int64_t>(targetTriangles, 0);
   engine->Start(input, stats);
+  if (this->Options.RecordCollapses)
+  {
+    // About one collapse per two triangles removed: room made once, not by doubling.
+    engine->Recorded.reserve(
+      size_t(std::max<int64_t>(input.NumberOfTriangles - stats.TargetTriangles, 0) / 2 + 64));
+  }
   if (this->Options.Schedule == CollapseSchedule::Batched)
   {
     CollapseInBatches(*engine, stats, progress);
