@@ -278,6 +278,7 @@ colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, 
   options.GeometryWeight = self->GetGeometryWeight();
   options.MaximumError = self->GetMaximumError();
   options.PruneComponents = self->GetPruneComponents() != 0;
+  options.PreserveSeams = self->GetPreserveSeams() != 0;
   return options;
 }
 
@@ -320,6 +321,7 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   , ActualError(0.0)
   , PruneComponents(false)
   , ConsistentOrientation(false)
+  , PreserveSeams(true)
   , NumberOfPrunedComponents(0)
   , PreserveBoundary(false)
   , MaximumNormalAngle(90.0)
@@ -533,6 +535,7 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumError: " << this->MaximumError << "\n";
   os << indent << "PruneComponents: " << (this->PruneComponents ? "On" : "Off") << "\n";
   os << indent << "ConsistentOrientation: " << (this->ConsistentOrientation ? "On" : "Off") << "\n";
+  os << indent << "PreserveSeams: " << (this->PreserveSeams ? "On" : "Off") << "\n";
   os << indent
      << "LockArrayName: " << (this->GetLockArrayName() ? this->GetLockArrayName() : "(none)")
      << "\n";
