@@ -293,6 +293,12 @@ void ReportBuild(vtkColorHalfEdgeDecimation* self,
       self, << stats.ReorientedTriangles
             << " triangles were decimated reversed, to wind their piece one way.");
   }
+  if (stats.SeamVertices > 0)
+  {
+    vtkDebugWithObjectMacro(self, << stats.SeamVertices << " points lie on attribute seams ("
+                                  << stats.SeamLockedVertices
+                                  << " of them, where more than two sides meet, kept).");
+  }
   if (build.NonManifoldEdges > 0 || build.NonManifoldVertices > 0)
   {
     vtkWarningWithObjectMacro(self, << "The input has " << build.NonManifoldEdges

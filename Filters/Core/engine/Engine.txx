@@ -150,14 +150,16 @@ Choice Engine<Metric>::CheapestLegal(int32_t v0, Workspace& ws) const
   for (int j : ws.Order)
   {
     double p[3];
-    const bool legal = this->TheMetric.RingPlacement(v0, j, ws.Scratch, p)
+    bool legal = this->TheMetric.RingPlacement(v0, j, ws.Scratch, p)
       ? ws.Rules.IsLegal(this->Mesh, this->Positions(), v0, ring.Vertex[j], HotStride, p)
       : ws.Rules.IsLegal(this->Mesh, this->Positions(), v0, ring.Vertex[j], HotStride);
-    bool mirrorMoves = false;
-    Placement mirrorPlace;
-    if (legal &&
-        (!this->IsTwinned(v0) ||
-         this->IsMirrorLegal(v0, ring.Vertex[j], mirrorMoves, mirrorPlace, ws)))
+    if (legal && this->IsTwinned(v0))
+    {
+      bool mirrorMoves = false; // a seam pair: its mirror must be legal too (section 15)
+      Placement mirrorPlace;
+      legal = this->IsMirrorLegal(v0, ring.Vertex[j], mirrorMoves, mirrorPlace, ws);
+    }
+    if (legal)
     {
       choice.Target = ring.Vertex[j];
       choice.Cost = ws.Costs[j];
