@@ -590,7 +590,23 @@ CD_TEST_CASE(SeamSphere)
 {
   // A UV sphere whose points along one meridian are duplicated with other texture coordinates
   // and colours (48 x 48: 4,512 triangles, 47 twinned pairs, the poles shared).
-  CheckSeams(meshes::SeamSphere(48), "seam sphere");
+  auto sphere = meshes::SeamSphere(48);
+  CheckSeams(sphere, "seam sphere");
+  // Under MaximumError a pair is made only when both of its collapses keep within it.
+  for (const int schedule : Schedules)
+  {
+    const RunResult bounded = Decimate(sphere, 0.97,
+                                       [schedule](vtkColorHalfEdgeDecimation* f)
+                                       {
+                                         f->SetCollapseSchedule(schedule);
+                                         f->SetMaximumError(0.01);
+                                       });
+    std::cout << "seam sphere, MaximumError 0.01: reduction " << bounded.ActualReduction
+              << ", ActualError " << bounded.Filter->GetActualError() << "\n";
+    CD_CHECK(WeldedOpenEdges(bounded.Output) == 0);
+    CD_CHECK(bounded.Filter->GetActualError() <= 0.01);
+    CD_CHECK(bounded.ActualReduction > 0.5 && bounded.ActualReduction < 0.97);
+  }
 }
 
 CD_TEST_CASE(SeamCube)
