@@ -222,6 +222,7 @@ colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, 
   options.GeometryWeight = self->GetGeometryWeight();
   options.MaximumError = self->GetMaximumError();
   options.PruneComponents = self->GetPruneComponents() != 0;
+  options.PreserveSeams = self->GetPreserveSeams() != 0;
   options.RecordCollapses = self->GetGenerateCollapseRecord() && !options.OptimalPlacement;
   return options;
 }
@@ -256,6 +257,12 @@ void ReportBuild(vtkColorHalfEdgeDecimation* self,
       self, << stats.ReorientedTriangles
             << " triangles were decimated reversed, to wind their piece one way.");
   }
+  if (stats.SeamVertices > 0)
+  {
+    vtkDebugWithObjectMacro(self, << stats.SeamVertices << " points lie on attribute seams ("
+                                  << stats.SeamLockedVertices
+                                  << " of them, where more than two sides meet, kept).");
+  }
   if (build.NonManifoldEdges > 0 || build.NonManifoldVertices > 0)
   {
     vtkWarningWithObjectMacro(self, << "The input has " << build.NonManifoldEdges
@@ -285,6 +292,7 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   , GenerateCollapseRecord(false)
   , PruneComponents(false)
   , ConsistentOrientation(false)
+  , PreserveSeams(true)
   , NumberOfPrunedComponents(0)
   , PreserveBoundary(false)
   , MaximumNormalAngle(90.0)
@@ -521,6 +529,7 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "PruneComponents: " << (this->PruneComponents ? "On" : "Off") << "\n";
   os << indent << "ConsistentOrientation: " << (this->ConsistentOrientation ? "On" : "Off") << "\n";
+  os << indent << "PreserveSeams: " << (this->PreserveSeams ? "On" : "Off") << "\n";
   os << indent
      << "LockArrayName: " << (this->GetLockArrayName() ? this->GetLockArrayName() : "(none)")
      << "\n";

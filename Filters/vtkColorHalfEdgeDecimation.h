@@ -52,7 +52,10 @@
  * keep the Euler characteristic of closed manifold input. Triangles wound both ways are
  * decimated as their piece wound one way (see ConsistentOrientation). Vertices on non-manifold
  * edges, bow-tie vertices and the vertices of non-orientable places are kept, together with
- * their triangles.
+ * their triangles. Attribute seams (open boundaries whose points have, bit for bit, the
+ * positions of another boundary's, each side with its own point data, as OBJ and glTF
+ * exporters write texture seams) are decimated closed: both sides collapse together and keep
+ * their own point data (see PreserveSeams).
  *
  * Distributed data: when the input is one piece of several (UPDATE_NUMBER_OF_PIECES > 1, as
  * in ParaView run with MPI), the filter asks upstream for one level of ghost cells. Ghost
@@ -133,8 +136,8 @@ public:
    * GeometryWeight 1, RGB colours, MaximumNormalAngle 90, PreserveBoundary off (and
    * ColorWeight 1, OptimalPlacement off, which the paper's metric does not read).
    * TargetReduction, TargetNumberOfTriangles, MaximumError, PruneComponents,
-   * ConsistentOrientation, NumberOfThreads, the lock array and the original point ids are left
-   * as they are.
+   * ConsistentOrientation, PreserveSeams, NumberOfThreads, the lock array and the original point
+   * ids are left as they are.
    */
   void SetPaperDefaults();
 
@@ -317,6 +320,23 @@ public:
 
   ///@{
   /**
+   * Attribute seams: points at exactly (bit for bit) the same position as another boundary
+   * point, each side with its own colour, texture coordinates or normal (a UV sphere's
+   * meridian, a cube whose faces each have their own points and colour). When on (default),
+   * the two sides of a seam collapse together, as one collapse on each side along the seam, so
+   * that the output, welded by position, has no open edge the welded input did not have, and
+   * each side keeps its own point data bit for bit; the cost of such a pair counts both sides.
+   * Points where more than two sides meet (a cube's corners) are kept. When off, each side is
+   * an open boundary of its own (decimation then opens cracks along seams). See
+   * docs/ALGORITHM.md, section 15.
+   */
+  vtkSetMacro(PreserveSeams, vtkTypeBool);
+  vtkGetMacro(PreserveSeams, vtkTypeBool);
+  vtkBooleanMacro(PreserveSeams, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * When on, and collapses alone leave more triangles than the target, whole connected pieces
    * (triangles connected through shared points) are removed, smallest area first (ties: fewer
    * triangles first), until the target is met: the small fragments of a scan, each of which
@@ -471,6 +491,7 @@ protected:
   vtkTypeBool GenerateCollapseRecord;
   vtkTypeBool PruneComponents;
   vtkTypeBool ConsistentOrientation;
+  vtkTypeBool PreserveSeams;
   vtkIdType NumberOfPrunedComponents;
   vtkTypeBool PreserveBoundary;
   double MaximumNormalAngle;

@@ -298,6 +298,10 @@ void AddFilterOptions(CLI::App& app, Options& options)
                 "wind every output triangle as its piece is wound (input wound both\n"
                 "ways is always decimated as if wound one way; by default each\n"
                 "output triangle keeps its input triangle's winding)");
+  AddFilterFlag(app, options, "--no-seams", &F::SetPreserveSeams, 0,
+                "treat each side of an attribute seam (boundary points at identical\n"
+                "positions with their own data) as an open boundary of its own; by\n"
+                "default both sides collapse together and the seam stays closed");
   AddFilterFlag(app, options, "--no-original-ids", &F::SetGenerateOriginalPointIds, 0,
                 "do not add the vtkOriginalPointIds point array");
   AddValue(
@@ -806,6 +810,7 @@ Json Settings(vtkColorHalfEdgeDecimation* filter)
   settings["max_error"] = filter->GetMaximumError();
   settings["prune_components"] = filter->GetPruneComponents() != 0;
   settings["consistent_orientation"] = filter->GetConsistentOrientation() != 0;
+  settings["preserve_seams"] = filter->GetPreserveSeams() != 0;
   settings["lock_array"] = filter->GetLockArrayName() ? filter->GetLockArrayName() : "";
   return settings;
 }

@@ -1,6 +1,6 @@
 /**
  * @file RecordTable.h
- * @brief The collapse record as a vtkTable (docs/ALGORITHM.md, section 15): one row per
+ * @brief The collapse record as a vtkTable (docs/ALGORITHM.md, section 16): one row per
  * collapse, in the order made, and the mesh it belongs to in the table's field data, so that
  * it can be saved (e.g. vtkXMLTableWriter, .vtt), reloaded and checked against a mesh.
  *

@@ -26,17 +26,19 @@ const Metric* MetricOf(const EngineBase* engine)
  * collected by the threads and then copied) 8, the list of affected vertices 4, the list of
  * live vertices and its shrunk copy 8, and the block flags 1; choice 4 + 1; moved flags 1 for
  * a metric that moves vertices; the planes of MaximumError; the flags of reversed triangles, 1
- * per triangle, when the input was oriented; the maps back from the spatial order, kept to the
- * end.
+ * per triangle, when the input was oriented; the seams' roles and twins, 5 per vertex, when the
+ * input has seams; the maps back from the spatial order, kept to the end.
  */
 size_t StateBytes(const DecimatorOptions& options, const DecimatorInput& input, size_t metricBytes,
-                  bool moves, bool renumbered, bool reoriented)
+                  bool moves, bool renumbered, bool reoriented, bool seams)
 {
   const size_t n = size_t(input.NumberOfPoints), triangles = size_t(input.NumberOfTriangles);
   const size_t ordering = options.Schedule == CollapseSchedule::Batched ? 33 : 36;
   const size_t bound = options.MaximumError > 0 ? ErrorBound::BytesPerVertex : 0;
   size_t bytes = (24 + 12 + (reoriented ? 1 : 0)) * triangles +
-    n * (5 + metricBytes + sizeof(HotVertex) + ordering + 4 + 1 + (moves ? 1 : 0) + bound);
+    n *
+      (5 + metricBytes + sizeof(HotVertex) + ordering + 4 + 1 + (moves ? 1 : 0) + bound +
+       (seams ? 5 : 0));
   if (renumbered)
   {
     bytes += 4 * triangles + 4 * n;
@@ -103,9 +105,9 @@ DecimatorStatistics Decimator::RunWith(const DecimatorInput& input, int64_t targ
   }
   stats.OutputTriangles = engine->GetMesh().GetNumberOfLiveFaces();
   stats.MetricBytesPerVertex = Metric::BytesPerVertex();
-  stats.StateBytes =
-    StateBytes(this->Options, input, Metric::BytesPerVertex(), engine->GetMetric().MovesVertices(),
-               renumbered, stats.ReorientedTriangles > 0);
+  stats.StateBytes = StateBytes(
+    this->Options, input, Metric::BytesPerVertex(), engine->GetMetric().MovesVertices(), renumbered,
+    stats.ReorientedTriangles > 0, stats.SeamVertices > stats.SeamLockedVertices);
   if (this->Options.RecordCollapses)
   {
     // The record (32 B a collapse, and as much again while the schedule collects it) and the

@@ -4,9 +4,9 @@
  * chosen schedule until the triangle target is met, and keeps the result for the caller.
  *
  * The method is specified in docs/ALGORITHM.md. The pieces, in the order a run uses them:
- * - engine/Engine.h: set-up (mesh/SpatialOrder.h, mesh/HalfEdgeMesh.h, engine/Frame.h),
- *   costing, the rules (rules/CollapseRules.h), the collapse and the merge, the affected
- *   vertices, the mapping back to the input's ids;
+ * - engine/Engine.h: set-up (mesh/SpatialOrder.h, mesh/HalfEdgeMesh.h, mesh/Seams.h,
+ *   engine/Frame.h), costing, the rules (rules/CollapseRules.h), the collapse and the merge,
+ *   the affected vertices, the mapping back to the input's ids;
  * - the metric, a policy of the engine: metric/HalfEdgeColor.h (the paper's cost, and the
  *   quadric alone) or metric/ColorQuadricMetric.h (Garland and Heckbert's colour quadric);
  * - the schedule, a loop over the engine: schedule/Greedy.h (a min-heap, the paper's order) or

@@ -1,7 +1,8 @@
 // Tests of the controls of vtkColorHalfEdgeDecimation for real-world meshes:
 // TargetNumberOfTriangles, MaximumError with ActualError (on hand-built meshes whose error is
 // computed by hand), the lock array (SetInputArrayToProcess(1, ...)) with its bad inputs,
-// PruneComponents, and input wound both ways (ConsistentOrientation).
+// PruneComponents, input wound both ways (ConsistentOrientation), and attribute seams
+// (PreserveSeams).
 #include "ColorDecimationTestUtilities.h"
 
 #include "ColorDecimationMeshes.h"
@@ -17,7 +18,9 @@
 #include "vtkPointData.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <iostream>
 #include <map>
 #include <random>
@@ -112,6 +115,71 @@ std::map<vtkIdType, int> TrianglesPerPoint(const std::vector<Tri>& triangles)
     }
   }
   return count;
+}
+
+/// The edges used by one triangle once the points are welded by position (bit for bit).
+long long WeldedOpenEdges(vtkPolyData* mesh)
+{
+  std::map<std::array<uint64_t, 3>, vtkIdType> welded;
+  std::vector<vtkIdType> weld(size_t(mesh->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    std::array<uint64_t, 3> key;
+    std::memcpy(key.data(), p, sizeof(p));
+    weld[size_t(i)] = welded.emplace(key, vtkIdType(welded.size())).first->second;
+  }
+  std::vector<Tri> triangles = GetTriangles(mesh);
+  for (Tri& t : triangles)
+  {
+    for (vtkIdType& v : t)
+    {
+      v = weld[size_t(v)];
+    }
+  }
+  long long open = 0;
+  for (const auto& [edge, uses] : EdgeUses(triangles))
+  {
+    open += uses == 1 ? 1 : 0;
+  }
+  return open;
+}
+
+/**
+ * A mesh with attribute seams (closed once welded), decimated at 0.9 and 0.97 with both
+ * schedules: no open edge once welded, every point's data its input point's, the target
+ * reached; with PreserveSeams off the seams open (so that the checks can fail).
+ */
+void CheckSeams(vtkPolyData* mesh, const std::string& name)
+{
+  CD_CHECK(WeldedOpenEdges(mesh) == 0);
+  CD_CHECK(!BoundaryEdges(GetTriangles(mesh)).empty()); // unwelded, each side is open
+  for (const int schedule : Schedules)
+  {
+    for (const double reduction : { 0.9, 0.97 })
+    {
+      auto configure = [schedule](bool seams)
+      {
+        return [schedule, seams](vtkColorHalfEdgeDecimation* f)
+        {
+          f->SetCollapseSchedule(schedule);
+          f->SetPreserveSeams(seams);
+        };
+      };
+      const RunResult run = Decimate(mesh, reduction, configure(true));
+      const RunResult off = Decimate(mesh, reduction, configure(false));
+      const long long open = WeldedOpenEdges(run.Output), cracks = WeldedOpenEdges(off.Output);
+      std::cout << name << " " << (schedule == Schedules[0] ? "greedy" : "batched") << " "
+                << reduction << ": reduction " << run.ActualReduction << ", " << open
+                << " open edges welded (" << cracks << " without PreserveSeams)\n";
+      CD_CHECK(run.Errors == 0 && run.Warnings == 0);
+      CD_CHECK_MSG(open == 0, open << " open edges");
+      CD_CHECK(CheckPointDataCopied(mesh, run.Output) == 0);
+      CD_CHECK(run.ActualReduction >= reduction - 0.002);
+      CD_CHECK(cracks > 0);
+    }
+  }
 }
 } // namespace
 
@@ -516,6 +584,106 @@ CD_TEST_CASE(LargeMeshControls)
   // The largest tetrahedra are left: the points of the last of them are in the output.
   const std::set<vtkIdType> ids = OriginalIds(pruned.Output);
   CD_CHECK(ids.count(mesh->GetNumberOfPoints() - 1) == 1);
+}
+
+CD_TEST_CASE(SeamSphere)
+{
+  // A UV sphere whose points along one meridian are duplicated with other texture coordinates
+  // and colours (48 x 48: 4,512 triangles, 47 twinned pairs, the poles shared).
+  auto sphere = meshes::SeamSphere(48);
+  CheckSeams(sphere, "seam sphere");
+  // Under MaximumError a pair is made only when both of its collapses keep within it.
+  for (const int schedule : Schedules)
+  {
+    const RunResult bounded = Decimate(sphere, 0.97,
+                                       [schedule](vtkColorHalfEdgeDecimation* f)
+                                       {
+                                         f->SetCollapseSchedule(schedule);
+                                         f->SetMaximumError(0.01);
+                                       });
+    std::cout << "seam sphere, MaximumError 0.01: reduction " << bounded.ActualReduction
+              << ", ActualError " << bounded.Filter->GetActualError() << "\n";
+    CD_CHECK(WeldedOpenEdges(bounded.Output) == 0);
+    CD_CHECK(bounded.Filter->GetActualError() <= 0.01);
+    CD_CHECK(bounded.ActualReduction > 0.5 && bounded.ActualReduction < 0.97);
+  }
+}
+
+CD_TEST_CASE(SeamCube)
+{
+  // A cube whose six faces each have their own points and colour (20 x 20 quads a face, 4,800
+  // triangles; 12 x 19 twinned pairs, the 8 corners of three faces kept).
+  auto cube = meshes::ColorCube(20);
+  CheckSeams(cube, "colour cube");
+  // The corners are kept: each of the 24 corner points is in the output.
+  const RunResult run = Decimate(cube, 0.97);
+  long long corners = 0;
+  for (vtkIdType i = 0; i < run.Output->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    run.Output->GetPoint(i, p);
+    corners += std::abs(p[0]) == 1 && std::abs(p[1]) == 1 && std::abs(p[2]) == 1 ? 1 : 0;
+  }
+  CD_CHECK_MSG(corners == 24, corners << " corner points");
+}
+
+CD_TEST_CASE(SeamByHand)
+{
+  // An octahedron cut along its equator: the top pyramid (apex 0, equator 1-4) and the bottom
+  // one (apex 5, equator 6-9 at the same positions), red and blue. Each side can only shrink to
+  // one triangle (a triangle with two boundary edges cannot collapse): with the seam, both
+  // apexes go, then one pair of equator points (a collapse on each side along the seam): 2
+  // triangles on the same three positions, closed once welded, 6 points, 3 of each side.
+  std::vector<double> xyz = { 0, 0, 1, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0, 0, 0, -1 };
+  xyz.insert(xyz.end(), xyz.begin() + 3, xyz.begin() + 15);
+  auto mesh = meshes::FromTriangles(xyz, { 0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 1, //
+                                           5, 7, 6, 5, 8, 7, 5, 9, 8, 5, 6, 9 });
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetNumberOfComponents(3);
+  colors->SetName("RGB");
+  for (vtkIdType i = 0; i < 10; ++i)
+  {
+    const bool top = i < 5;
+    colors->InsertNextTuple3(top ? 255 : 0, 0, top ? 0 : 255);
+  }
+  mesh->GetPointData()->SetScalars(colors);
+  CD_CHECK(WeldedOpenEdges(mesh) == 0 && BoundaryEdges(GetTriangles(mesh)).size() == 8);
+  for (const int schedule : Schedules)
+  {
+    const RunResult run = Decimate(
+      mesh, 1.0, [schedule](vtkColorHalfEdgeDecimation* f) { f->SetCollapseSchedule(schedule); });
+    const std::set<vtkIdType> ids = OriginalIds(run.Output);
+    std::set<std::array<double, 3>> top, bottom;
+    for (vtkIdType i = 0; i < run.Output->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      run.Output->GetPoint(i, p);
+      const bool first = run.Output->GetPointData()->GetScalars()->GetComponent(i, 0) == 255;
+      (first ? top : bottom).insert({ p[0], p[1], p[2] });
+    }
+    CD_CHECK(run.Output->GetNumberOfPolys() == 2 && run.ActualReduction == 0.75);
+    CD_CHECK(ids.size() == 6 && ids.count(0) == 0 && ids.count(5) == 0);
+    CD_CHECK(top.size() == 3 && top == bottom);
+    CD_CHECK(WeldedOpenEdges(run.Output) == 0);
+    CD_CHECK(CheckPointDataCopied(mesh, run.Output) == 0);
+  }
+}
+
+CD_TEST_CASE(LargeSeams)
+{
+  // From 65,536 points on, the seams are found under the spatial order (a 260 x 260 seam
+  // sphere: 67,341 points).
+  auto sphere = meshes::SeamSphere(260);
+  CD_CHECK(sphere->GetNumberOfPoints() >= 65536);
+  for (const int schedule : Schedules)
+  {
+    const RunResult run =
+      Decimate(sphere, 0.97,
+               [schedule](vtkColorHalfEdgeDecimation* f) { f->SetCollapseSchedule(schedule); });
+    CD_CHECK(WeldedOpenEdges(run.Output) == 0);
+    CD_CHECK(CheckPointDataCopied(sphere, run.Output) == 0);
+    CD_CHECK(run.ActualReduction >= 0.97 - 0.002);
+  }
 }
 
 int main(int argc, char* argv[])

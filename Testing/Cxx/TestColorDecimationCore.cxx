@@ -5,6 +5,7 @@
 #include "Decimator.h"
 #include "lod/CollapseRecord.h"
 #include "mesh/HalfEdgeMesh.h"
+#include "mesh/Seams.h"
 #include "mesh/SpatialOrder.h"
 #include "metric/HalfEdgeColor.h"
 #include "metric/Quadric.h"
@@ -1855,7 +1856,7 @@ CD_TEST_CASE(RulesBoundary)
 } // namespace
 
 // The record by hand: a mesh of 8 points and 10 triangles; collapses 0 -> 1 (2 triangles), a
-// seam pair 2 -> 3 and 4 -> 5 (2 each, made together), 6 -> 7 (2). Append gives the pair the
+// seam pair 2 -> 3 and 4 -> 5 (2 each, made together), 1 -> 7 (2). Append gives the pair the
 // count after both and the larger error; a level never ends inside the pair; the survivors
 // follow chains of parents; a bad record is found out.
 CD_TEST_CASE(CollapseRecordByHand)
@@ -1900,6 +1901,52 @@ CD_TEST_CASE(CollapseRecordByHand)
   bad = record;
   bad.Survivor[0] = 8;
   CD_CHECK(!IsConsistent(bad, why) && why.find("out of range") != std::string::npos);
+}
+
+CD_TEST_CASE(SeamDetection)
+{
+  // The roles by hand (mesh/Seams.h): a seam sphere of resolution r has r - 1 twinned pairs on
+  // its meridian and two shared poles; a cube of n x n quads a face has 12 (n - 1) pairs and 8
+  // corners of three faces (24 locked points); a sphere without duplicates has none.
+  SeamMap seams;
+  const auto detect = [&seams](vtkPolyData* polydata, bool lockAll, HalfEdgeMesh& mesh)
+  {
+    const PlainMesh m = ToPlain(polydata);
+    mesh.Build(m.NumberOfPoints(), m.Triangles.data(), m.NumberOfTriangles());
+    return seams.Detect(mesh, m.Points.data(), nullptr, lockAll, 2);
+  };
+  HalfEdgeMesh mesh;
+  SeamReport found = detect(meshes::SeamSphere(8), false, mesh);
+  CD_CHECK(found.TwinnedVertices == 14 && found.SharedVertices == 2 && found.LockedVertices == 0);
+  // Point 1 is the first column of the first row, point 9 the last (its twin); 0 the pole.
+  CD_CHECK(seams.GetTwin(1) == 9 && seams.GetTwin(9) == 1 && seams.GetTwin(2) == -1);
+  CD_CHECK(seams.GetRole(0) == SeamMap::Shared && seams.MirrorTarget(0) == 0);
+  CD_CHECK(seams.MirrorTarget(1) == 9 && seams.MirrorTarget(2) == -1);
+  // The pole may not collapse along the seam; point 1 only along it (mirror edge 9-0 or 9-18).
+  CD_CHECK(!seams.Admits(mesh, 0, 1) && seams.Admits(mesh, 1, 0) && seams.Admits(mesh, 1, 10));
+  CD_CHECK(!seams.Admits(mesh, 1, 2));
+  found = detect(meshes::SeamSphere(8), true, mesh); // lockAll: every seam point locked
+  CD_CHECK(seams.Empty() && found.LockedVertices == 16 && mesh.IsLocked(0) && mesh.IsLocked(9));
+  found = detect(meshes::ColorCube(3), false, mesh);
+  CD_CHECK(found.TwinnedVertices == 48 && found.SharedVertices == 0 && found.LockedVertices == 24);
+  found = detect(meshes::UVSphere(8, meshes::Pattern::Constant), false, mesh);
+  CD_CHECK(seams.Empty() &&
+           found.TwinnedVertices + found.SharedVertices + found.LockedVertices == 0);
+
+  // Two pyramids on one square (the octahedron cut along its equator): 1-4 and 6-9 are pairs.
+  // The pair 1 -> 2, 6 -> 7 is apart (the closed rings {1, 0, 2, 4} and {6, 5, 7, 9}); 1 -> 2
+  // and 3 -> 4 are not (3 is a neighbour of 2 and 4, which are 1's).
+  const std::vector<double> points = { 0, 0, 1,  1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0,
+                                       0, 0, -1, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0 };
+  const int32_t triangles[] = { 0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 1,
+                                5, 7, 6, 5, 8, 7, 5, 9, 8, 5, 6, 9 };
+  mesh.Build(10, triangles, 8);
+  found = seams.Detect(mesh, points.data(), nullptr, false, 1);
+  CD_CHECK(found.TwinnedVertices == 8 && found.SharedVertices == 0);
+  CD_CHECK(seams.GetTwin(1) == 6 && seams.MirrorTarget(2) == 7 && seams.Admits(mesh, 1, 2));
+  std::vector<int32_t> scratch;
+  CD_CHECK(SeamMap::AreApart(mesh, 1, 2, 6, 7, scratch));
+  CD_CHECK(!SeamMap::AreApart(mesh, 1, 2, 3, 4, scratch));
 }
 
 int main(int argc, char* argv[])

@@ -1,6 +1,7 @@
 #include "ColorDecimationMeshes.h"
 
 #include "vtkCellArray.h"
+#include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -8,6 +9,7 @@
 #include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -265,6 +267,112 @@ vtkSmartPointer<vtkPolyData> Grid(int nx, int ny, Pattern pattern)
 vtkSmartPointer<vtkPolyData> FlatGrid(int nx, int ny, Pattern pattern)
 {
   return MakeGrid(nx, ny, false, pattern);
+}
+
+namespace
+{
+/// Set RGB (3 bytes per point, active scalars) and TCoords (2 floats per point).
+void SetSeamArrays(vtkPolyData* mesh, const std::vector<unsigned char>& rgb,
+                   const std::vector<float>& uv)
+{
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("RGB");
+  colors->SetNumberOfComponents(3);
+  colors->SetNumberOfTuples(static_cast<vtkIdType>(rgb.size() / 3));
+  std::copy(rgb.begin(), rgb.end(), colors->GetPointer(0));
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetName("TCoords");
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetNumberOfTuples(static_cast<vtkIdType>(uv.size() / 2));
+  std::copy(uv.begin(), uv.end(), tcoords->GetPointer(0));
+  mesh->GetPointData()->SetScalars(colors);
+  mesh->GetPointData()->SetTCoords(tcoords);
+}
+} // namespace
+
+vtkSmartPointer<vtkPolyData> SeamSphere(int r)
+{
+  std::vector<double> xyz = { 0, 0, 1 };
+  std::vector<unsigned char> rgb = { 255, 255, 255 };
+  std::vector<float> uv = { 0.5f, 1.0f };
+  for (int i = 1; i < r; ++i)
+  {
+    const double theta = Pi * i / r;
+    for (int j = 0; j <= r; ++j)
+    {
+      const double phi = 2.0 * Pi * (j % r) / r; // the last column: the first's positions
+      xyz.insert(
+        xyz.end(),
+        { std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta) });
+      const double u = double(j) / r, v = 1.0 - double(i) / r;
+      rgb.insert(rgb.end(),
+                 { static_cast<unsigned char>(255 * u), static_cast<unsigned char>(255 * v),
+                   static_cast<unsigned char>((j / 4) % 2 ? 255 * (1 - u) : 40) });
+      uv.insert(uv.end(), { static_cast<float>(u), static_cast<float>(v) });
+    }
+  }
+  xyz.insert(xyz.end(), { 0, 0, -1 });
+  rgb.insert(rgb.end(), { 0, 0, 0 });
+  uv.insert(uv.end(), { 0.5f, 0.0f });
+  const vtkIdType south = static_cast<vtkIdType>(xyz.size() / 3) - 1;
+  const auto at = [r](int i, int j) { return vtkIdType(1 + (i - 1) * (r + 1) + j); };
+  std::vector<vtkIdType> tris;
+  for (int j = 0; j < r; ++j)
+  {
+    tris.insert(tris.end(), { 0, at(1, j), at(1, j + 1), south, at(r - 1, j + 1), at(r - 1, j) });
+    for (int i = 1; i < r - 1; ++i)
+    {
+      tris.insert(
+        tris.end(),
+        { at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1) });
+    }
+  }
+  auto mesh = FromTriangles(xyz, tris);
+  SetSeamArrays(mesh, rgb, uv);
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> ColorCube(int n)
+{
+  static const unsigned char palette[6][3] = {
+    { 230, 40, 40 },  { 40, 200, 40 },  { 40, 40, 230 },
+    { 230, 230, 40 }, { 40, 230, 230 }, { 230, 40, 230 }
+  };
+  std::vector<double> xyz;
+  std::vector<unsigned char> rgb;
+  std::vector<float> uv;
+  std::vector<vtkIdType> tris;
+  for (int face = 0; face < 6; ++face)
+  {
+    // Face (axis, sign), spanned by t1 x t2 = the outward normal.
+    const int axis = face / 2, sign = face % 2 ? -1 : 1;
+    const int t1 = (axis + (sign > 0 ? 1 : 2)) % 3, t2 = (axis + (sign > 0 ? 2 : 1)) % 3;
+    const auto base = static_cast<vtkIdType>(xyz.size() / 3);
+    for (int i = 0; i <= n; ++i)
+    {
+      for (int j = 0; j <= n; ++j)
+      {
+        double p[3];
+        p[axis] = sign;
+        p[t1] = -1.0 + 2.0 * i / n; // the same expression on every face: bit-identical edges
+        p[t2] = -1.0 + 2.0 * j / n;
+        xyz.insert(xyz.end(), p, p + 3);
+        rgb.insert(rgb.end(), palette[face], palette[face] + 3);
+        uv.insert(uv.end(), { float(i) / n, float(j) / n });
+      }
+    }
+    for (int i = 0; i < n; ++i)
+    {
+      for (int j = 0; j < n; ++j)
+      {
+        const vtkIdType a = base + i * (n + 1) + j, b = a + n + 1;
+        tris.insert(tris.end(), { a, b, b + 1, a, b + 1, a + 1 });
+      }
+    }
+  }
+  auto mesh = FromTriangles(xyz, tris);
+  SetSeamArrays(mesh, rgb, uv);
+  return mesh;
 }
 
 } // namespace meshes

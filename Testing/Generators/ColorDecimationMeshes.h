@@ -61,6 +61,23 @@ vtkSmartPointer<vtkPolyData> FlatGrid(int nx, int ny, Pattern pattern);
 vtkSmartPointer<vtkPolyData> FromTriangles(const std::vector<double>& xyz,
                                            const std::vector<vtkIdType>& triangles);
 
+/**
+ * A latitude-longitude sphere of `resolution` rows and columns (2 r (r - 1) triangles) whose
+ * points along one meridian are duplicated, as OBJ and glTF exporters write a texture seam:
+ * the first and the last column of points have bit-identical positions but their own
+ * texture coordinates "TCoords" (u = 0 and u = 1) and colours (RGB, a function of u and v);
+ * the poles are shared. Closed once welded by position; 2 (r - 1) twinned seam points.
+ */
+vtkSmartPointer<vtkPolyData> SeamSphere(int resolution);
+
+/**
+ * The cube [-1,1]^3, each face an n x n grid of quads (12 n^2 triangles) with its own points,
+ * its own colour (RGB) and texture coordinates, as CAD exporters write hard colour seams:
+ * points on the cube's edges are bit-identical to the neighbouring face's. Closed once
+ * welded by position; 24 (n - 1) twinned seam points, 24 corner points of three faces.
+ */
+vtkSmartPointer<vtkPolyData> ColorCube(int n);
+
 /// A UV sphere with about `triangles` triangles (for benchmarks at a given size).
 vtkSmartPointer<vtkPolyData> UVSphereWithTriangles(long long triangles, Pattern pattern);
 

@@ -112,9 +112,27 @@ void EngineBase::BuildMesh(const DecimatorInput& input, DecimatorStatistics& sta
     }
   }
   this->Order.NewVertex = std::vector<int32_t>();
+  this->FindSeamsAndLocks(input, stats);
+}
+
+void EngineBase::FindSeamsAndLocks(const DecimatorInput& input, DecimatorStatistics& stats)
+{
+  // Seams first, so that a fixed point still has its twin (whose pair it then refuses).
+  const int32_t n = input.NumberOfPoints;
+  const int32_t* source = this->Renumbered ? this->Order.OldVertex.data() : nullptr;
+  this->Seams.Release();
+  if (this->Options.PreserveSeams)
+  {
+    // Full collapses would move the two sides apart: their seams are locked.
+    const bool lockAll =
+      this->Options.Metric == ErrorMetric::ColorQuadric && this->Options.OptimalPlacement;
+    const SeamReport seams =
+      this->Seams.Detect(this->Mesh, input.Points, source, lockAll, this->ThreadCount(size_t(n)));
+    stats.SeamVertices = seams.TwinnedVertices + seams.SharedVertices + seams.LockedVertices;
+    stats.SeamLockedVertices = seams.LockedVertices;
+  }
   if (input.Fixed)
   {
-    const int32_t* source = this->Renumbered ? this->Order.OldVertex.data() : nullptr;
     for (int32_t v = 0; v < n; ++v)
     {
       if (input.Fixed[source ? source[v] : v])
@@ -129,6 +147,7 @@ void EngineBase::Finish(bool keepHot)
 {
   this->ReferenceNormals = Buffer<float>();
   this->Errors.Release();
+  this->Seams.Release();
   if (this->Options.RecordCollapses)
   {
     this->Record.Append(this->Recorded,

@@ -23,6 +23,7 @@
 #include "engine/Options.h"
 #include "lod/CollapseRecord.h"
 #include "mesh/HalfEdgeMesh.h"
+#include "mesh/Seams.h"
 #include "mesh/SpatialOrder.h"
 #include "metric/ColorQuadric.h"
 #include "metric/HalfEdgeColor.h"
@@ -81,6 +82,10 @@ public:
   const Buffer<HotVertex>& GetHot() const { return this->Hot; }
   const Frame& GetFrame() const { return this->Geometry; }
   bool IsRenumbered() const { return this->Renumbered; }
+  /// The attribute seams (mesh/Seams.h; empty without seams or with PreserveSeams off).
+  const SeamMap& GetSeams() const { return this->Seams; }
+  /// Whether v is a twinned seam vertex: it collapses with its twin, as a pair (section 15).
+  bool IsTwinned(int32_t v) const { return this->Seams.GetRole(v) == SeamMap::Twinned; }
   bool IsLarge() const { return this->Large; }
   /// The most threads EvaluateAll started.
   int GetThreadsUsed() const { return this->ThreadsUsed; }
@@ -124,6 +129,8 @@ protected:
   /// The 1-ring of v0 with the targets admissible for a collapse (a boundary vertex only
   /// collapses along its boundary: to its first or last neighbour).
   void GatherRing(int32_t v0, Ring& ring) const;
+  /// A seam vertex's boundary candidates less those SeamMap::Admits refuses (section 15).
+  void RestrictToSeams(int32_t v0, Ring& ring) const;
   const float* Positions() const { return this->Hot.empty() ? nullptr : this->Hot[0].P; }
   /// Map one per-vertex array of a renumbered run back to the input's ids (left as it is when
   /// it does not hold one value per vertex, e.g. released).
@@ -153,6 +160,7 @@ protected:
   SpatialOrder Order;
   Buffer<float> ReferenceNormals; ///< the input normal of every face slot (CollapseRules)
   ErrorBound Errors;              ///< the planes of MaximumError (empty without a bound)
+  SeamMap Seams;                  ///< the attribute seams (section 15)
   std::vector<uint8_t> Flipped;   ///< per input triangle: reversed (empty: none was)
   CollapseRecord Record;          ///< with RecordCollapses, after Finish
   mutable int ThreadsUsed = 1;
@@ -160,6 +168,8 @@ protected:
 private:
   void ComputeOrder(const DecimatorInput& input);
   void BuildMesh(const DecimatorInput& input, DecimatorStatistics& stats);
+  /// The seams of the built mesh (section 15), then the input's fixed points locked.
+  void FindSeamsAndLocks(const DecimatorInput& input, DecimatorStatistics& stats);
 };
 
 /**
@@ -185,6 +195,11 @@ public:
     typename Metric::Scratch Scratch;
     CollapseRules Rules;                  ///< its own copy (the rules keep scratch)
     std::vector<int32_t> FormerNeighbors; ///< v0's neighbours before the last collapse
+    // The mirror side of a seam pair (section 15): its ring, costs and scratch.
+    Ring MirrorRing;
+    std::vector<double> MirrorCosts;
+    typename Metric::Scratch MirrorScratch;
+    std::vector<int32_t> SeamScratch;
   };
 
   explicit Engine(const DecimatorOptions& options)
@@ -242,6 +257,12 @@ public:
   /// The rules' verdict on v0 -> v1; `moves`: the metric's placement moves v1 (into place).
   bool IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, Placement& place, Workspace& ws) const;
   /**
+   * For a twinned v0 whose v0 -> v1 is legal: whether the mirror collapse twin(v0) ->
+   * MirrorTarget(v1) is legal too and independent of it (SeamMap::AreApart), with its `moves`
+   * and `place` (section 15).
+   */
+  bool IsMirrorLegal(int32_t v0, int32_t v1, bool& moves, Placement& place, Workspace& ws) const;
+  /**
    * Whether v0 -> v1 (checked legal, with its `moves` and `place`) keeps within MaximumError;
    * its squared error, in the frame's units, into squaredError. Only with HasErrorBound().
    */
@@ -272,6 +293,9 @@ private:
   void CostRing(int32_t v0, bool withColorError, Workspace& ws) const;
   Choice Cheapest(const Ring& ring, const std::vector<double>& costs) const;
   Choice CheapestLegal(int32_t v0, Workspace& ws) const;
+  /// A twinned v0: the cost of each candidate's mirror collapse added to it, candidates without
+  /// one dropped (section 15: the cost of a seam collapse counts both sides).
+  void AddMirrorCosts(int32_t v0, Workspace& ws) const;
 
   Metric TheMetric;
   Workspace Main;

@@ -22,8 +22,23 @@ inline void EngineBase::GatherRing(int32_t v0, Ring& ring) const
   if (boundary && ring.Size > 0)
   {
     ring.IsCandidate[ring.Size - 1] = !this->Mesh.IsLocked(ring.Vertex[ring.Size - 1]);
+    if (this->Seams.GetRole(v0) != SeamMap::None)
+    {
+      this->RestrictToSeams(v0, ring);
+    }
   }
   ring.Pad();
+}
+
+inline void EngineBase::RestrictToSeams(int32_t v0, Ring& ring) const
+{
+  for (const int k : { 0, ring.Size - 1 })
+  {
+    if (ring.IsCandidate[k] && !this->Seams.Admits(this->Mesh, v0, ring.Vertex[k]))
+    {
+      ring.IsCandidate[k] = 0;
+    }
+  }
 }
 
 template <typename Metric>
@@ -50,6 +65,10 @@ Choice Engine<Metric>::Evaluate(int32_t v0, bool exact, bool allowBound, Workspa
   this->GatherRing(v0, ws.CurrentRing);
   choice.Bound = allowBound && !exact && this->TheMetric.KeysByBound(ws.CurrentRing.Size);
   this->CostRing(v0, !choice.Bound, ws);
+  if (this->IsTwinned(v0))
+  {
+    this->AddMirrorCosts(v0, ws);
+  }
   if (!exact)
   {
     const Choice cheapest = this->Cheapest(ws.CurrentRing, ws.Costs);
@@ -58,6 +77,42 @@ Choice Engine<Metric>::Evaluate(int32_t v0, bool exact, bool allowBound, Workspa
     return choice;
   }
   return this->CheapestLegal(v0, ws);
+}
+
+template <typename Metric>
+void Engine<Metric>::AddMirrorCosts(int32_t v0, Workspace& ws) const
+{
+  Ring& ring = ws.CurrentRing;
+  const int32_t t0 = this->Seams.GetTwin(v0);
+  if (std::find(ring.IsCandidate.begin(), ring.IsCandidate.begin() + ring.Size, 1) ==
+      ring.IsCandidate.begin() + ring.Size)
+  {
+    return; // no candidate (Admits found t0 locked, or no mirror edge)
+  }
+  Ring& mirror = ws.MirrorRing;
+  this->GatherRing(t0, mirror);
+  if (ws.MirrorCosts.size() < static_cast<size_t>(mirror.PaddedSize()))
+  {
+    ws.MirrorCosts.resize(2 * static_cast<size_t>(mirror.PaddedSize()));
+  }
+  this->TheMetric.CostRing(t0, true, mirror, ws.MirrorCosts.data(), ws.MirrorScratch);
+  for (int j = 0; j < ring.Size; ++j)
+  {
+    const int32_t m1 = ring.IsCandidate[j] ? this->Seams.MirrorTarget(ring.Vertex[j]) : -1;
+    int k = 0;
+    while (k < mirror.Size && (mirror.Vertex[k] != m1 || !mirror.IsCandidate[k]))
+    {
+      ++k;
+    }
+    if (k < mirror.Size)
+    {
+      ws.Costs[j] += ws.MirrorCosts[k];
+    }
+    else
+    {
+      ring.IsCandidate[j] = 0;
+    }
+  }
 }
 
 template <typename Metric>
@@ -95,9 +150,15 @@ Choice Engine<Metric>::CheapestLegal(int32_t v0, Workspace& ws) const
   for (int j : ws.Order)
   {
     double p[3];
-    const bool legal = this->TheMetric.RingPlacement(v0, j, ws.Scratch, p)
+    bool legal = this->TheMetric.RingPlacement(v0, j, ws.Scratch, p)
       ? ws.Rules.IsLegal(this->Mesh, this->Positions(), v0, ring.Vertex[j], HotStride, p)
       : ws.Rules.IsLegal(this->Mesh, this->Positions(), v0, ring.Vertex[j], HotStride);
+    if (legal && this->IsTwinned(v0))
+    {
+      bool mirrorMoves = false; // a seam pair: its mirror must be legal too (section 15)
+      Placement mirrorPlace;
+      legal = this->IsMirrorLegal(v0, ring.Vertex[j], mirrorMoves, mirrorPlace, ws);
+    }
     if (legal)
     {
       choice.Target = ring.Vertex[j];
@@ -193,6 +254,15 @@ bool Engine<Metric>::IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, Placem
   moves = this->TheMetric.Place(v0, v1, place, newPosition);
   return moves ? ws.Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride, newPosition)
                : ws.Rules.IsLegal(this->Mesh, this->Positions(), v0, v1, HotStride);
+}
+
+template <typename Metric>
+bool Engine<Metric>::IsMirrorLegal(int32_t v0, int32_t v1, bool& moves, Placement& place,
+                                   Workspace& ws) const
+{
+  const int32_t t0 = this->Seams.GetTwin(v0), m1 = this->Seams.MirrorTarget(v1);
+  return t0 >= 0 && m1 >= 0 && SeamMap::AreApart(this->Mesh, v0, v1, t0, m1, ws.SeamScratch) &&
+    this->IsCollapseLegal(t0, m1, moves, place, ws);
 }
 
 template <typename Metric>

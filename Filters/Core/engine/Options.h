@@ -87,8 +87,11 @@ struct DecimatorOptions
   /// When collapses alone leave more than the target, remove whole connected pieces, smallest
   /// area first (mesh/Components.h; section 14). Not after an abort or at MaximumError.
   bool PruneComponents = false;
+  /// Collapse the two sides of attribute seams (boundary vertices at bit-identical positions
+  /// with their own point data) together, so that they stay closed (mesh/Seams.h; section 15).
+  bool PreserveSeams = true;
   /// Keep the collapses made, in order, for levels of detail (lod/CollapseRecord.h; section
-  /// 15). Each collapse's geometric error is then measured even without MaximumError.
+  /// 16). Each collapse's geometric error is then measured even without MaximumError.
   bool RecordCollapses = false;
 };
 
@@ -124,6 +127,8 @@ struct DecimatorStatistics
   int64_t ReorientedTriangles = 0; ///< reversed to wind their piece one way (section 10)
   int64_t PrunedComponents = 0;    ///< pieces removed by PruneComponents
   int64_t PrunedTriangles = 0;     ///< their triangles
+  int64_t SeamVertices = 0;        ///< vertices on attribute seams (section 15)
+  int64_t SeamLockedVertices = 0;  ///< of those, locked (more than one twin)
   size_t StateBytes = 0;           ///< bytes held by the decimator's arrays
   size_t MetricBytesPerVertex = 0; ///< the metric's per-vertex state
 };

@@ -1,7 +1,7 @@
 /**
  * @file CollapseRecord.h
  * @brief The collapses of a run in the order they were made, and the levels of detail they
- * hold (docs/ALGORITHM.md, section 15).
+ * hold (docs/ALGORITHM.md, section 16).
  *
  * A half-edge collapse keeps the surviving vertex where it is, so the mesh after the first k
  * collapses of a run is the input with each removed vertex replaced by the vertex it went into

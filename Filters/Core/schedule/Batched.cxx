@@ -27,6 +27,7 @@ struct Lane
 {
   std::vector<int32_t> Rejected;   ///< vertices whose choice the rules forbade
   std::vector<Candidate> Deferred; ///< candidates reaching out of their block
+  std::vector<int32_t> StaleTwins; ///< twins of affected seam vertices, stamped in Gather
   Buffer<Candidate> SortRoom;      ///< scratch of SortByKey
   int64_t Collapses = 0, Rejections = 0, RemovedFaces = 0;
   double LargestSquaredError = 0; ///< under MaximumError: of the collapses made
@@ -39,6 +40,7 @@ struct Lane
     this->Rejected.clear();
     this->Deferred.clear();
     this->Record.clear();
+    this->StaleTwins.clear();
     this->Collapses = this->Rejections = this->RemovedFaces = 0;
   }
 };
@@ -64,7 +66,7 @@ public:
     int32_t pass = 0;
     while (mesh.GetNumberOfLiveFaces() > stats.TargetTriangles && !stats.Aborted)
     {
-      ++pass;
+      this->Pass = ++pass;
       if (this->SelectBatch(stats) == 0)
       {
         break;
@@ -111,6 +113,12 @@ private:
   /// Check v0 -> v1, then collapse it and stamp the affected vertices, or stamp v0 as rejected;
   /// `counted`: the mesh counts the removed faces itself (otherwise the lane does).
   void TryCollapse(int32_t v0, int32_t v1, int32_t pass, Workspace& ws, Lane& lane, bool counted);
+  /// The same for a twinned v0, in step 2 only: v0 -> v1 and its mirror, both or neither
+  /// (section 15); the block flags of both brought up to date.
+  void TrySeamCollapse(int32_t v0, int32_t v1, int32_t pass, Workspace& ws, Lane& lane);
+  /// Stamp the vertices the collapse into v1 affected, and the twins of the seam vertices among
+  /// them (whose cost holds their mirror): at once in step 2 (serial), in Gather otherwise.
+  void StampWithTwins(int32_t v1, int32_t pass, Workspace& ws, Lane& lane, bool serial);
   /// Add a lane's results of a pass to the pass's lists and to the statistics.
   void Gather(Lane& lane, DecimatorStatistics& stats);
   /// With RecordCollapses: the gathered collapses to the engine's record, by block (blocks are
@@ -144,6 +152,7 @@ private:
   int CollapseThreadsUsed = 1;
   int WideCollapseThreadsUsed = 1;
   double LargestSquaredError = 0; ///< of the collapses made, under MaximumError
+  int32_t Pass = 0;               ///< the pass under way (Gather stamps the stale twins with it)
 };
 
 template <typename Metric>
@@ -276,8 +285,10 @@ void BatchedSchedule<Metric>::CollapseBlock(Candidate* begin, Candidate* end, in
     {
       continue; // its key is stale: a neighbour collapsed in this pass
     }
-    if (!this->Blocks.IsInsideBlock(this->E.GetMesh(), v0, v1, block, level))
+    if (this->E.IsTwinned(v0) ||
+        !this->Blocks.IsInsideBlock(this->E.GetMesh(), v0, v1, block, level))
     {
+      // Reaching out of the block, or a seam pair, whose mirror may lie in another block.
       lane.Deferred.push_back(begin[i]);
       continue;
     }
@@ -319,6 +330,11 @@ void BatchedSchedule<Metric>::CollapseDeferred(int32_t pass, DecimatorStatistics
     const int32_t v1 = this->E.Best[v0];
     if (this->Stamp[v0] == pass || v1 < 0 || this->Stamp[v1] == pass)
     {
+      continue;
+    }
+    if (this->E.IsTwinned(v0))
+    {
+      this->TrySeamCollapse(v0, v1, pass, ws, lane);
       continue;
     }
     const int64_t collapses = lane.Collapses;
@@ -398,12 +414,91 @@ void BatchedSchedule<Metric>::TryCollapse(int32_t v0, int32_t v1, int32_t pass, 
   {
     lane.Record.push_back({ v0, v1, int16_t(removed), 0, lane.Block, this->Keys[v0], squared });
   }
-  this->E.ForEachAffected(v1, ws.FormerNeighbors, [pass, stamp](int32_t u) { stamp[u] = pass; });
+  if (this->E.GetSeams().Empty())
+  {
+    this->E.ForEachAffected(v1, ws.FormerNeighbors, [pass, stamp](int32_t u) { stamp[u] = pass; });
+  }
+  else
+  {
+    this->StampWithTwins(v1, pass, ws, lane, counted);
+  }
+}
+
+template <typename Metric>
+void BatchedSchedule<Metric>::TrySeamCollapse(int32_t v0, int32_t v1, int32_t pass, Workspace& ws,
+                                              Lane& lane)
+{
+  int32_t* stamp = this->Stamp.data();
+  const int32_t t0 = this->E.GetSeams().GetTwin(v0), m1 = this->E.GetSeams().MirrorTarget(v1);
+  if (m1 < 0 || stamp[t0] == pass || stamp[m1] == pass)
+  {
+    return; // the mirror's key is stale: a neighbour collapsed in this pass
+  }
+  typename Metric::Placement place[2];
+  bool moves[2] = { false, false };
+  if (!this->E.IsCollapseLegal(v0, v1, moves[0], place[0], ws) ||
+      !this->E.IsMirrorLegal(v0, v1, moves[1], place[1], ws))
+  {
+    stamp[v0] = pass;
+    lane.Rejected.push_back(v0);
+    ++lane.Rejections;
+    return;
+  }
+  double squared[2] = { 0, 0 };
+  if (this->E.HasErrorBound() &&
+      (!this->E.IsWithinErrorBound(v0, v1, moves[0], place[0], squared[0]) ||
+       !this->E.IsWithinErrorBound(t0, m1, moves[1], place[1], squared[1])))
+  {
+    lane.Exceeded = true; // skipped, and the run stops after this pass
+    return;
+  }
+  lane.LargestSquaredError = std::max(lane.LargestSquaredError, std::max(squared[0], squared[1]));
+  const int32_t from[2] = { v0, t0 }, to[2] = { v1, m1 };
+  for (int side = 0; side < 2; ++side)
+  {
+    const int removed =
+      this->E.ApplyCollapse(from[side], to[side], moves[side], place[side], ws, true);
+    ++lane.Collapses;
+    if (this->E.GetOptions().RecordCollapses)
+    {
+      lane.Record.push_back({ from[side], to[side], int16_t(removed), int16_t(side), lane.Block,
+                              this->Keys[v0], squared[side] });
+    }
+    this->StampWithTwins(to[side], pass, ws, lane, true);
+    this->Blocks.FlagInterior(this->E.GetMesh(), ws.FormerNeighbors.data(),
+                              ws.FormerNeighbors.size(), this->Blocks.AllFlags());
+  }
+}
+
+template <typename Metric>
+void BatchedSchedule<Metric>::StampWithTwins(int32_t v1, int32_t pass, Workspace& ws, Lane& lane,
+                                             bool serial)
+{
+  int32_t* stamp = this->Stamp.data();
+  const SeamMap& seams = this->E.GetSeams();
+  this->E.ForEachAffected(v1, ws.FormerNeighbors,
+                          [pass, stamp, &seams, &lane, serial](int32_t u)
+                          {
+                            stamp[u] = pass;
+                            const int32_t twin = seams.GetTwin(u);
+                            if (twin >= 0 && serial)
+                            {
+                              stamp[twin] = pass;
+                            }
+                            else if (twin >= 0)
+                            {
+                              lane.StaleTwins.push_back(twin); // maybe in another block
+                            }
+                          });
 }
 
 template <typename Metric>
 void BatchedSchedule<Metric>::Gather(Lane& lane, DecimatorStatistics& stats)
 {
+  for (const int32_t twin : lane.StaleTwins)
+  {
+    this->Stamp[twin] = this->Pass;
+  }
   this->Rejected.insert(this->Rejected.end(), lane.Rejected.begin(), lane.Rejected.end());
   this->Deferred.insert(this->Deferred.end(), lane.Deferred.begin(), lane.Deferred.end());
   stats.Collapses += lane.Collapses;

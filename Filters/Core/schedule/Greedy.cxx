@@ -85,6 +85,10 @@ private:
       this->Requeue(v0, false);
       return false;
     }
+    if (this->E.IsTwinned(v0))
+    {
+      return this->StepSeam(v0, v1, stats);
+    }
     if (this->E.IsLarge())
     {
       this->PrefetchNeighborhood(v0);
@@ -116,6 +120,52 @@ private:
     return true;
   }
 
+  /// Step for a twinned v0 (section 15): v0 -> v1 and its mirror twin(v0) -> MirrorTarget(v1),
+  /// both made or neither; then the vertices both affect are re-costed.
+  bool StepSeam(int32_t v0, int32_t v1, DecimatorStatistics& stats)
+  {
+    auto& ws = this->E.GetWorkspace(0);
+    const int32_t t0 = this->E.GetSeams().GetTwin(v0), m1 = this->E.GetSeams().MirrorTarget(v1);
+    typename Metric::Placement place[2];
+    bool moves[2] = { false, false };
+    if (!this->E.IsCollapseLegal(v0, v1, moves[0], place[0], ws) ||
+        !this->E.IsMirrorLegal(v0, v1, moves[1], place[1], ws))
+    {
+      ++stats.RejectedPops;
+      this->Requeue(v0, true);
+      return false;
+    }
+    double squared[2] = { 0, 0 };
+    if (this->E.HasErrorBound() &&
+        (!this->E.IsWithinErrorBound(v0, v1, moves[0], place[0], squared[0]) ||
+         !this->E.IsWithinErrorBound(t0, m1, moves[1], place[1], squared[1])))
+    {
+      stats.ErrorBoundReached = true; // the run stops before this pair
+      return false;
+    }
+    this->LargestSquaredError =
+      std::max(this->LargestSquaredError, std::max(squared[0], squared[1]));
+    const double cost = this->Heap.TopKey();
+    this->Heap.Pop();
+    this->Pending.clear();
+    const auto collect = [this](int32_t u) { this->Pending.push_back(u); };
+    const int removed = this->E.ApplyCollapse(v0, v1, moves[0], place[0], ws, true);
+    this->E.ForEachAffected(v1, ws.FormerNeighbors, collect);
+    const int mirrored = this->E.ApplyCollapse(t0, m1, moves[1], place[1], ws, true);
+    this->E.ForEachAffected(m1, ws.FormerNeighbors, collect);
+    stats.Collapses += 2;
+    if (this->E.GetOptions().RecordCollapses)
+    {
+      this->E.Recorded.push_back({ v0, v1, int16_t(removed), 0, 0, cost, squared[0] });
+      this->E.Recorded.push_back({ t0, m1, int16_t(mirrored), 1, 0, cost, squared[1] });
+    }
+    for (const int32_t u : this->Pending)
+    {
+      this->Update(u);
+    }
+    return true;
+  }
+
   /// Whether v0 -> v1 keeps within MaximumError (its squared error into `squared`); the
   /// largest error so far is kept.
   bool KeepsWithinBound(int32_t v0, int32_t v1, bool moves, const typename Metric::Placement& place,
@@ -129,8 +179,19 @@ private:
     return true;
   }
 
-  /// A vertex the collapse affected: its new choice, keyed by a bound where the metric allows.
+  /// A vertex the collapse affected, and its twin, whose cost holds its mirror (section 15).
   void Update(int32_t v)
+  {
+    this->UpdateOne(v);
+    const int32_t twin = this->E.GetSeams().GetTwin(v);
+    if (twin >= 0)
+    {
+      this->UpdateOne(twin);
+    }
+  }
+
+  /// One vertex's new choice, keyed by a bound where the metric allows.
+  void UpdateOne(int32_t v)
   {
     const HalfEdgeMesh& mesh = this->E.GetMesh();
     if (mesh.IsLocked(v) || mesh.IsRemoved(v))
@@ -170,6 +231,7 @@ private:
   Engine<Metric>& E;
   VertexHeap Heap;
   double LargestSquaredError = 0; ///< of the collapses made, under MaximumError
+  std::vector<int32_t> Pending;   ///< StepSeam: the vertices its two collapses affect
 };
 
 template <typename Metric>
