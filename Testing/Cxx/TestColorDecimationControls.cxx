@@ -117,35 +117,6 @@ std::map<vtkIdType, int> TrianglesPerPoint(const std::vector<Tri>& triangles)
   return count;
 }
 
-/// The edges used by one triangle once the points are welded by position (bit for bit).
-long long WeldedOpenEdges(vtkPolyData* mesh)
-{
-  std::map<std::array<uint64_t, 3>, vtkIdType> welded;
-  std::vector<vtkIdType> weld(size_t(mesh->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    mesh->GetPoint(i, p);
-    std::array<uint64_t, 3> key;
-    std::memcpy(key.data(), p, sizeof(p));
-    weld[size_t(i)] = welded.emplace(key, vtkIdType(welded.size())).first->second;
-  }
-  std::vector<Tri> triangles = GetTriangles(mesh);
-  for (Tri& t : triangles)
-  {
-    for (vtkIdType& v : t)
-    {
-      v = weld[size_t(v)];
-    }
-  }
-  long long open = 0;
-  for (const auto& [edge, uses] : EdgeUses(triangles))
-  {
-    open += uses == 1 ? 1 : 0;
-  }
-  return open;
-}
-
 /**
  * A mesh with attribute seams (closed once welded), decimated at 0.9 and 0.97 with both
  * schedules: no open edge once welded, every point's data its input point's, the target

@@ -408,6 +408,58 @@ CD_TEST_CASE(RecordNotWithOptimalPlacement)
   CD_CHECK(run.Output->GetNumberOfCells() > 0);
 }
 
+// Attribute seams: a pair of collapses is one step of the record. Greedy levels of a seam
+// sphere equal direct runs, and no level of either schedule opens the seam (welded, closed).
+CD_TEST_CASE(SeamLevels)
+{
+  auto sphere = meshes::SeamSphere(40);
+  CD_CHECK(WeldedOpenEdges(sphere) == 0);
+  for (int schedule : { vtkColorHalfEdgeDecimation::Greedy, vtkColorHalfEdgeDecimation::Batched })
+  {
+    const Recorded run = RecordRun(sphere, 0.98, schedule);
+    const auto triangles = ColumnValues(run.Record, "NumberOfTriangles");
+    size_t pairs = 0;
+    for (size_t i = 1; i < triangles.size(); ++i)
+    {
+      pairs += triangles[i] == triangles[i - 1] ? 1 : 0;
+    }
+    CD_CHECK_MSG(pairs > 10, pairs << " seam pairs recorded");
+    // A target one triangle below the count before a pair: a level that ended inside the pair
+    // would open the seam there.
+    std::vector<vtkIdType> targets;
+    for (size_t i = 1; i < triangles.size() && targets.size() < 8; ++i)
+    {
+      if (triangles[i] == triangles[i - 1])
+      {
+        const double before = i >= 2 ? triangles[i - 2] : double(sphere->GetNumberOfCells());
+        targets.push_back(vtkIdType(before) - 1);
+      }
+    }
+    for (vtkIdType target : targets)
+    {
+      auto level =
+        Extract(sphere, run.Record, [target](auto* f) { f->SetTargetNumberOfTriangles(target); });
+      CD_CHECK_MSG(WeldedOpenEdges(level) == 0, "the level at " << target << " opens the seam");
+      CD_CHECK(level->GetNumberOfCells() < target);
+    }
+    for (double reduction : { 0.5, 0.8, 0.9, 0.95, 0.98 })
+    {
+      const auto configure = [reduction](auto* f) { f->SetTargetReduction(reduction); };
+      auto level = Extract(sphere, run.Record, configure);
+      CD_CHECK_MSG(WeldedOpenEdges(level) == 0, "level " << reduction << " opens the seam");
+      CD_CHECK(CheckPointDataCopied(sphere, level) == 0);
+      if (schedule == vtkColorHalfEdgeDecimation::Greedy)
+      {
+        const RunResult direct =
+          Decimate(sphere, reduction,
+                   [](vtkColorHalfEdgeDecimation* f) { f->SetCollapseScheduleToGreedy(); });
+        std::string why;
+        CD_CHECK_MSG(SameMesh(direct.Output, level, why), "level " << reduction << ": " << why);
+      }
+    }
+  }
+}
+
 int main(int argc, char* argv[])
 {
   return RunTestCases(argc, argv);

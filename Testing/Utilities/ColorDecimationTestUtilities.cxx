@@ -909,5 +909,33 @@ PlainMesh ToPlain(vtkPolyData* mesh)
 const double PyramidPoints[15] = { 0, 0, 1, 1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0 };
 const int32_t PyramidTriangles[12] = { 0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 1 };
 
+long long WeldedOpenEdges(vtkPolyData* mesh)
+{
+  std::map<std::array<uint64_t, 3>, vtkIdType> welded;
+  std::vector<vtkIdType> weld(size_t(mesh->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    std::array<uint64_t, 3> key;
+    std::memcpy(key.data(), p, sizeof(p));
+    weld[size_t(i)] = welded.emplace(key, vtkIdType(welded.size())).first->second;
+  }
+  std::vector<Tri> triangles = GetTriangles(mesh);
+  for (Tri& t : triangles)
+  {
+    for (vtkIdType& v : t)
+    {
+      v = weld[size_t(v)];
+    }
+  }
+  long long open = 0;
+  for (const auto& [edge, uses] : EdgeUses(triangles))
+  {
+    open += uses == 1 ? 1 : 0;
+  }
+  return open;
+}
+
 } // namespace testing
 } // namespace colordecimation

@@ -184,6 +184,9 @@ using Tri = std::array<vtkIdType, 3>;
 std::vector<Tri> GetTriangles(vtkPolyData* mesh);
 /// The output triangles expressed in input point ids (through vtkOriginalPointIds).
 std::vector<Tri> GetOriginalTriangles(vtkPolyData* output);
+/// The edges used by one triangle once the points are welded by position (bit for bit): the
+/// cracks of a mesh with attribute seams.
+long long WeldedOpenEdges(vtkPolyData* mesh);
 /// Rotated so that the smallest id comes first (orientation kept).
 Tri Canonical(const Tri& t);
 std::set<Tri> CanonicalSet(const std::vector<Tri>& tris);
