@@ -60,7 +60,8 @@ void EngineBase::SetUp(const DecimatorInput& input, bool useColor, DecimatorStat
   const double bound = this->Options.MaximumError > 0 ? this->Options.MaximumError
     : this->Options.RecordCollapses                   ? std::numeric_limits<double>::infinity()
                                                       : 0.0;
-  this->Errors.Initialize(this->Mesh, this->Positions(), HotStride, bound * this->Geometry.Scale);
+  this->Errors.Initialize(this->Mesh, this->Positions(), HotStride, bound * this->Geometry.Scale,
+                          this->ThreadCount(size_t(n)));
   this->Record.Clear();
   this->Record.InputPoints = n;
   this->Record.InputTriangles = input.NumberOfTriangles;

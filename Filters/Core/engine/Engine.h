@@ -95,6 +95,8 @@ public:
   bool IsFlipped(int32_t t) const { return !this->Flipped.empty() && this->Flipped[t] != 0; }
   /// Whether a MaximumError bound applies.
   bool HasErrorBound() const { return this->Errors.IsEnabled(); }
+  /// Hint that the error of a collapse from or into v is about to be measured.
+  void PrefetchError(int32_t v) const { this->Errors.Prefetch(v); }
   /// A squared error of ErrorBound (frame units) as a distance in the input's units.
   double ToInputDistance(double squaredError) const
   {

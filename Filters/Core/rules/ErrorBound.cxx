@@ -1,6 +1,7 @@
 #include "rules/ErrorBound.h"
 
 #include "mesh/HalfEdgeMesh.h"
+#include "util/Parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,7 @@ namespace colordecimation
 {
 
 void ErrorBound::Initialize(const HalfEdgeMesh& mesh, const float* positions, int stride,
-                            double bound)
+                            double bound, int threads)
 {
   this->Bound = bound > 0.0 ? bound : 0.0;
   this->Planes = Buffer<PlaneSum>();
@@ -17,7 +18,13 @@ void ErrorBound::Initialize(const HalfEdgeMesh& mesh, const float* positions, in
   {
     return;
   }
-  this->Planes.resize(static_cast<size_t>(mesh.GetNumberOfVertices()), PlaneSum{});
+  // Zeroed on `threads` threads, which also fault the pages in.
+  const size_t n = static_cast<size_t>(mesh.GetNumberOfVertices());
+  this->Planes.resize(n);
+  PlaneSum* planes = this->Planes.data();
+  ParallelFor(n, threads,
+              [planes](size_t begin, size_t end, int)
+              { std::fill(planes + begin, planes + end, PlaneSum{}); });
   for (int32_t f = 0; f < mesh.GetNumberOfFaceSlots(); ++f)
   {
     if (!mesh.IsFaceAlive(f))

@@ -13,6 +13,7 @@
 #define colordecimation_ErrorBound_h
 
 #include "util/Buffer.h"
+#include "util/Prefetch.h"
 #include "vtkColorDecimationModule.h" // for export macro
 
 #include <cstddef>
@@ -27,7 +28,8 @@ class VTKCOLORDECIMATION_EXPORT ErrorBound
 public:
   /// The planes of the mesh's live faces (positions: 3 floats every `stride`), with the bound
   /// `bound` (in the positions' units); no bound when bound <= 0.
-  void Initialize(const HalfEdgeMesh& mesh, const float* positions, int stride, double bound);
+  void Initialize(const HalfEdgeMesh& mesh, const float* positions, int stride, double bound,
+                  int threads = 1);
   bool IsEnabled() const { return this->Bound > 0.0; }
   /// Bytes held per vertex when enabled.
   static constexpr size_t BytesPerVertex = 11 * sizeof(double);
@@ -39,6 +41,16 @@ public:
   void Merge(int32_t v0, int32_t v1);
   /// Free the state.
   void Release() { this->Planes = Buffer<PlaneSum>(); }
+  /// Hint that v's plane sum is about to be read (its 88 bytes span two cache lines).
+  void Prefetch(int32_t v) const
+  {
+    if (!this->Planes.empty())
+    {
+      const char* p = reinterpret_cast<const char*>(this->Planes.data() + v);
+      COLORDECIMATION_PREFETCH(p);
+      COLORDECIMATION_PREFETCH(p + sizeof(PlaneSum) - 1);
+    }
+  }
 
 private:
   /// Q(x) = x^T A x + 2 b.x + c (A symmetric) and the area it sums.

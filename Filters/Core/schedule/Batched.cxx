@@ -557,11 +557,13 @@ void BatchedSchedule<Metric>::PrefetchCandidates(const Candidate* candidates, si
     const int32_t v = candidates[i + NearAhead].Vertex;
     const int32_t target = best[v];
     this->E.GetMetric().Prefetch(v);
+    this->E.PrefetchError(v);
     if (target >= 0 && mayRead(target))
     {
       mesh.PrefetchFirstFace(target);
       COLORDECIMATION_PREFETCH(hot + target);
       this->E.GetMetric().Prefetch(target);
+      this->E.PrefetchError(target);
     }
   }
 }
