@@ -5,6 +5,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkColorHalfEdgeDecimation.h"
+#include "vtkColorHalfEdgeLevelOfDetail.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkDataSetAttributes.h"
@@ -17,6 +18,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkTable.h"
 #include "vtkType.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -469,13 +471,16 @@ vtkSmartPointer<vtkPolyData> Build(ByteReader& in, Settings& settings)
   return mesh;
 }
 
-/// The filter with the settings, on `mesh`; the invariants are checked (RunFilter).
-colordecimation::testing::RunResult Decimate(vtkPolyData* mesh, const Settings& settings)
+/// The filter with the settings, on `mesh` (with the collapse record when `record`); the
+/// invariants are checked (RunFilter).
+colordecimation::testing::RunResult Decimate(vtkPolyData* mesh, const Settings& settings,
+                                             bool record = false)
 {
   return colordecimation::testing::RunFilter(
     mesh, settings.TargetReduction,
-    [&settings](vtkColorHalfEdgeDecimation* filter)
+    [&settings, record](vtkColorHalfEdgeDecimation* filter)
     {
+      filter->SetGenerateCollapseRecord(record);
       filter->SetErrorMetric(settings.Metric);
       filter->SetColorSpace(settings.ColorSpace);
       filter->SetOptimalPlacement(settings.OptimalPlacement);
@@ -502,6 +507,40 @@ colordecimation::testing::RunResult Decimate(vtkPolyData* mesh, const Settings& 
     });
 }
 
+/**
+ * The whole record of a run is the run's own output: its last level, extracted from the record,
+ * has the same triangles on the same points (not when pieces were pruned, which the record
+ * does not hold, nor with ConsistentOrientation, whose winding the levels do not take).
+ */
+void CheckLastLevel(vtkPolyData* mesh, const Settings& settings,
+                    const colordecimation::testing::RunResult& run,
+                    std::vector<std::string>& broken)
+{
+  if (settings.OptimalPlacement || settings.Prune || settings.ConsistentOrientation ||
+      run.Errors > 0 || run.Output->GetNumberOfCells() == 0)
+  {
+    return;
+  }
+  vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+  lod->SetInputData(mesh);
+  lod->SetRecordData(run.Filter->GetCollapseRecord());
+  lod->SetTargetReduction(1.0);
+  lod->SetGenerateOriginalPointIds(settings.GenerateIds);
+  colordecimation::testing::EventRecorder messages;
+  messages.Watch(lod);
+  lod->Update();
+  if (messages.Errors > 0)
+  {
+    broken.push_back("the level of the run's record failed: " + messages.ErrorText());
+  }
+  else if (colordecimation::testing::GetTriangles(lod->GetOutput()) !=
+             colordecimation::testing::GetTriangles(run.Output) ||
+           lod->GetOutput()->GetNumberOfPoints() != run.Output->GetNumberOfPoints())
+  {
+    broken.push_back("the last level of the record is not the run's output");
+  }
+}
+
 } // namespace
 
 void Initialize()
@@ -519,8 +558,8 @@ std::vector<std::string> RunOne(const uint8_t* data, size_t size)
   const auto first = Decimate(mesh, settings);
   std::vector<std::string> broken = first.Broken;
 
-  // The same input and settings must give the same output.
-  const auto second = Decimate(mesh, settings);
+  // The same input and settings must give the same output, with the collapse record on too.
+  const auto second = Decimate(mesh, settings, !settings.OptimalPlacement);
   const auto a = colordecimation::testing::GetTriangles(first.Output);
   const auto b = colordecimation::testing::GetTriangles(second.Output);
   if (a != b || first.Collapses != second.Collapses || first.Errors != second.Errors ||
@@ -528,6 +567,7 @@ std::vector<std::string> RunOne(const uint8_t* data, size_t size)
   {
     broken.push_back("two runs on the same input differ");
   }
+  CheckLastLevel(mesh, settings, second, broken);
   return broken;
 }
 
