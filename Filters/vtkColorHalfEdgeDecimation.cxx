@@ -197,6 +197,13 @@ void FixSharedPoints(vtkColorHalfEdgeDecimation* self, vtkInformation* outInfo, 
   }
 }
 
+/// Whether the collapses move the surviving point (ColorQuadric with OptimalPlacement).
+bool MovesPoints(vtkColorHalfEdgeDecimation* self)
+{
+  return self->GetErrorMetric() == vtkColorHalfEdgeDecimation::ColorQuadric &&
+    self->GetOptimalPlacement();
+}
+
 colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, int threads)
 {
   using Filter = vtkColorHalfEdgeDecimation;
@@ -223,7 +230,7 @@ colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, 
   options.MaximumError = self->GetMaximumError();
   options.PruneComponents = self->GetPruneComponents() != 0;
   options.PreserveSeams = self->GetPreserveSeams() != 0;
-  options.RecordCollapses = self->GetGenerateCollapseRecord() && !options.OptimalPlacement;
+  options.RecordCollapses = self->GetGenerateCollapseRecord() && !MovesPoints(self);
   return options;
 }
 
@@ -235,7 +242,7 @@ void WriteRecord(vtkColorHalfEdgeDecimation* self, const InputMesh& mesh,
   {
     return;
   }
-  if (self->GetOptimalPlacement())
+  if (MovesPoints(self))
   {
     vtkWarningWithObjectMacro(self, << "No collapse record with OptimalPlacement (its collapses "
                                        "move the surviving point): the record is empty.");

@@ -375,8 +375,10 @@ public:
    * vtkColorHalfEdgeLevelOfDetail. With the Greedy schedule a level is exactly what a direct
    * run to that target gives. Off (default): the second output is an empty table.
    *
-   * Not with OptimalPlacement (its collapses move the survivor): the record is then empty,
-   * with a warning. The pieces PruneComponents removes are not in the record.
+   * Not with the ColorQuadric metric's OptimalPlacement (its collapses move the survivor): the
+   * record is then empty, with a warning. The pieces PruneComponents removes are not in the
+   * record, and the levels keep their triangles' input winding (ConsistentOrientation applies
+   * to this filter's own output).
    */
   vtkSetMacro(GenerateCollapseRecord, vtkTypeBool);
   vtkGetMacro(GenerateCollapseRecord, vtkTypeBool);

@@ -13,6 +13,8 @@
 #include "Adapter/RecordTable.h"
 #include "Core/lod/CollapseRecord.h"
 
+#include "vtkAbstractArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -27,6 +29,24 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkColorHalfEdgeLevelOfDetail);
+
+namespace
+{
+/// The latest change of a record: a vtkTable's own MTime does not follow its columns.
+vtkMTimeType RecordTime(vtkDataObject* record)
+{
+  vtkMTimeType time = record->GetMTime();
+  if (auto* table = vtkTable::SafeDownCast(record))
+  {
+    time = std::max({ time, table->GetRowData()->GetMTime(), table->GetFieldData()->GetMTime() });
+    for (vtkIdType c = 0; c < table->GetNumberOfColumns(); ++c)
+    {
+      time = std::max(time, table->GetColumn(c)->GetMTime());
+    }
+  }
+  return time;
+}
+} // namespace
 
 /// The mesh and the record of the last execution, kept while neither changes.
 struct vtkColorHalfEdgeLevelOfDetail::Cache
@@ -92,14 +112,18 @@ bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObjec
 {
   Cache& cache = *this->Cached;
   if (cache.Valid && cache.Input == input && cache.RecordData == record &&
-      cache.InputTime == input->GetMTime() && cache.RecordTime == record->GetMTime())
+      cache.InputTime == input->GetMTime() && cache.RecordTime == RecordTime(record))
   {
     return true;
   }
   cache = Cache();
   const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
-  if (input->GetNumberOfPoints() == 0 ||
-      !colordecimation::adapter::ReadGeometry(this, input, threads, cache.Mesh))
+  if (input->GetNumberOfPoints() == 0 || input->GetNumberOfCells() == 0)
+  {
+    vtkDebugMacro(<< "Empty input: empty output.");
+    return false;
+  }
+  if (!colordecimation::adapter::ReadGeometry(this, input, threads, cache.Mesh))
   {
     return false;
   }
@@ -114,7 +138,7 @@ bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObjec
   cache.Input = input;
   cache.RecordData = record;
   cache.InputTime = input->GetMTime();
-  cache.RecordTime = record->GetMTime();
+  cache.RecordTime = RecordTime(record);
   cache.Valid = true;
   return true;
 }

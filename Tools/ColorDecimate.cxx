@@ -898,7 +898,8 @@ int PrepareRecordRun(vtkColorHalfEdgeDecimation* filter, const Options& options)
   {
     return Continue;
   }
-  if (filter->GetOptimalPlacement())
+  if (filter->GetOptimalPlacement() &&
+      filter->GetErrorMetric() == vtkColorHalfEdgeDecimation::ColorQuadric)
   {
     return Fail("--lod and --save-record need half-edge collapses: not with --placement", 2);
   }
@@ -993,6 +994,10 @@ int WriteLevels(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkP
   lod->SetGenerateOriginalPointIds(filter->GetGenerateOriginalPointIds());
   lod->SetOriginalPointIdsArrayName(filter->GetOriginalPointIdsArrayName());
   std::vector<double> asked = options.Levels;
+  if (!asked.empty() && filter->GetTargetNumberOfTriangles() > 0)
+  {
+    return Fail("--lod takes reductions: it cannot be combined with --target-triangles", 2);
+  }
   if (asked.empty())
   {
     asked.push_back(filter->GetTargetReduction()); // --from-record alone: the options' level

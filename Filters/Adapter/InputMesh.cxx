@@ -547,12 +547,17 @@ int64_t TargetTriangles(vtkIdType targetNumber, double reduction, vtkIdType numT
 
 void RequestGhostCells(vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  if (inInfo && outInfo &&
-      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1)
+  // Any output port (the decimation's record may be the one asked for).
+  for (int port = 0; inInfo && port < outputVector->GetNumberOfInformationObjects(); ++port)
   {
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 1);
+    vtkInformation* outInfo = outputVector->GetInformationObject(port);
+    if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) &&
+        outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1)
+    {
+      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 1);
+      return;
+    }
   }
 }
 

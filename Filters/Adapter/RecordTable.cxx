@@ -30,7 +30,16 @@ const char* const TrianglesField = "InputNumberOfTriangles";
 const char* const ChecksumField = "InputChecksum";
 const char* const ScheduleField = "CollapseSchedule";
 
-/// A 64-bit hash of `count` words (FNV-1a over 8-byte words, then a final mix).
+/// Every bit of a word spread over all 64 (splitmix64's finaliser).
+uint64_t Mix(uint64_t z)
+{
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+/// A 64-bit hash of `bytes` bytes, 8 at a time: each word mixed fully before it is combined,
+/// so that no change of the input (a sign flipped twice included) cancels out.
 uint64_t HashWords(const void* data, size_t bytes, uint64_t h)
 {
   const auto* p = static_cast<const unsigned char*>(data);
@@ -38,11 +47,11 @@ uint64_t HashWords(const void* data, size_t bytes, uint64_t h)
   {
     uint64_t word;
     std::memcpy(&word, p + i, 8);
-    h = (h ^ word) * 0x100000001b3ULL;
+    h = Mix(h ^ Mix(word + 0x9e3779b97f4a7c15ULL));
   }
   for (size_t i = bytes - bytes % 8; i < bytes; ++i)
   {
-    h = (h ^ p[i]) * 0x100000001b3ULL;
+    h = Mix(h ^ (p[i] + 0x9e3779b97f4a7c15ULL));
   }
   return h;
 }
@@ -130,11 +139,26 @@ bool ReadIds(vtkDataArray* column, std::vector<int32_t>& ids)
   return valid;
 }
 
-template <typename T>
-void ReadValues(vtkDataArray* column, std::vector<T>& values)
+/// Values from a column, each of which must pass `valid` (checked before any conversion);
+/// false if one does not.
+template <typename T, typename Valid>
+bool ReadValues(vtkDataArray* column, std::vector<T>& values, Valid&& valid)
 {
   values.resize(static_cast<size_t>(column->GetNumberOfTuples()));
-  ForEachValue(column, [&values](vtkIdType i, double v) { values[i] = static_cast<T>(v); });
+  bool all = true;
+  ForEachValue(column,
+               [&values, &valid, &all](vtkIdType i, double v)
+               {
+                 all = all && valid(v);
+                 values[i] = all ? static_cast<T>(v) : T(0);
+               });
+  return all;
+}
+
+/// A count: finite, whole, from 0 to 2^53 (exact as a double).
+bool IsCount(double v)
+{
+  return v >= 0.0 && v <= 9007199254740992.0 && v == std::floor(v);
 }
 
 /// The identity kept in the table's field data; false if it is not there.
@@ -149,8 +173,13 @@ bool ReadIdentity(vtkTable* table, MeshIdentity& identity)
   {
     return false;
   }
-  identity.Points = static_cast<vtkIdType>(points->GetComponent(0, 0));
-  identity.Triangles = static_cast<vtkIdType>(triangles->GetComponent(0, 0));
+  const double numPoints = points->GetComponent(0, 0), numTriangles = triangles->GetComponent(0, 0);
+  if (!IsCount(numPoints) || !IsCount(numTriangles))
+  {
+    return false;
+  }
+  identity.Points = static_cast<vtkIdType>(numPoints);
+  identity.Triangles = static_cast<vtkIdType>(numTriangles);
   identity.Checksum = checksum->GetValue(0);
   return true;
 }
@@ -176,9 +205,14 @@ bool ReadColumns(vtkTable* table, CollapseRecord& record, std::string& why)
     why = "its point ids are not all integers";
     return false;
   }
-  ReadValues(cost, record.Cost);
-  ReadValues(error, record.Error);
-  ReadValues(triangles, record.Triangles);
+  if (!ReadValues(cost, record.Cost, [](double v) { return std::isfinite(v); }) ||
+      !ReadValues(error, record.Error, [](double v) { return v >= 0.0 && std::isfinite(v); }) ||
+      !ReadValues(triangles, record.Triangles, IsCount))
+  {
+    why = "its costs, errors or triangle counts are not all finite (errors >= 0, counts whole "
+          "and >= 0)";
+    return false;
+  }
   return true;
 }
 } // namespace
@@ -191,9 +225,7 @@ MeshIdentity Identify(const InputMesh& mesh)
   uint64_t h = 0xcbf29ce484222325ULL;
   h = HashWords(mesh.Points.data(), mesh.Points.size() * sizeof(double), h);
   h = HashWords(mesh.Soup.Triangles.data(), mesh.Soup.Triangles.size() * sizeof(int32_t), h);
-  h ^= h >> 33; // a final mix, so that every input bit reaches every digit
-  h *= 0xff51afd7ed558ccdULL;
-  h ^= h >> 33;
+  h = Mix(h ^ static_cast<uint64_t>(identity.Points));
   std::ostringstream hex;
   hex << std::hex;
   hex.width(16);

@@ -292,6 +292,45 @@ CD_TEST_CASE(BatchedLevelsNestedAndValid)
   }
 }
 
+// The level filter keeps the mesh and the record between updates, and reads them again when
+// either changes: a record of another mesh given after a good one is refused, a good one again
+// accepted, and a record changed in place is read again.
+CD_TEST_CASE(LevelCacheFollowsInputs)
+{
+  auto mesh = DecoratedSphere(3);
+  const Recorded run = RecordRun(mesh, 1.0, vtkColorHalfEdgeDecimation::Greedy);
+  const Recorded other = RecordRun(DecoratedSphere(2), 1.0, vtkColorHalfEdgeDecimation::Greedy);
+  vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+  EventRecorder messages;
+  messages.Watch(lod);
+  lod->SetInputData(mesh);
+  lod->SetRecordData(run.Record);
+  lod->SetTargetReduction(0.5);
+  lod->Update();
+  const vtkIdType half = lod->GetOutput()->GetNumberOfCells();
+  CD_CHECK(half > 0 && messages.Errors == 0);
+  lod->SetRecordData(other.Record);
+  lod->Update();
+  CD_CHECK(messages.HasError("belongs to another mesh") &&
+           lod->GetOutput()->GetNumberOfCells() == 0);
+  messages.Clear();
+  lod->SetRecordData(run.Record);
+  lod->Update();
+  CD_CHECK(messages.Errors == 0 && lod->GetOutput()->GetNumberOfCells() == half);
+  // A column changed in place (a survivor out of range): read again, and refused.
+  auto column = vtkDataArray::SafeDownCast(run.Record->GetColumnByName("SurvivingPointId"));
+  column->SetComponent(0, 0, double(mesh->GetNumberOfPoints()));
+  column->Modified();
+  lod->Modified();
+  lod->Update();
+  CD_CHECK(messages.HasError("out of range"));
+  // An input with no points: an empty output.
+  vtkNew<vtkPolyData> empty;
+  lod->SetInputData(empty);
+  lod->Update();
+  CD_CHECK(lod->GetOutput()->GetNumberOfCells() == 0);
+}
+
 // Saved with vtkXMLTableWriter and read back, the record gives the same level.
 CD_TEST_CASE(RecordRoundTrip)
 {
@@ -362,6 +401,21 @@ CD_TEST_CASE(BadRecords)
               "an earlier one removed");
   expectError(tampered("NumberOfTriangles", 4, mesh->GetNumberOfCells()), nullptr,
               "do not decrease");
+  // Values no record holds: NaN and huge counts, NaN and negative errors.
+  expectError(tampered("NumberOfTriangles", 2, 1e300), nullptr, "not all finite");
+  expectError(tampered("Error", 1, std::nan("")), nullptr, "not all finite");
+  expectError(tampered("Error", 1, -1.0), nullptr, "not all finite");
+  expectError(tampered("Cost", 1, HUGE_VAL), nullptr, "not all finite");
+  // The mesh mirrored (every x negated: the sign bits flipped in pairs) is another mesh.
+  auto mirrored = Copy(mesh);
+  for (vtkIdType i = 0; i < mirrored->GetNumberOfPoints(); ++i)
+  {
+    double q[3];
+    mirrored->GetPoint(i, q);
+    q[0] = -q[0];
+    mirrored->GetPoints()->SetPoint(i, q);
+  }
+  expectError(run.Record, mirrored, "belongs to another mesh");
   // A file cut short: the reader fails, and so does the extraction.
   const std::string file = "ColorDecimationRecordTruncated.vtt";
   {
@@ -406,6 +460,14 @@ CD_TEST_CASE(RecordNotWithOptimalPlacement)
   CD_CHECK(run.HasWarning("No collapse record with OptimalPlacement"));
   CD_CHECK(run.Filter->GetCollapseRecord()->GetNumberOfRows() == 0);
   CD_CHECK(run.Output->GetNumberOfCells() > 0);
+  // The other metrics ignore OptimalPlacement: their record is made, quietly.
+  const RunResult other = RunFilter(mesh, 0.9,
+                                    [](vtkColorHalfEdgeDecimation* f)
+                                    {
+                                      f->OptimalPlacementOn();
+                                      f->GenerateCollapseRecordOn();
+                                    });
+  CD_CHECK(other.Warnings == 0 && other.Filter->GetCollapseRecord()->GetNumberOfRows() > 0);
 }
 
 // Attribute seams: a pair of collapses is one step of the record. Greedy levels of a seam
