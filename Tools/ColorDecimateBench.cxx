@@ -550,6 +550,14 @@ struct Measurement
   vtkSmartPointer<vtkPolyData> Mesh; // the mesh as given, or its cleaned copy (see below)
 };
 
+/// " (run r+1/n)" on the progress line when there are several repeats.
+std::string RunLabel(int r, const Options& options)
+{
+  return options.Repeat > 1
+    ? " (run " + std::to_string(r + 1) + "/" + std::to_string(options.Repeat) + ")"
+    : std::string();
+}
+
 /// One run's figures added to `m` (times, whose medians are kept, and the largest peak).
 void AddRun(const Single& single, long long peak, bool reset, Measurement& m)
 {
@@ -582,11 +590,8 @@ void MeasureOnce(int method, vtkPolyData* given, const Options& options, const s
   }
   for (;;)
   {
-    std::fprintf(
-      stderr, "[bench] %s: %s%s ...", name.c_str(), MethodName(method),
-      options.Repeat > 1
-        ? (" (run " + std::to_string(r + 1) + "/" + std::to_string(options.Repeat) + ")").c_str()
-        : "");
+    std::fprintf(stderr, "[bench] %s: %s%s ...", name.c_str(), MethodName(method),
+                 RunLabel(r, options).c_str());
     std::fflush(stderr);
     Single single;
     long long peak = -1;
@@ -739,12 +744,9 @@ LevelsOnce RunOneRunLevels(vtkPolyData* mesh)
 void MeasureOneRunLevels(vtkPolyData* mesh, const Options& options, const std::string& name, int r,
                          Measurement& run, Measurement* levels)
 {
-  std::fprintf(
-    stderr, "[bench] %s: levels of detail, one run with the record + %d extractions%s ...",
-    name.c_str(), NumberOfLevels,
-    options.Repeat > 1
-      ? (" (run " + std::to_string(r + 1) + "/" + std::to_string(options.Repeat) + ")").c_str()
-      : "");
+  std::fprintf(stderr,
+               "[bench] %s: levels of detail, one run with the record + %d extractions%s ...",
+               name.c_str(), NumberOfLevels, RunLabel(r, options).c_str());
   std::fflush(stderr);
   LevelsOnce once;
   long long peak = -1;
