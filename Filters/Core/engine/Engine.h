@@ -264,6 +264,24 @@ public:
    * and `place` (section 15).
    */
   bool IsMirrorLegal(int32_t v0, int32_t v1, bool& moves, Placement& place, Workspace& ws) const;
+  /// A seam pair (section 15): v0 -> v1 and its mirror twin(v0) -> MirrorTarget(v1).
+  struct Pair
+  {
+    int32_t From[2];
+    int32_t To[2];
+    bool Moves[2] = { false, false };
+    Placement Place[2];
+    double SquaredError[2] = { 0, 0 };
+  };
+  enum class PairVerdict
+  {
+    Legal,   ///< both collapses pass the rules (and MaximumError)
+    Illegal, ///< one fails the rules
+    Exceeds  ///< both pass the rules, one exceeds MaximumError
+  };
+  /// The verdict on the seam pair of a twinned v0 -> v1, filled into `pair`.
+  PairVerdict CheckPair(int32_t v0, int32_t v1, Pair& pair, Workspace& ws) const;
+
   /**
    * Whether v0 -> v1 (checked legal, with its `moves` and `place`) keeps within MaximumError;
    * its squared error, in the frame's units, into squaredError. Only with HasErrorBound().

@@ -257,6 +257,30 @@ bool Engine<Metric>::IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, Placem
 }
 
 template <typename Metric>
+typename Engine<Metric>::PairVerdict Engine<Metric>::CheckPair(int32_t v0, int32_t v1, Pair& pair,
+                                                               Workspace& ws) const
+{
+  pair.From[0] = v0;
+  pair.To[0] = v1;
+  pair.From[1] = this->Seams.GetTwin(v0);
+  pair.To[1] = this->Seams.MirrorTarget(v1);
+  if (!this->IsCollapseLegal(v0, v1, pair.Moves[0], pair.Place[0], ws) ||
+      !this->IsMirrorLegal(v0, v1, pair.Moves[1], pair.Place[1], ws))
+  {
+    return PairVerdict::Illegal;
+  }
+  for (int side = 0; side < 2 && this->HasErrorBound(); ++side)
+  {
+    if (!this->IsWithinErrorBound(pair.From[side], pair.To[side], pair.Moves[side],
+                                  pair.Place[side], pair.SquaredError[side]))
+    {
+      return PairVerdict::Exceeds;
+    }
+  }
+  return PairVerdict::Legal;
+}
+
+template <typename Metric>
 bool Engine<Metric>::IsMirrorLegal(int32_t v0, int32_t v1, bool& moves, Placement& place,
                                    Workspace& ws) const
 {

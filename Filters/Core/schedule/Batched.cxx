@@ -434,37 +434,33 @@ void BatchedSchedule<Metric>::TrySeamCollapse(int32_t v0, int32_t v1, int32_t pa
   {
     return; // the mirror's key is stale: a neighbour collapsed in this pass
   }
-  typename Metric::Placement place[2];
-  bool moves[2] = { false, false };
-  if (!this->E.IsCollapseLegal(v0, v1, moves[0], place[0], ws) ||
-      !this->E.IsMirrorLegal(v0, v1, moves[1], place[1], ws))
+  typename Engine<Metric>::Pair pair;
+  const auto verdict = this->E.CheckPair(v0, v1, pair, ws);
+  if (verdict == Engine<Metric>::PairVerdict::Illegal)
   {
     stamp[v0] = pass;
     lane.Rejected.push_back(v0);
     ++lane.Rejections;
     return;
   }
-  double squared[2] = { 0, 0 };
-  if (this->E.HasErrorBound() &&
-      (!this->E.IsWithinErrorBound(v0, v1, moves[0], place[0], squared[0]) ||
-       !this->E.IsWithinErrorBound(t0, m1, moves[1], place[1], squared[1])))
+  if (verdict == Engine<Metric>::PairVerdict::Exceeds)
   {
     lane.Exceeded = true; // skipped, and the run stops after this pass
     return;
   }
-  lane.LargestSquaredError = std::max(lane.LargestSquaredError, std::max(squared[0], squared[1]));
-  const int32_t from[2] = { v0, t0 }, to[2] = { v1, m1 };
+  lane.LargestSquaredError =
+    std::max(lane.LargestSquaredError, std::max(pair.SquaredError[0], pair.SquaredError[1]));
   for (int side = 0; side < 2; ++side)
   {
-    const int removed =
-      this->E.ApplyCollapse(from[side], to[side], moves[side], place[side], ws, true);
+    const int removed = this->E.ApplyCollapse(pair.From[side], pair.To[side], pair.Moves[side],
+                                              pair.Place[side], ws, true);
     ++lane.Collapses;
     if (this->E.GetOptions().RecordCollapses)
     {
-      lane.Record.push_back({ from[side], to[side], int16_t(removed), int16_t(side), lane.Block,
-                              this->Keys[v0], squared[side] });
+      lane.Record.push_back({ pair.From[side], pair.To[side], int16_t(removed), int16_t(side),
+                              lane.Block, this->Keys[v0], pair.SquaredError[side] });
     }
-    this->StampWithTwins(to[side], pass, ws, lane, true);
+    this->StampWithTwins(pair.To[side], pass, ws, lane, true);
     this->Blocks.FlagInterior(this->E.GetMesh(), ws.FormerNeighbors.data(),
                               ws.FormerNeighbors.size(), this->Blocks.AllFlags());
   }

@@ -125,40 +125,37 @@ private:
   bool StepSeam(int32_t v0, int32_t v1, DecimatorStatistics& stats)
   {
     auto& ws = this->E.GetWorkspace(0);
-    const int32_t t0 = this->E.GetSeams().GetTwin(v0), m1 = this->E.GetSeams().MirrorTarget(v1);
-    typename Metric::Placement place[2];
-    bool moves[2] = { false, false };
-    if (!this->E.IsCollapseLegal(v0, v1, moves[0], place[0], ws) ||
-        !this->E.IsMirrorLegal(v0, v1, moves[1], place[1], ws))
+    typename Engine<Metric>::Pair pair;
+    const auto verdict = this->E.CheckPair(v0, v1, pair, ws);
+    if (verdict == Engine<Metric>::PairVerdict::Illegal)
     {
       ++stats.RejectedPops;
       this->Requeue(v0, true);
       return false;
     }
-    double squared[2] = { 0, 0 };
-    if (this->E.HasErrorBound() &&
-        (!this->E.IsWithinErrorBound(v0, v1, moves[0], place[0], squared[0]) ||
-         !this->E.IsWithinErrorBound(t0, m1, moves[1], place[1], squared[1])))
+    if (verdict == Engine<Metric>::PairVerdict::Exceeds)
     {
       stats.ErrorBoundReached = true; // the run stops before this pair
       return false;
     }
     this->LargestSquaredError =
-      std::max(this->LargestSquaredError, std::max(squared[0], squared[1]));
+      std::max(this->LargestSquaredError, std::max(pair.SquaredError[0], pair.SquaredError[1]));
     const double cost = this->Heap.TopKey();
     this->Heap.Pop();
     this->Pending.clear();
-    const auto collect = [this](int32_t u) { this->Pending.push_back(u); };
-    const int removed = this->E.ApplyCollapse(v0, v1, moves[0], place[0], ws, true);
-    this->E.ForEachAffected(v1, ws.FormerNeighbors, collect);
-    const int mirrored = this->E.ApplyCollapse(t0, m1, moves[1], place[1], ws, true);
-    this->E.ForEachAffected(m1, ws.FormerNeighbors, collect);
-    stats.Collapses += 2;
-    if (this->E.GetOptions().RecordCollapses)
+    for (int side = 0; side < 2; ++side)
     {
-      this->E.Recorded.push_back({ v0, v1, int16_t(removed), 0, 0, cost, squared[0] });
-      this->E.Recorded.push_back({ t0, m1, int16_t(mirrored), 1, 0, cost, squared[1] });
+      const int removed = this->E.ApplyCollapse(pair.From[side], pair.To[side], pair.Moves[side],
+                                                pair.Place[side], ws, true);
+      this->E.ForEachAffected(pair.To[side], ws.FormerNeighbors,
+                              [this](int32_t u) { this->Pending.push_back(u); });
+      if (this->E.GetOptions().RecordCollapses)
+      {
+        this->E.Recorded.push_back({ pair.From[side], pair.To[side], int16_t(removed),
+                                     int16_t(side), 0, cost, pair.SquaredError[side] });
+      }
     }
+    stats.Collapses += 2;
     for (const int32_t u : this->Pending)
     {
       this->Update(u);
