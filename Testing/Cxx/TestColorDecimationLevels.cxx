@@ -42,21 +42,20 @@ struct Recorded
 Recorded RecordRun(vtkPolyData* input, double reduction, int schedule,
                    const Configure& configure = nullptr)
 {
-  vtkNew<vtkColorHalfEdgeDecimation> filter;
-  filter->SetInputData(input);
-  filter->SetTargetReduction(reduction);
-  filter->SetCollapseSchedule(schedule);
-  filter->GenerateCollapseRecordOn();
-  if (configure)
-  {
-    configure(filter);
-  }
-  filter->Update();
+  const RunResult result = Decimate(input, reduction,
+                                    [schedule, &configure](vtkColorHalfEdgeDecimation* f)
+                                    {
+                                      f->SetCollapseSchedule(schedule);
+                                      f->GenerateCollapseRecordOn();
+                                      if (configure)
+                                      {
+                                        configure(f);
+                                      }
+                                    });
   Recorded run;
-  run.Output = vtkSmartPointer<vtkPolyData>::New();
-  run.Output->DeepCopy(filter->GetOutput());
+  run.Output = result.Output;
   run.Record = vtkSmartPointer<vtkTable>::New();
-  run.Record->DeepCopy(filter->GetCollapseRecord());
+  run.Record->DeepCopy(result.Filter->GetCollapseRecord());
   return run;
 }
 
@@ -145,6 +144,17 @@ vtkSmartPointer<vtkPolyData> DecoratedSphere(int level)
   auto mesh = meshes::Icosphere(level, Pattern::SharpRegions);
   Decorate(mesh);
   return mesh;
+}
+
+/// The level filter on `input` and `record`: an error naming `part`, and an empty output.
+void ExpectRecordError(vtkPolyData* input, vtkTable* record, const std::string& part)
+{
+  Messages messages;
+  auto level = Extract(
+    input, record, [](auto* f) { f->SetTargetReduction(0.5); }, &messages);
+  CD_CHECK_MSG(messages.HasError(part),
+               "expected an error with '" << part << "': " << messages.ErrorText());
+  CD_CHECK(level->GetNumberOfPoints() == 0 && level->GetNumberOfCells() == 0);
 }
 
 /// A record's column as numbers.
@@ -362,15 +372,7 @@ CD_TEST_CASE(BadRecords)
   auto mesh = DecoratedSphere(3);
   const Recorded run = RecordRun(mesh, 1.0, vtkColorHalfEdgeDecimation::Greedy);
   const auto expectError = [&mesh](vtkTable* record, vtkPolyData* input, const std::string& part)
-  {
-    Messages messages;
-    auto level = Extract(
-      input ? input : mesh.GetPointer(), record, [](auto* f) { f->SetTargetReduction(0.5); },
-      &messages);
-    CD_CHECK_MSG(messages.HasError(part),
-                 "expected an error with '" << part << "': " << messages.ErrorText());
-    CD_CHECK(level->GetNumberOfPoints() == 0 && level->GetNumberOfCells() == 0);
-  };
+  { ExpectRecordError(input ? input : mesh.GetPointer(), record, part); };
   // Another mesh: one point moved (same counts), then another mesh altogether.
   auto moved = Copy(mesh);
   double p[3];
@@ -416,6 +418,13 @@ CD_TEST_CASE(BadRecords)
     mirrored->GetPoints()->SetPoint(i, q);
   }
   expectError(run.Record, mirrored, "belongs to another mesh");
+}
+
+// A record file cut short, and no record at all: an error each, and an empty output.
+CD_TEST_CASE(BadRecordFiles)
+{
+  auto mesh = DecoratedSphere(3);
+  const Recorded run = RecordRun(mesh, 1.0, vtkColorHalfEdgeDecimation::Greedy);
   // A file cut short: the reader fails, and so does the extraction.
   const std::string file = "ColorDecimationRecordTruncated.vtt";
   {
@@ -435,7 +444,7 @@ CD_TEST_CASE(BadRecords)
   reader->SetFileName(file.c_str());
   reader->Update();
   CD_CHECK(readerMessages.Errors > 0);
-  expectError(reader->GetOutput(), nullptr, "collapse record");
+  ExpectRecordError(mesh, reader->GetOutput(), "collapse record");
   // No record connected at all.
   vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
   EventRecorder lodMessages;
