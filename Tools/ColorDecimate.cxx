@@ -13,6 +13,7 @@
 #include "RecordIO.h"
 
 #include "ColorDecimationFidelity.h"
+#include "SmpBackend.h"
 #include "vtkColorHalfEdgeDecimation.h"
 #include "vtkColorHalfEdgeLevelOfDetail.h"
 
@@ -1064,6 +1065,7 @@ int Run(const Options& options)
 
 int main(int argc, char* argv[])
 {
+  UseAllCoresByDefault(); // vtkSMPTools on all cores unless asked otherwise
   // VTK's messages are caught and reported in one line (MessageCatcher); its logger would
   // print them to stderr a second time, with timestamps.
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);

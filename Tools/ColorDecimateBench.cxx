@@ -14,6 +14,7 @@
 #include "MeshOptimizerJS.h"
 #include "ProcessMemory.h"
 #include "QuadricPeer.h"
+#include "SmpBackend.h"
 
 #include "vtkColorHalfEdgeDecimation.h"
 #include "vtkColorHalfEdgeLevelOfDetail.h"
@@ -1576,6 +1577,7 @@ int RunBenchmark(const Options& options)
 
 int main(int argc, char* argv[])
 {
+  UseAllCoresByDefault(); // vtkSMPTools on all cores unless asked otherwise
   // VTK's messages are caught and reported in one line (MessageCatcher); its logger would
   // print them to stderr a second time, with timestamps.
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);

@@ -5,6 +5,7 @@
 #include "CommandLine.h"
 #include "JsonOutput.h"
 #include "MeshIO.h"
+#include "SmpBackend.h"
 
 #include "vtkColorHalfEdgeDecimation.h"
 #include "vtkNew.h"
@@ -265,6 +266,7 @@ int Run(const Settings& settings)
 
 int main(int argc, char* argv[])
 {
+  UseAllCoresByDefault(); // vtkSMPTools on all cores unless asked otherwise
   CLI::App app(
     "Renders both meshes offscreen from the six axis views with the same orthographic\n"
     "camera (fitted to ORIGINAL), unlit (colour alone) and lit (grey shape), and prints as\n"

@@ -19,6 +19,7 @@
 #include "JsonOutput.h"
 #include "MeshColors.h"
 #include "QuadricPeer.h"
+#include "SmpBackend.h"
 
 #include "vtkColorHalfEdgeDecimation.h"
 #include "vtkDataObject.h"
@@ -226,6 +227,7 @@ void AddOptions(CLI::App& app, Settings& settings)
 
 int main(int argc, char* argv[])
 {
+  UseAllCoresByDefault(); // vtkSMPTools on all cores unless asked otherwise
   CLI::App app("Decimates a flat square carrying the point field Temperature = cos(3 pi x) "
                "cos(3 pi y)\nwith vtkColorHalfEdgeDecimation and vtkQuadricDecimation, and "
                "prints, for each run, its\ntriangles, the field's two-sided RMS difference "

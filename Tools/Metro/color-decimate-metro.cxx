@@ -6,6 +6,7 @@
 
 #include "CommandLine.h"
 #include "MeshIO.h"
+#include "SmpBackend.h"
 
 #include <fstream>
 #include <iostream>
@@ -99,6 +100,7 @@ int Run(const Settings& settings)
 
 int main(int argc, char* argv[])
 {
+  UseAllCoresByDefault(); // vtkSMPTools on all cores unless asked otherwise
   CLI::App app(
     "Two-sided surface distance (Metro's method): N points sampled uniformly by area on each\n"
     "surface, the distance of each to the closest point of the other surface; mean, RMS and\n"

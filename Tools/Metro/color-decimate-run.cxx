@@ -26,6 +26,7 @@
 #endif
 #if COLORDECIMATION_WITH_MESHOPTIMIZER
 #include "MeshOptimizer.h"
+#include "SmpBackend.h"
 #endif
 
 #include <array>
@@ -490,6 +491,7 @@ int Run(const Settings& settings)
 
 int main(int argc, char* argv[])
 {
+  UseAllCoresByDefault(); // vtkSMPTools on all cores unless asked otherwise
   CLI::App app("Simplifies INPUT with one method and writes OUTPUT (.vtp keeps every array; "
                ".ply, .vtk),\nand prints its time, peak memory and metric bytes per vertex as "
                "JSON.",
