@@ -432,6 +432,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   written.OriginalIdsName =
     this->GenerateOriginalPointIds ? this->OriginalPointIdsArrayName : nullptr;
   written.ConsistentOrientation = this->ConsistentOrientation != 0;
+  written.Threads = threads;
   const vtkIdType numOutTriangles =
     colordecimation::adapter::WriteOutput(this, input, mesh, decimator, written, output);
   this->ActualReduction = 1.0 - static_cast<double>(numOutTriangles) / numTriangles;

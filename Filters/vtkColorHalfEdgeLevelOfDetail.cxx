@@ -188,7 +188,8 @@ int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(reques
   // 3. The output, as the decimation writes it.
   const vtkIdType triangles = colordecimation::adapter::WriteLevel(
     this, input, cache.Mesh, cache.Where,
-    this->GenerateOriginalPointIds ? this->OriginalPointIdsArrayName : nullptr, output);
+    this->GenerateOriginalPointIds ? this->OriginalPointIdsArrayName : nullptr,
+    std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads()), output);
   this->NumberOfCollapses = static_cast<vtkIdType>(count);
   this->NumberOfRecordedCollapses = static_cast<vtkIdType>(collapses.Size());
   this->ActualReduction = collapses.InputTriangles > 0

@@ -2,6 +2,8 @@
 
 #include "Adapter/InputMesh.h"
 #include "Core/Decimator.h"
+#include "Core/util/Buffer.h"
+#include "Core/util/Parallel.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -17,6 +19,8 @@
 #include "vtkType.h"
 
 #include <algorithm>
+#include <atomic>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -67,38 +71,108 @@ struct LevelFaces
   }
 };
 
+/// Where each of the ranges of ParallelFor(count, threads) starts in the compacted output
+/// (threads + 1 values: the last is the total), given each range's count.
+std::vector<vtkIdType> RangeStarts(const std::vector<vtkIdType>& counts)
+{
+  std::vector<vtkIdType> starts(counts.size() + 1, 0);
+  for (size_t t = 0; t < counts.size(); ++t)
+  {
+    starts[t + 1] = starts[t] + counts[t];
+  }
+  return starts;
+}
+
 /// The points the surviving triangles use: input id -> output id (-1 if unused), and the
 /// lists of both for copying the point data.
 struct UsedPoints
 {
-  std::vector<vtkIdType> NewId;
-  vtkNew<vtkIdList> Source; ///< output point i is input point Source[i]
-  vtkNew<vtkIdList> Target; ///< 0, 1, 2, ...
-  vtkIdType Triangles = 0;  ///< the surviving triangles
+  Buffer<vtkIdType> NewId;
+  vtkNew<vtkIdList> Source;               ///< output point i is input point Source[i]
+  vtkNew<vtkIdList> Target;               ///< 0, 1, 2, ...
+  int FaceThreads = 1;                    ///< the ranges of faces, for WriteTriangles
+  std::vector<vtkIdType> TrianglesBefore; ///< the surviving triangles before each range
+  vtkIdType Triangles = 0;                ///< the surviving triangles
 };
 
+/// Each range of faces counts its surviving triangles and marks their points (a point marked
+/// from several ranges gets the same value each time: relaxed atomic stores).
 template <typename Faces>
-void FindUsedPoints(const Faces& faces, vtkIdType numPoints, UsedPoints& used)
+std::unique_ptr<std::atomic<uint8_t>[]> MarkUsedPoints(const Faces& faces, vtkIdType numPoints,
+                                                       int threads, UsedPoints& used)
 {
-  used.NewId.assign(numPoints, -1);
-  for (int32_t f = 0; f < faces.Count(); ++f)
-  {
-    int32_t tri[3];
-    if (faces.Get(f, tri))
-    {
-      ++used.Triangles;
-      used.NewId[tri[0]] = used.NewId[tri[1]] = used.NewId[tri[2]] = 0;
-    }
-  }
-  for (vtkIdType i = 0; i < numPoints; ++i)
-  {
-    if (used.NewId[i] == 0)
-    {
-      used.NewId[i] = used.Source->GetNumberOfIds();
-      used.Target->InsertNextId(used.NewId[i]);
-      used.Source->InsertNextId(i);
-    }
-  }
+  std::unique_ptr<std::atomic<uint8_t>[]> marks(new std::atomic<uint8_t>[numPoints]());
+  std::atomic<uint8_t>* mark = marks.get();
+  used.FaceThreads = ThreadsFor(static_cast<size_t>(faces.Count()), threads, 65536);
+  std::vector<vtkIdType> counts(static_cast<size_t>(used.FaceThreads), 0);
+  vtkIdType* count = counts.data();
+  ParallelFor(static_cast<size_t>(faces.Count()), used.FaceThreads,
+              [faces, mark, count](size_t begin, size_t end, int t)
+              {
+                vtkIdType alive = 0;
+                for (size_t f = begin; f < end; ++f)
+                {
+                  int32_t tri[3];
+                  if (faces.Get(static_cast<int32_t>(f), tri))
+                  {
+                    ++alive;
+                    for (const int32_t v : tri)
+                    {
+                      mark[v].store(1, std::memory_order_relaxed);
+                    }
+                  }
+                }
+                count[t] = alive;
+              });
+  used.TrianglesBefore = RangeStarts(counts);
+  used.Triangles = used.TrianglesBefore.back();
+  return marks;
+}
+
+/// The marked points numbered in input order, on `threads` threads.
+template <typename Faces>
+void FindUsedPoints(const Faces& faces, vtkIdType numPoints, int threads, UsedPoints& used)
+{
+  const std::unique_ptr<std::atomic<uint8_t>[]> marks =
+    MarkUsedPoints(faces, numPoints, threads, used);
+  const std::atomic<uint8_t>* mark = marks.get();
+  const int pointThreads = ThreadsFor(static_cast<size_t>(numPoints), threads, 65536);
+  std::vector<vtkIdType> counts(static_cast<size_t>(pointThreads), 0);
+  vtkIdType* count = counts.data();
+  ParallelFor(static_cast<size_t>(numPoints), pointThreads,
+              [mark, count](size_t begin, size_t end, int t)
+              {
+                vtkIdType marked = 0;
+                for (size_t i = begin; i < end; ++i)
+                {
+                  marked += mark[i].load(std::memory_order_relaxed);
+                }
+                count[t] = marked;
+              });
+  const std::vector<vtkIdType> starts = RangeStarts(counts);
+  used.NewId.resize(static_cast<size_t>(numPoints));
+  used.Source->SetNumberOfIds(starts.back());
+  used.Target->SetNumberOfIds(starts.back());
+  vtkIdType* newId = used.NewId.data();
+  vtkIdType* source = used.Source->GetPointer(0);
+  vtkIdType* target = used.Target->GetPointer(0);
+  const vtkIdType* start = starts.data();
+  ParallelFor(static_cast<size_t>(numPoints), pointThreads,
+              [mark, start, newId, source, target](size_t begin, size_t end, int t)
+              {
+                vtkIdType next = start[t];
+                for (size_t i = begin; i < end; ++i)
+                {
+                  newId[i] = -1;
+                  if (mark[i].load(std::memory_order_relaxed))
+                  {
+                    newId[i] = next;
+                    source[next] = static_cast<vtkIdType>(i);
+                    target[next] = next;
+                    ++next;
+                  }
+                }
+              });
 }
 
 /// The used points, copied from the input (in its own type), moved ones (with a decimator) at
@@ -128,30 +202,49 @@ void WritePoints(vtkPolyData* input, const Decimator* decimator, const UsedPoint
   output->SetPoints(outPoints);
 }
 
-/// The surviving triangles, in input order, and the input cell of each (sourceCells).
+/// The surviving triangles, in input order, and the input cell of each (sourceCells, when not
+/// null): each range of faces of FindUsedPoints writes its own, where its triangles start.
 template <typename Faces>
 void WriteTriangles(const Faces& faces, const TriangleSoup& soup, const UsedPoints& used,
                     vtkIdList* sourceCells, vtkIdList* targetCells, vtkPolyData* output)
 {
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfValues(3 * used.Triangles);
-  sourceCells->SetNumberOfIds(used.Triangles);
-  targetCells->SetNumberOfIds(used.Triangles);
-  vtkIdType t = 0;
-  for (int32_t f = 0; f < faces.Count(); ++f)
+  vtkIdType* points = connectivity->GetPointer(0);
+  vtkIdType* source = nullptr;
+  vtkIdType* target = nullptr;
+  if (sourceCells)
   {
-    int32_t tri[3];
-    if (faces.Get(f, tri))
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        connectivity->SetValue(3 * t + k, used.NewId[tri[k]]);
-      }
-      sourceCells->SetId(t, soup.SourceCell[f]);
-      targetCells->SetId(t, t);
-      ++t;
-    }
+    sourceCells->SetNumberOfIds(used.Triangles);
+    targetCells->SetNumberOfIds(used.Triangles);
+    source = sourceCells->GetPointer(0);
+    target = targetCells->GetPointer(0);
   }
+  const vtkIdType* newId = used.NewId.data();
+  const vtkIdType* before = used.TrianglesBefore.data();
+  const vtkIdType* cell = soup.SourceCell.data();
+  ParallelFor(static_cast<size_t>(faces.Count()), used.FaceThreads,
+              [faces, points, source, target, newId, before, cell](size_t begin, size_t end, int t)
+              {
+                vtkIdType next = before[t];
+                for (size_t f = begin; f < end; ++f)
+                {
+                  int32_t tri[3];
+                  if (faces.Get(static_cast<int32_t>(f), tri))
+                  {
+                    for (int k = 0; k < 3; ++k)
+                    {
+                      points[3 * next + k] = newId[tri[k]];
+                    }
+                    if (source)
+                    {
+                      source[next] = cell[f];
+                      target[next] = next;
+                    }
+                    ++next;
+                  }
+                }
+              });
   vtkNew<vtkCellArray> polys;
   polys->SetData(3, connectivity);
   output->SetPolys(polys);
@@ -240,7 +333,7 @@ vtkDataArray* UpstreamIds(vtkObject* self, vtkPolyData* input, const char* name)
 /// Each output point's id in the input, as a vtkIdTypeArray named `name`, composed with the
 /// input's ids of that name when it has them (see UpstreamIds).
 void WriteOriginalIds(vtkObject* self, vtkPolyData* input, const char* name, const UsedPoints& used,
-                      vtkPointData* outPD)
+                      int threads, vtkPointData* outPD)
 {
   vtkDataArray* upstream = UpstreamIds(self, input, name);
   vtkIdTypeArray* upstreamIds = vtkIdTypeArray::SafeDownCast(upstream);
@@ -249,13 +342,27 @@ void WriteOriginalIds(vtkObject* self, vtkPolyData* input, const char* name, con
   vtkNew<vtkIdTypeArray> original;
   original->SetName(name);
   original->SetNumberOfValues(numOutPoints);
-  for (vtkIdType i = 0; i < numOutPoints; ++i)
+  vtkIdType* out = original->GetPointer(0);
+  const vtkIdType* source = used.Source->GetPointer(0);
+  if (upstream && !upstreamIds)
   {
-    const vtkIdType source = used.Source->GetId(i);
-    original->SetValue(i,
-                       upstreamIds  ? upstreamIds->GetValue(source)
-                         : upstream ? static_cast<vtkIdType>(upstream->GetComponent(source, 0))
-                                    : source);
+    for (vtkIdType i = 0; i < numOutPoints; ++i) // any array type: one thread
+    {
+      out[i] = static_cast<vtkIdType>(upstream->GetComponent(source[i], 0));
+    }
+  }
+  else
+  {
+    const vtkIdType* ids = upstreamIds ? upstreamIds->GetPointer(0) : nullptr;
+    ParallelFor(static_cast<size_t>(numOutPoints),
+                ThreadsFor(static_cast<size_t>(numOutPoints), threads, 65536),
+                [out, source, ids](size_t begin, size_t end, int)
+                {
+                  for (size_t i = begin; i < end; ++i)
+                  {
+                    out[i] = ids ? ids[source[i]] : source[i];
+                  }
+                });
   }
   outPD->AddArray(original);
 }
@@ -281,26 +388,12 @@ void KeepConsistentArrays(vtkDataSetAttributes* data, vtkIdType tuples,
   }
 }
 
-/**
- * The output of `faces` (DecimatedFaces or LevelFaces): points, triangles, point data (moved
- * points with their new colour, with a decimator), the original ids, cell data.
- */
-template <typename Faces>
-vtkIdType Write(vtkObject* self, vtkPolyData* input, const InputMesh& mesh, const Faces& faces,
-                const Decimator* decimator, const char* originalIdsName, vtkPolyData* output)
+/// The input's point and cell data that can be carried (arrays whose tuple count does not
+/// match their points or cells cannot: a warning names them).
+void KeepCarriedArrays(vtkObject* self, vtkPolyData* input, vtkPointData* inPD, vtkCellData* inCD)
 {
-  const vtkIdType numPoints = input->GetNumberOfPoints();
-  UsedPoints used;
-  FindUsedPoints(faces, numPoints, used);
-  WritePoints(input, decimator, used, output);
-  vtkNew<vtkIdList> sourceCells;
-  vtkNew<vtkIdList> targetCells;
-  WriteTriangles(faces, mesh.Soup, used, sourceCells, targetCells, output);
-
-  // Arrays whose tuple count does not match their points or cells cannot be carried.
-  vtkNew<vtkPointData> inPD;
-  vtkNew<vtkCellData> inCD;
   std::string droppedPointArrays, droppedCellArrays;
+  const vtkIdType numPoints = input->GetNumberOfPoints();
   KeepConsistentArrays(input->GetPointData(), numPoints, inPD, droppedPointArrays);
   KeepConsistentArrays(input->GetCellData(), input->GetNumberOfCells(), inCD, droppedCellArrays);
   if (!droppedPointArrays.empty() || !droppedCellArrays.empty())
@@ -311,6 +404,29 @@ vtkIdType Write(vtkObject* self, vtkPolyData* input, const InputMesh& mesh, cons
             << (droppedCellArrays.empty() ? "" : " cell data ") << droppedCellArrays << " ("
             << numPoints << " points, " << input->GetNumberOfCells() << " cells).");
   }
+}
+
+/**
+ * The output of `faces` (DecimatedFaces or LevelFaces): points, triangles, point data (moved
+ * points with their new colour, with a decimator), the original ids, cell data.
+ */
+template <typename Faces>
+vtkIdType Write(vtkObject* self, vtkPolyData* input, const InputMesh& mesh, const Faces& faces,
+                const Decimator* decimator, const char* originalIdsName, int threads,
+                vtkPolyData* output)
+{
+  vtkNew<vtkPointData> inPD;
+  vtkNew<vtkCellData> inCD;
+  KeepCarriedArrays(self, input, inPD, inCD);
+  UsedPoints used;
+  FindUsedPoints(faces, input->GetNumberOfPoints(), threads, used);
+  WritePoints(input, decimator, used, output);
+  // Each output triangle's input cell, when there is cell data to copy.
+  const bool cellData = inCD->GetNumberOfArrays() > 0;
+  vtkNew<vtkIdList> sourceCells;
+  vtkNew<vtkIdList> targetCells;
+  WriteTriangles(faces, mesh.Soup, used, cellData ? sourceCells.Get() : nullptr,
+                 cellData ? targetCells.Get() : nullptr, output);
   vtkPointData* outPD = output->GetPointData();
   outPD->CopyAllocate(inPD, used.Source->GetNumberOfIds());
   outPD->CopyData(inPD, used.Source, used.Target);
@@ -320,11 +436,14 @@ vtkIdType Write(vtkObject* self, vtkPolyData* input, const InputMesh& mesh, cons
   }
   if (originalIdsName && *originalIdsName)
   {
-    WriteOriginalIds(self, input, originalIdsName, used, outPD);
+    WriteOriginalIds(self, input, originalIdsName, used, threads, outPD);
   }
-  vtkCellData* outCD = output->GetCellData();
-  outCD->CopyAllocate(inCD, used.Triangles);
-  outCD->CopyData(inCD, sourceCells, targetCells);
+  if (cellData)
+  {
+    vtkCellData* outCD = output->GetCellData();
+    outCD->CopyAllocate(inCD, used.Triangles);
+    outCD->CopyData(inCD, sourceCells, targetCells);
+  }
   return used.Triangles;
 }
 
@@ -334,16 +453,17 @@ vtkIdType WriteOutput(vtkObject* self, vtkPolyData* input, const InputMesh& mesh
                       const Decimator& decimator, const OutputOptions& options, vtkPolyData* output)
 {
   const DecimatedFaces faces{ decimator, options.ConsistentOrientation };
-  return Write(self, input, mesh, faces, &decimator, options.OriginalIdsName, output);
+  return Write(self, input, mesh, faces, &decimator, options.OriginalIdsName, options.Threads,
+               output);
 }
 
 vtkIdType WriteLevel(vtkObject* self, vtkPolyData* input, const InputMesh& mesh,
-                     const std::vector<int32_t>& where, const char* originalIdsName,
+                     const std::vector<int32_t>& where, const char* originalIdsName, int threads,
                      vtkPolyData* output)
 {
   const LevelFaces faces{ mesh.Soup.Triangles.data(),
                           static_cast<int32_t>(mesh.Soup.SourceCell.size()), where.data() };
-  return Write(self, input, mesh, faces, nullptr, originalIdsName, output);
+  return Write(self, input, mesh, faces, nullptr, originalIdsName, threads, output);
 }
 
 } // namespace adapter

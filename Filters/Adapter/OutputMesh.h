@@ -29,6 +29,7 @@ struct OutputOptions
   const char* OriginalIdsName = nullptr; ///< the array of original point ids (none if empty)
   /// Triangles wound as the decimation wound their piece (otherwise as in the input).
   bool ConsistentOrientation = false;
+  int Threads = 1; ///< threads of the parallel loops (the output does not depend on them)
 };
 
 /**
@@ -46,10 +47,11 @@ vtkIdType WriteOutput(vtkObject* self, vtkPolyData* input, const InputMesh& mesh
  * Fill `output` with a level of detail of the input: each triangle of the input on its points'
  * survivors (`where`, from a collapse record), kept if they are three different points, wound
  * as in the input, with the point data of those points, the original point ids (when
- * originalIdsName is given) and the cell data. Returns the number of output triangles.
+ * originalIdsName is given) and the cell data, on `threads` threads. Returns the number of
+ * output triangles.
  */
 vtkIdType WriteLevel(vtkObject* self, vtkPolyData* input, const InputMesh& mesh,
-                     const std::vector<int32_t>& where, const char* originalIdsName,
+                     const std::vector<int32_t>& where, const char* originalIdsName, int threads,
                      vtkPolyData* output);
 
 } // namespace adapter
