@@ -10,6 +10,7 @@
 #include "vtkStringArray.h"
 #include "vtkTable.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <sstream>
@@ -62,10 +63,7 @@ void AddColumn(vtkTable* table, const char* name, const std::vector<T>& values)
   vtkNew<Array> column;
   column->SetName(name);
   column->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
-  for (size_t i = 0; i < values.size(); ++i)
-  {
-    column->SetValue(static_cast<vtkIdType>(i), values[i]);
-  }
+  std::copy(values.begin(), values.end(), column->GetPointer(0));
   table->AddColumn(column);
 }
 

@@ -9,30 +9,24 @@
 namespace colordecimation
 {
 
-void ErrorBound::Initialize(const HalfEdgeMesh& mesh, const float* positions, int stride,
-                            double bound, int threads)
+namespace
 {
-  this->Bound = bound > 0.0 ? bound : 0.0;
-  this->Planes = Buffer<PlaneSum>();
-  if (!this->IsEnabled())
-  {
-    return;
-  }
-  // Zeroed on `threads` threads, which also fault the pages in.
-  const size_t n = static_cast<size_t>(mesh.GetNumberOfVertices());
-  this->Planes.resize(n);
-  PlaneSum* planes = this->Planes.data();
-  ParallelFor(n, threads,
-              [planes](size_t begin, size_t end, int)
-              { std::fill(planes + begin, planes + end, PlaneSum{}); });
+/// Adds each live face's area-weighted plane quadric to those of its vertices in [first, last),
+/// face by face in index order (so each vertex sums its faces in the same order, whatever the
+/// ranges).
+template <typename PlaneSum>
+void AddFacePlanes(const HalfEdgeMesh& mesh, const float* positions, int stride, int32_t first,
+                   int32_t last, PlaneSum* planes)
+{
   for (int32_t f = 0; f < mesh.GetNumberOfFaceSlots(); ++f)
   {
-    if (!mesh.IsFaceAlive(f))
+    int32_t ids[3];
+    mesh.GetFace(f, ids);
+    const auto mine = [first, last](int32_t v) { return v >= first && v < last; };
+    if (!mesh.IsFaceAlive(f) || !(mine(ids[0]) || mine(ids[1]) || mine(ids[2])))
     {
       continue;
     }
-    int32_t ids[3];
-    mesh.GetFace(f, ids);
     double p[3][3];
     for (int k = 0; k < 3; ++k)
     {
@@ -55,7 +49,11 @@ void ErrorBound::Initialize(const HalfEdgeMesh& mesh, const float* positions, in
     const double d = -(n[0] * p[0][0] + n[1] * p[0][1] + n[2] * p[0][2]);
     for (const int32_t v : ids)
     {
-      PlaneSum& q = this->Planes[v];
+      if (!mine(v))
+      {
+        continue;
+      }
+      PlaneSum& q = planes[v];
       q.A[0] += area * n[0] * n[0];
       q.A[1] += area * n[0] * n[1];
       q.A[2] += area * n[0] * n[2];
@@ -70,6 +68,31 @@ void ErrorBound::Initialize(const HalfEdgeMesh& mesh, const float* positions, in
       q.Area += area;
     }
   }
+}
+} // namespace
+
+void ErrorBound::Initialize(const HalfEdgeMesh& mesh, const float* positions, int stride,
+                            double bound, int threads)
+{
+  this->Bound = bound > 0.0 ? bound : 0.0;
+  this->Planes = Buffer<PlaneSum>();
+  if (!this->IsEnabled())
+  {
+    return;
+  }
+  // Each thread zeroes, then sums, the planes of its own range of vertices: it reads every
+  // face but computes only those that touch its range (the renumbered mesh keeps them few).
+  const size_t n = static_cast<size_t>(mesh.GetNumberOfVertices());
+  this->Planes.resize(n);
+  PlaneSum* planes = this->Planes.data();
+  const HalfEdgeMesh* faces = &mesh;
+  ParallelFor(n, threads,
+              [planes, faces, positions, stride](size_t begin, size_t end, int)
+              {
+                std::fill(planes + begin, planes + end, PlaneSum{});
+                AddFacePlanes(*faces, positions, stride, static_cast<int32_t>(begin),
+                              static_cast<int32_t>(end), planes);
+              });
 }
 
 double ErrorBound::SquaredError(int32_t v0, int32_t v1, const double x[3]) const
