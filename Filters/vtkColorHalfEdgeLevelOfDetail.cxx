@@ -14,16 +14,20 @@
 #include "Core/lod/CollapseRecord.h"
 
 #include "vtkAbstractArray.h"
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkTable.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -32,6 +36,9 @@ vtkStandardNewMacro(vtkColorHalfEdgeLevelOfDetail);
 
 namespace
 {
+/// The progress text while the mesh and the record are read (not when they are kept).
+const char* const ReadingText = "Reading the mesh and checking the collapse record";
+
 /// The latest change of a record: a vtkTable's own MTime does not follow its columns.
 vtkMTimeType RecordTime(vtkDataObject* record)
 {
@@ -46,6 +53,40 @@ vtkMTimeType RecordTime(vtkDataObject* record)
   }
   return time;
 }
+
+/// What the cached mesh was read from: the input's points and cell arrays (connectivity and
+/// offsets), each with its MTime. The input's own MTime is no key: ParaView shallow-copies the
+/// data into it at every update, which moves its MTime while these stay the same objects.
+struct GeometryKey
+{
+  std::array<const vtkObject*, 9> Parts{};
+  std::array<vtkMTimeType, 9> Times{};
+
+  explicit GeometryKey(vtkPolyData* input = nullptr)
+  {
+    if (!input)
+    {
+      return;
+    }
+    this->Set(0, input->GetPoints());
+    vtkCellArray* cells[4] = { input->GetVerts(), input->GetLines(), input->GetPolys(),
+                               input->GetStrips() };
+    for (int k = 0; k < 4; ++k)
+    {
+      this->Set(1 + 2 * k, cells[k] ? cells[k]->GetConnectivityArray() : nullptr);
+      this->Set(2 + 2 * k, cells[k] ? cells[k]->GetOffsetsArray() : nullptr);
+    }
+  }
+  void Set(int k, vtkObject* part)
+  {
+    this->Parts[k] = part;
+    this->Times[k] = part ? part->GetMTime() : 0;
+  }
+  bool operator==(const GeometryKey& other) const
+  {
+    return this->Parts == other.Parts && this->Times == other.Times;
+  }
+};
 } // namespace
 
 /// The mesh and the record of the last execution, kept while neither changes.
@@ -54,9 +95,9 @@ struct vtkColorHalfEdgeLevelOfDetail::Cache
   colordecimation::adapter::InputMesh Mesh;
   colordecimation::CollapseRecord Record;
   std::vector<int32_t> Where; ///< each input point's point in the level
-  vtkPolyData* Input = nullptr;
+  GeometryKey Input;
   vtkDataObject* RecordData = nullptr;
-  vtkMTimeType InputTime = 0, RecordTime = 0;
+  vtkMTimeType RecordTime = 0;
   bool Valid = false;
 };
 
@@ -111,12 +152,14 @@ int vtkColorHalfEdgeLevelOfDetail::FillInputPortInformation(int port, vtkInforma
 bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObject* record)
 {
   Cache& cache = *this->Cached;
-  if (cache.Valid && cache.Input == input && cache.RecordData == record &&
-      cache.InputTime == input->GetMTime() && cache.RecordTime == RecordTime(record))
+  if (cache.Valid && cache.Input == GeometryKey(input) && cache.RecordData == record &&
+      cache.RecordTime == RecordTime(record))
   {
     return true;
   }
   cache = Cache();
+  this->SetProgressText(ReadingText);
+  this->UpdateProgress(0.0);
   const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
   if (input->GetNumberOfPoints() == 0 || input->GetNumberOfCells() == 0)
   {
@@ -135,9 +178,8 @@ bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObjec
     vtkErrorMacro(<< "The collapse record cannot be used: " << why << ". Output is empty.");
     return false;
   }
-  cache.Input = input;
+  cache.Input = GeometryKey(input);
   cache.RecordData = record;
-  cache.InputTime = input->GetMTime();
   cache.RecordTime = RecordTime(record);
   cache.Valid = true;
   return true;
@@ -171,7 +213,9 @@ int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(reques
     vtkErrorMacro(<< "No collapse record on input port 1 (SetRecordConnection); output is empty.");
     return 1;
   }
-  if (!this->UpdateCache(input, record))
+  const bool cached = this->UpdateCache(input, record);
+  this->SetProgressText(nullptr);
+  if (!cached)
   {
     return 1;
   }

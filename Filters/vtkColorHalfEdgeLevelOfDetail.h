@@ -37,8 +37,10 @@
  * decreasing); a record that fails is an error and the output is empty. Distributed data
  * works piece by piece: each piece is extracted with the record made of that piece (this
  * filter asks for the ghost level the decimation asks for, so the pieces are the same). The mesh
- * and the record are read once and kept while neither changes, so that moving TargetReduction (a
- * ParaView slider) only redoes the linear extraction.
+ * and the record are read once and kept while neither changes (the input's points and cell
+ * arrays, and the record, are the same objects, not modified), so that moving TargetReduction (a
+ * ParaView slider) only redoes the linear extraction; the progress text "Reading the mesh and
+ * checking the collapse record" says when they are read.
  *
  * @sa
  * vtkColorHalfEdgeDecimation

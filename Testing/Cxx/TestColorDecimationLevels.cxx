@@ -8,7 +8,9 @@
 #include "vtkColorHalfEdgeDecimation.h"
 #include "vtkColorHalfEdgeLevelOfDetail.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
@@ -339,6 +341,69 @@ CD_TEST_CASE(LevelCacheFollowsInputs)
   lod->SetInputData(empty);
   lod->Update();
   CD_CHECK(lod->GetOutput()->GetNumberOfCells() == 0);
+}
+
+// The mesh is read again only when its points or cells change: not when the input is a new
+// shallow copy of the same data (as ParaView hands it at each update), nor when only a point
+// array changes (the level then carries the new values); the progress text says when.
+CD_TEST_CASE(LevelCacheKeepsShallowCopies)
+{
+  auto mesh = DecoratedSphere(3);
+  const Recorded run = RecordRun(mesh, 1.0, vtkColorHalfEdgeDecimation::Greedy);
+  vtkNew<vtkPolyData> input;
+  input->ShallowCopy(mesh);
+  vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+  int reads = 0;
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetClientData(&reads);
+  progress->SetCallback(
+    [](vtkObject* caller, unsigned long, void* reads, void*)
+    {
+      const char* text = static_cast<vtkAlgorithm*>(caller)->GetProgressText();
+      *static_cast<int*>(reads) += text && std::string(text).find("Reading the mesh") == 0;
+    });
+  lod->AddObserver(vtkCommand::ProgressEvent, progress);
+  lod->SetInputData(input);
+  lod->SetRecordData(run.Record);
+  lod->SetTargetReduction(0.5);
+  lod->Update();
+  CD_CHECK(reads == 1 && lod->GetOutput()->GetNumberOfCells() > 0);
+  const vtkMTimeType before = input->GetMTime();
+  input->ShallowCopy(mesh);
+  CD_CHECK(input->GetMTime() > before);
+  lod->SetTargetReduction(0.8);
+  lod->Update();
+  CD_CHECK(reads == 1);
+  std::string why;
+  CD_CHECK_MSG(
+    SameMesh(lod->GetOutput(),
+             Extract(mesh, run.Record,
+                     [](vtkColorHalfEdgeLevelOfDetail* l) { l->SetTargetReduction(0.8); }),
+             why),
+    why);
+  // A point array changed in place: kept, and the level carries the new value.
+  vtkDataArray* colors = input->GetPointData()->GetScalars();
+  const vtkIdType kept =
+    vtkIdTypeArray::SafeDownCast(lod->GetOutput()->GetPointData()->GetArray("vtkOriginalPointIds"))
+      ->GetValue(0);
+  colors->SetComponent(kept, 0, 255 - colors->GetComponent(kept, 0));
+  colors->Modified();
+  lod->Update();
+  CD_CHECK(reads == 1 &&
+           lod->GetOutput()->GetPointData()->GetScalars()->GetComponent(0, 0) ==
+             colors->GetComponent(kept, 0));
+  // A point moved in place: read again, and the record no longer belongs to the mesh.
+  EventRecorder messages;
+  messages.Watch(lod);
+  double p[3];
+  input->GetPoints()->GetPoint(0, p);
+  p[0] += 0.5;
+  input->GetPoints()->SetPoint(0, p);
+  input->GetPoints()->Modified();
+  lod->Update();
+  CD_CHECK(reads == 2 && messages.HasError("belongs to another mesh"));
+  colors->SetComponent(kept, 0, 255 - colors->GetComponent(kept, 0)); // mesh shares it
+  colors->Modified();
 }
 
 // Saved with vtkXMLTableWriter and read back, the record gives the same level.
