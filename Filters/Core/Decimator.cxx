@@ -137,9 +137,9 @@ const Buffer<VertexMetric>& Decimator::GetMetrics() const
   return geometry ? geometry->States : none;
 }
 
-const std::vector<ColorQuadric>& Decimator::GetColorQuadrics() const
+const LargeVector<ColorQuadric>& Decimator::GetColorQuadrics() const
 {
-  static const std::vector<ColorQuadric> none;
+  static const LargeVector<ColorQuadric> none;
   const auto* metric = MetricOf<ColorQuadricMetric>(this->TheEngine.get());
   return metric ? metric->States : none;
 }

@@ -56,7 +56,7 @@ public:
   /// KeepVertexState).
   const Buffer<VertexMetric>& GetMetrics() const;
   /// The per-vertex state of ColorQuadric (each centred at its vertex's point of R^6).
-  const std::vector<ColorQuadric>& GetColorQuadrics() const;
+  const LargeVector<ColorQuadric>& GetColorQuadrics() const;
 
   /// With RecordCollapses: the collapses made, in order, by input ids (lod/CollapseRecord.h).
   const CollapseRecord& GetRecord() const;

@@ -163,8 +163,8 @@ void EngineBase::Finish(bool keepHot)
   // The choices refer to the renumbered ids and are of no use now: freed first, so that each
   // copy made while mapping back is smaller than what they held. Without KeepVertexState the
   // output needs the mesh and the moved vertices' records only.
-  this->Best = std::vector<int32_t>();
-  this->Bounded = std::vector<uint8_t>();
+  this->Best = LargeVector<int32_t>();
+  this->Bounded = LargeVector<uint8_t>();
   if (!this->Options.KeepVertexState)
   {
     this->ReleaseMetric();

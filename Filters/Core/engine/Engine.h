@@ -113,9 +113,9 @@ public:
   virtual size_t MetricBytesPerVertex() const = 0;
 
   /// Each vertex's chosen target, -1 if none (the schedules read it).
-  std::vector<int32_t> Best;
+  LargeVector<int32_t> Best;
   /// Each vertex: its key is a lower bound, to be made exact (Greedy).
-  std::vector<uint8_t> Bounded;
+  LargeVector<uint8_t> Bounded;
   /// With RecordCollapses: the collapses made, in order (the schedules append to it); Finish
   /// turns them into the record.
   std::vector<RecordedCollapse> Recorded;
@@ -252,7 +252,7 @@ public:
   void EvaluateAll(const int32_t* vertices, size_t count, bool exact, bool allowBound,
                    double* keys);
   /// Every vertex's choice into Best and Bounded; returns the keys (by vertex).
-  std::vector<double> EvaluateEveryVertex(bool allowBound);
+  LargeVector<double> EvaluateEveryVertex(bool allowBound);
   /// Fetch what evaluating vertices[i + a few] reads into the cache.
   void PrefetchEvaluation(const int32_t* vertices, size_t i, size_t end) const;
 

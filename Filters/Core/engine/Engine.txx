@@ -202,7 +202,7 @@ void Engine<Metric>::EvaluateAll(const int32_t* vertices, size_t count, bool exa
 }
 
 template <typename Metric>
-std::vector<double> Engine<Metric>::EvaluateEveryVertex(bool allowBound)
+LargeVector<double> Engine<Metric>::EvaluateEveryVertex(bool allowBound)
 {
   const int32_t n = this->Mesh.GetNumberOfVertices();
   this->Best.assign(n, -1);
@@ -212,7 +212,7 @@ std::vector<double> Engine<Metric>::EvaluateEveryVertex(bool allowBound)
   {
     all[v] = v;
   }
-  std::vector<double> keys(n);
+  LargeVector<double> keys(n);
   this->EvaluateAll(all.data(), all.size(), false, allowBound, keys.data());
   return keys;
 }

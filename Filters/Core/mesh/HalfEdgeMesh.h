@@ -256,8 +256,8 @@ private:
     int32_t Twin;   ///< twin half-edge, -1 on boundaries
   };
   Buffer<Corner> Corners;
-  std::vector<int32_t> Out;   ///< vertex -> one outgoing half-edge, -1 if it has none
-  std::vector<uint8_t> Flags; ///< VertexFlag bits
+  LargeVector<int32_t> Out;   ///< vertex -> one outgoing half-edge, -1 if it has none
+  LargeVector<uint8_t> Flags; ///< VertexFlag bits
   int64_t LiveFaces = 0;
 };
 

@@ -132,7 +132,7 @@ bool ColorGradients(const double x[3][3], const double s[3][3], double g[3][3])
 /// The boundary edges of face f: the plane through each, perpendicular to the face.
 void AddBoundaryPlanes(const HalfEdgeMesh& mesh, int32_t f, const int32_t tri[3],
                        const double x[3][3], const double n[3], double boundaryWeight,
-                       std::vector<AttributeQuadric>& quadrics)
+                       LargeVector<AttributeQuadric>& quadrics)
 {
   for (int c = 0; c < 3; ++c)
   {
@@ -157,7 +157,7 @@ void AddBoundaryPlanes(const HalfEdgeMesh& mesh, int32_t f, const int32_t tri[3]
 void InitializeAttributeQuadrics(const HalfEdgeMesh& mesh, const float* positions,
                                  int positionStride, const float* colors, int colorStride,
                                  double colorScale, const AttributeQuadricWeights& weights,
-                                 std::vector<AttributeQuadric>& quadrics)
+                                 LargeVector<AttributeQuadric>& quadrics)
 {
   quadrics.assign(mesh.GetNumberOfVertices(), AttributeQuadric());
   for (int32_t f = 0; f < mesh.GetNumberOfFaceSlots(); ++f)

@@ -74,7 +74,7 @@ VTKCOLORDECIMATION_EXPORT void InitializeAttributeQuadrics(const HalfEdgeMesh& m
                                                            int positionStride, const float* colors,
                                                            int colorStride, double colorScale,
                                                            const AttributeQuadricWeights& weights,
-                                                           std::vector<AttributeQuadric>& quadrics);
+                                                           LargeVector<AttributeQuadric>& quadrics);
 
 /// The attribute quadric as the engine's policy: half-edge collapses at cost (Q0 + Q1)(x1).
 class VTKCOLORDECIMATION_EXPORT AttributeQuadricMetric
@@ -105,14 +105,14 @@ public:
   void Merge(int32_t v0, int32_t v1, bool, const Placement&);
 
   static constexpr size_t BytesPerVertex() { return sizeof(AttributeQuadric); }
-  void Release() { this->States = std::vector<AttributeQuadric>(); }
+  void Release() { this->States = LargeVector<AttributeQuadric>(); }
   template <typename Map>
   void Restore(const Map& restore)
   {
     restore(this->States);
   }
 
-  std::vector<AttributeQuadric> States;
+  LargeVector<AttributeQuadric> States;
 
 private:
   /// The offset of v1's point of R^6 from v0's.

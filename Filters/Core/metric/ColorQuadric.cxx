@@ -159,7 +159,7 @@ namespace
 /// through each edge, perpendicular to the face, added to both its ends.
 void AddBoundaryPlanes(const HalfEdgeMesh& mesh, int32_t f, const int32_t tri[3],
                        const double x[3][N], const double n[3], double boundaryWeight,
-                       std::vector<ColorQuadric>& quadrics)
+                       LargeVector<ColorQuadric>& quadrics)
 {
   for (int c = 0; c < 3; ++c)
   {
@@ -188,7 +188,7 @@ void AddBoundaryPlanes(const HalfEdgeMesh& mesh, int32_t f, const int32_t tri[3]
 void InitializeColorQuadrics(const HalfEdgeMesh& mesh, const float* positions, int positionStride,
                              double positionScale, const float* colors, int colorStride,
                              double colorScale, double boundaryWeight,
-                             std::vector<ColorQuadric>& quadrics)
+                             LargeVector<ColorQuadric>& quadrics)
 {
   quadrics.assign(mesh.GetNumberOfVertices(), ColorQuadric());
   auto point = [&](int32_t v, double x[N])

@@ -26,6 +26,7 @@
 #ifndef colordecimation_ColorQuadric_h
 #define colordecimation_ColorQuadric_h
 
+#include "util/Buffer.h"
 #include "vtkColorDecimationModule.h" // for export macro
 
 #include <cstdint>
@@ -227,7 +228,7 @@ VTKCOLORDECIMATION_EXPORT void InitializeColorQuadrics(const HalfEdgeMesh& mesh,
                                                        double positionScale, const float* colors,
                                                        int colorStride, double colorScale,
                                                        double boundaryWeight,
-                                                       std::vector<ColorQuadric>& quadrics);
+                                                       LargeVector<ColorQuadric>& quadrics);
 
 } // namespace colordecimation
 

@@ -72,7 +72,7 @@ public:
   void Merge(int32_t v0, int32_t v1, bool moves, const Placement& place);
 
   static constexpr size_t BytesPerVertex() { return sizeof(ColorQuadric); }
-  void Release() { this->States = std::vector<ColorQuadric>(); }
+  void Release() { this->States = LargeVector<ColorQuadric>(); }
   template <typename Map>
   void Restore(const Map& restore)
   {
@@ -80,7 +80,7 @@ public:
     restore(this->Moved);
   }
 
-  std::vector<ColorQuadric> States;
+  LargeVector<ColorQuadric> States;
 
 private:
   /// The offset of v1 from v0 in R^6.
@@ -107,7 +107,7 @@ private:
   bool PreserveBoundary;
   ColorSpace Space;
   bool UseColor = false;
-  std::vector<uint8_t> Moved;
+  LargeVector<uint8_t> Moved;
 };
 
 } // namespace colordecimation

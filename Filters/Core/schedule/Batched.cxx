@@ -5,6 +5,7 @@
 #include "metric/HalfEdgeColor.h"
 #include "schedule/Blocks.h"
 #include "schedule/Selection.h"
+#include "util/Buffer.h"
 
 #include <atomic>
 #include <cmath>
@@ -137,10 +138,10 @@ private:
 
   Engine<Metric>& E;
   BlockPartition Blocks;
-  std::vector<double> Keys;
+  LargeVector<double> Keys;
   /// Stamp[v] == pass: v was affected by a collapse of this pass (its key is stale) or its
   /// chosen collapse was found illegal; either way it waits for the re-costing.
-  std::vector<int32_t> Stamp;
+  LargeVector<int32_t> Stamp;
   std::vector<Lane> Lanes; ///< one per workspace of the engine
   std::vector<Candidate> Batch, Deferred;
   std::vector<size_t> BlockStart;

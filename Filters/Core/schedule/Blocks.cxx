@@ -73,7 +73,7 @@ void BlockPartition::FlagEveryInterior(const HalfEdgeMesh& mesh, int threads)
 
 int64_t BlockPartition::CountStaleFlags(const HalfEdgeMesh& mesh, int threads)
 {
-  std::vector<uint8_t> kept;
+  LargeVector<uint8_t> kept;
   kept.swap(this->Interior);
   this->FlagEveryInterior(mesh, threads);
   int64_t stale = 0;

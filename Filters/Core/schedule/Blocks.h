@@ -12,6 +12,8 @@
 #ifndef colordecimation_Blocks_h
 #define colordecimation_Blocks_h
 
+#include "util/Buffer.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -96,10 +98,10 @@ private:
   /// Vertex -> for each level (its Flag), all its neighbours are in its block. A collapse
   /// inside a block never changes that level's flag; one across blocks may, either way, for
   /// v0's former neighbours (FlagInterior).
-  std::vector<uint8_t> Interior;
+  LargeVector<uint8_t> Interior;
   /// BlockFaces[b]: the first face of small block b, i.e. the first whose smallest vertex is in
   /// it or after it; one entry per block and one more. Empty: no block is swept.
-  std::vector<int32_t> BlockFaces;
+  LargeVector<int32_t> BlockFaces;
 };
 
 } // namespace colordecimation

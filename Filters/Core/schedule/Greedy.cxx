@@ -58,7 +58,7 @@ private:
   {
     const int32_t n = this->E.GetMesh().GetNumberOfVertices();
     this->Heap.Reset(n);
-    const std::vector<double> keys = this->E.EvaluateEveryVertex(true);
+    const LargeVector<double> keys = this->E.EvaluateEveryVertex(true);
     for (int32_t v = 0; v < n; ++v)
     {
       if (this->E.Best[v] >= 0)

@@ -24,6 +24,7 @@
 #ifndef colordecimation_VertexHeap_h
 #define colordecimation_VertexHeap_h
 
+#include "util/Buffer.h"
 #include "util/Prefetch.h"
 
 #include <algorithm>
@@ -51,9 +52,9 @@ public:
   void Release()
   {
     this->Heap = Entries();
-    this->Slot = std::vector<int32_t>();
-    this->Key = std::vector<double>();
-    this->Placed = std::vector<double>();
+    this->Slot = LargeVector<int32_t>();
+    this->Key = LargeVector<double>();
+    this->Placed = LargeVector<double>();
   }
 
   bool Empty() const { return this->Heap.empty(); }
@@ -156,7 +157,7 @@ private:
       {
         return;
       }
-      std::vector<Entry> storage(n + 3);
+      LargeVector<Entry> storage(n + 3);
       const auto address = reinterpret_cast<uintptr_t>(storage.data());
       const size_t offset = ((112 - address % 64) % 64) / sizeof(Entry); // 0 to 3
       std::copy(this->Storage.begin() + this->Offset,
@@ -181,7 +182,7 @@ private:
     void pop_back() { --this->Count; }
 
   private:
-    std::vector<Entry> Storage;
+    LargeVector<Entry> Storage;
     size_t Offset = 0;
     size_t Count = 0;
   };
@@ -266,9 +267,9 @@ private:
   }
 
   Entries Heap;
-  std::vector<int32_t> Slot;  ///< vertex -> its heap slot, -1 when absent
-  std::vector<double> Key;    ///< vertex -> its key
-  std::vector<double> Placed; ///< vertex -> the key its heap entry holds (<= Key)
+  LargeVector<int32_t> Slot;  ///< vertex -> its heap slot, -1 when absent
+  LargeVector<double> Key;    ///< vertex -> its key
+  LargeVector<double> Placed; ///< vertex -> the key its heap entry holds (<= Key)
 };
 
 } // namespace colordecimation
