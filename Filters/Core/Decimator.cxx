@@ -81,9 +81,10 @@ DecimatorStatistics Decimator::RunWith(const DecimatorInput& input, int64_t targ
   engine->Start(input, stats);
   if (this->Options.RecordCollapses)
   {
-    // About one collapse per two triangles removed: room made once, not by doubling.
+    // Every collapse removes a triangle at least: room made once, never moved (the pages
+    // not written to are never touched).
     engine->Recorded.reserve(
-      size_t(std::max<int64_t>(input.NumberOfTriangles - stats.TargetTriangles, 0) / 2 + 64));
+      size_t(std::max<int64_t>(input.NumberOfTriangles - stats.TargetTriangles, 0) + 64));
   }
   if (this->Options.Schedule == CollapseSchedule::Batched)
   {

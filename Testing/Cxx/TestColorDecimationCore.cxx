@@ -1870,7 +1870,7 @@ CD_TEST_CASE(CollapseRecordByHand)
                                          { 4, 5, 2, 1, 0, 0.7, 16.0 },
                                          { 1, 7, 2, 0, 0, 0.9, 64.0 } };
   const int32_t toInput[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
-  record.Append(made, toInput, scale);
+  record.Append(made.data(), made.size(), toInput, scale);
   CD_CHECK((record.Triangles == std::vector<int64_t>{ 8, 4, 4, 2 }));
   CD_CHECK((record.Error == std::vector<double>{ 1.0, 3.0, 3.0, 4.0 }));
   std::string why;

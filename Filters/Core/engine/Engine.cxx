@@ -151,10 +151,10 @@ void EngineBase::Finish(bool keepHot)
   this->Seams.Release();
   if (this->Options.RecordCollapses)
   {
-    this->Record.Append(this->Recorded,
+    this->Record.Append(this->Recorded.data(), this->Recorded.size(),
                         this->Order.Empty() ? nullptr : this->Order.OldVertex.data(),
                         this->Geometry.Scale);
-    this->Recorded = std::vector<RecordedCollapse>();
+    this->Recorded = LargeVector<RecordedCollapse>();
   }
   if (this->Order.Empty())
   {

@@ -118,7 +118,7 @@ public:
   LargeVector<uint8_t> Bounded;
   /// With RecordCollapses: the collapses made, in order (the schedules append to it); Finish
   /// turns them into the record.
-  std::vector<RecordedCollapse> Recorded;
+  LargeVector<RecordedCollapse> Recorded;
   /// The record of the run, by input ids (after Finish).
   const CollapseRecord& GetRecord() const { return this->Record; }
 

@@ -12,17 +12,17 @@ void CollapseRecord::Clear()
   *this = CollapseRecord();
 }
 
-void CollapseRecord::Append(const std::vector<RecordedCollapse>& made, const int32_t* toInput,
+void CollapseRecord::Append(const RecordedCollapse* made, size_t madeCount, const int32_t* toInput,
                             double scale)
 {
-  const size_t start = this->Size(), count = start + made.size();
+  const size_t start = this->Size(), count = start + madeCount;
   this->Removed.resize(count);
   this->Survivor.resize(count);
   this->Cost.resize(count);
   this->Error.resize(count);
   this->Triangles.resize(count);
   int64_t left = start > 0 ? this->Triangles[start - 1] : this->InputTriangles;
-  for (size_t i = 0; i < made.size(); ++i)
+  for (size_t i = 0; i < madeCount; ++i)
   {
     const RecordedCollapse& c = made[i];
     left -= c.RemovedFaces;

@@ -53,9 +53,9 @@ struct VTKCOLORDECIMATION_EXPORT CollapseRecord
 
   size_t Size() const { return this->Removed.size(); }
   void Clear();
-  /// Append the schedule's collapses; `toInput` maps the run's ids to the input's (null: the
-  /// same), `scale` turns the frame's distances into the input's.
-  void Append(const std::vector<RecordedCollapse>& made, const int32_t* toInput, double scale);
+  /// Append the schedule's `count` collapses `made`; `toInput` maps the run's ids to the
+  /// input's (null: the same), `scale` turns the frame's distances into the input's.
+  void Append(const RecordedCollapse* made, size_t count, const int32_t* toInput, double scale);
 };
 
 /**

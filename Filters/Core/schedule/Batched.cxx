@@ -34,7 +34,7 @@ struct Lane
   double LargestSquaredError = 0; ///< under MaximumError: of the collapses made
   bool Exceeded = false;          ///< a candidate beyond MaximumError was skipped
   /// With RecordCollapses: the collapses made, in the order made, each with its block (Block).
-  std::vector<RecordedCollapse> Record;
+  LargeVector<RecordedCollapse> Record;
   int32_t Block = -1; ///< the block being collapsed (-1: the deferred ones)
   void ClearPass()
   {
@@ -146,7 +146,7 @@ private:
   std::vector<Candidate> Batch, Deferred;
   std::vector<size_t> BlockStart;
   std::vector<int32_t> Affected, Rejected;
-  std::vector<RecordedCollapse> Recorded; ///< gathered from the lanes, to be flushed
+  LargeVector<RecordedCollapse> Recorded; ///< gathered from the lanes, to be flushed
   /// The vertices that may have a collapse, in vertex order: the collapsible ones, less those
   /// collapsed away after each pass, so that the scans of a pass shrink with the mesh.
   std::vector<int32_t> Live, Kept;
