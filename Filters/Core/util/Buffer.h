@@ -99,6 +99,7 @@ public:
   void deallocate(T* p, size_t n) noexcept { DeallocateLarge(p, n * sizeof(T)); }
 };
 
+/// Any two compare equal (UninitializedAllocator too, which derives from it).
 template <typename T, typename U>
 bool operator==(const LargePageAllocator<T>&, const LargePageAllocator<U>&) noexcept
 {
@@ -143,17 +144,6 @@ public:
     ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
 };
-
-template <typename T, typename U>
-bool operator==(const UninitializedAllocator<T>&, const UninitializedAllocator<U>&) noexcept
-{
-  return true;
-}
-template <typename T, typename U>
-bool operator!=(const UninitializedAllocator<T>&, const UninitializedAllocator<U>&) noexcept
-{
-  return false;
-}
 
 template <typename T>
 using Buffer = std::vector<T, UninitializedAllocator<T>>;
