@@ -825,7 +825,7 @@ CD_TEST_CASE(AttributeQuadricTriangle)
   // Centred at a corner, the quadric is area * (dz^2 + (dx - dR)^2 + (dy - dG)^2 + dB^2):
   // the squared distance to the plane z = 0 plus the squared difference from the field.
   RampTriangle t;
-  LargeVector<AttributeQuadric> q;
+  Buffer<AttributeQuadric> q;
   InitializeAttributeQuadrics(t.Mesh, t.Positions.data(), 3, t.Colors.data(), 3, 1.0,
                               AttributeQuadricWeights(), q);
   CD_CHECK(q.size() == 3);
@@ -853,7 +853,7 @@ CD_TEST_CASE(AttributeQuadricWeights)
   // each of squared length 1: an in-plane offset on the field costs bw (dx^2 + dy^2). The
   // edge-length term adds el * area * |d|^2; the geometry weight scales the plane term.
   RampTriangle t;
-  LargeVector<AttributeQuadric> q;
+  Buffer<AttributeQuadric> q;
   AttributeQuadricWeights weights;
   weights.Boundary = 7.0;
   InitializeAttributeQuadrics(t.Mesh, t.Positions.data(), 3, t.Colors.data(), 3, 1.0, weights, q);
@@ -872,7 +872,7 @@ CD_TEST_CASE(AttributeQuadricShift)
 {
   // AddShifted re-centres: (r + q shifted by d)(e) = r(e) + q(e + d), for any offsets.
   RampTriangle t;
-  LargeVector<AttributeQuadric> q;
+  Buffer<AttributeQuadric> q;
   std::vector<float> colors = { 0.1f, 0.7f, 0.2f, 0.9f, 0.3f, 0.4f, 0.5f, 0.5f, 0.8f };
   std::vector<float> positions = { 0, 0, 0, 1, 0.2f, 0.1f, 0.3f, 1, -0.2f };
   InitializeAttributeQuadrics(t.Mesh, positions.data(), 3, colors.data(), 3, 1.0,

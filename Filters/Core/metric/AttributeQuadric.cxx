@@ -2,6 +2,7 @@
 
 #include "mesh/HalfEdgeMesh.h"
 #include "metric/Quadric.h"
+#include "util/Parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -129,10 +130,18 @@ bool ColorGradients(const double x[3][3], const double s[3][3], double g[3][3])
   return true;
 }
 
-/// The boundary edges of face f: the plane through each, perpendicular to the face.
+/// Corners in [First, Last): the vertices one thread sets up.
+struct VertexRange
+{
+  int32_t First, Last;
+  bool Has(int32_t v) const { return v >= this->First && v < this->Last; }
+};
+
+/// The boundary edges of face f: the plane through each, perpendicular to the face, added to
+/// its ends in `mine`.
 void AddBoundaryPlanes(const HalfEdgeMesh& mesh, int32_t f, const int32_t tri[3],
                        const double x[3][3], const double n[3], double boundaryWeight,
-                       LargeVector<AttributeQuadric>& quadrics)
+                       VertexRange mine, AttributeQuadric* quadrics)
 {
   for (int c = 0; c < 3; ++c)
   {
@@ -148,8 +157,61 @@ void AddBoundaryPlanes(const HalfEdgeMesh& mesh, int32_t f, const int32_t tri[3]
     {
       continue;
     }
-    quadrics[tri[c]].AddPlane(m, weight);
-    quadrics[tri[(c + 1) % 3]].AddPlane(m, weight);
+    for (const int32_t v : { tri[c], tri[(c + 1) % 3] })
+    {
+      if (mine.Has(v))
+      {
+        quadrics[v].AddPlane(m, weight);
+      }
+    }
+  }
+}
+
+/// Face f's terms added to the quadrics of its corners in `mine`.
+void AddFaceQuadrics(const HalfEdgeMesh& mesh, int32_t f, const float* positions,
+                     int positionStride, const float* colors, int colorStride, double colorScale,
+                     const AttributeQuadricWeights& weights, VertexRange mine,
+                     AttributeQuadric* quadrics)
+{
+  int32_t tri[3];
+  mesh.GetFace(f, tri);
+  if (!mesh.IsFaceAlive(f) || !(mine.Has(tri[0]) || mine.Has(tri[1]) || mine.Has(tri[2])))
+  {
+    return;
+  }
+  double x[3][3], s[3][3];
+  for (int c = 0; c < 3; ++c)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      x[c][k] = positions[size_t(positionStride) * tri[c] + k];
+      s[c][k] = colors ? colorScale * colors[size_t(colorStride) * tri[c] + k] : 0.0;
+    }
+  }
+  const double e1[3] = { x[1][0] - x[0][0], x[1][1] - x[0][1], x[1][2] - x[0][2] };
+  const double e2[3] = { x[2][0] - x[0][0], x[2][1] - x[0][1], x[2][2] - x[0][2] };
+  double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                  e1[0] * e2[1] - e1[1] * e2[0] };
+  const double twiceArea = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  double g[3][3];
+  if (!(twiceArea > 0.0) || !ColorGradients(x, s, g))
+  {
+    return;
+  }
+  for (double& component : n)
+  {
+    component /= twiceArea;
+  }
+  for (const int32_t v : tri)
+  {
+    if (mine.Has(v))
+    {
+      quadrics[v].AddTriangle(n, g, 0.5 * twiceArea, weights);
+    }
+  }
+  if (weights.Boundary > 0.0)
+  {
+    AddBoundaryPlanes(mesh, f, tri, x, n, weights.Boundary, mine, quadrics);
   }
 }
 } // namespace
@@ -157,49 +219,27 @@ void AddBoundaryPlanes(const HalfEdgeMesh& mesh, int32_t f, const int32_t tri[3]
 void InitializeAttributeQuadrics(const HalfEdgeMesh& mesh, const float* positions,
                                  int positionStride, const float* colors, int colorStride,
                                  double colorScale, const AttributeQuadricWeights& weights,
-                                 LargeVector<AttributeQuadric>& quadrics)
+                                 Buffer<AttributeQuadric>& quadrics, int threads)
 {
-  quadrics.assign(mesh.GetNumberOfVertices(), AttributeQuadric());
-  for (int32_t f = 0; f < mesh.GetNumberOfFaceSlots(); ++f)
-  {
-    if (!mesh.IsFaceAlive(f))
-    {
-      continue;
-    }
-    int32_t tri[3];
-    mesh.GetFace(f, tri);
-    double x[3][3], s[3][3];
-    for (int c = 0; c < 3; ++c)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        x[c][k] = positions[size_t(positionStride) * tri[c] + k];
-        s[c][k] = colors ? colorScale * colors[size_t(colorStride) * tri[c] + k] : 0.0;
-      }
-    }
-    const double e1[3] = { x[1][0] - x[0][0], x[1][1] - x[0][1], x[1][2] - x[0][2] };
-    const double e2[3] = { x[2][0] - x[0][0], x[2][1] - x[0][1], x[2][2] - x[0][2] };
-    double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                    e1[0] * e2[1] - e1[1] * e2[0] };
-    const double twiceArea = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    double g[3][3];
-    if (!(twiceArea > 0.0) || !ColorGradients(x, s, g))
-    {
-      continue;
-    }
-    for (double& component : n)
-    {
-      component /= twiceArea;
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      quadrics[tri[c]].AddTriangle(n, g, 0.5 * twiceArea, weights);
-    }
-    if (weights.Boundary > 0.0)
-    {
-      AddBoundaryPlanes(mesh, f, tri, x, n, weights.Boundary, quadrics);
-    }
-  }
+  // Each thread zeroes, then sums, the quadrics of its own range of vertices, face by face in
+  // index order (so every vertex adds its terms in the same order whatever the ranges): it
+  // reads every face but computes only those that touch its range.
+  const size_t n = static_cast<size_t>(mesh.GetNumberOfVertices());
+  quadrics.resize(n);
+  AttributeQuadric* q = quadrics.data();
+  const HalfEdgeMesh* faces = &mesh;
+  const AttributeQuadricWeights w = weights;
+  ParallelFor(n, threads,
+              [=](size_t begin, size_t end, int)
+              {
+                std::fill(q + begin, q + end, AttributeQuadric());
+                const VertexRange mine{ static_cast<int32_t>(begin), static_cast<int32_t>(end) };
+                for (int32_t f = 0; f < faces->GetNumberOfFaceSlots(); ++f)
+                {
+                  AddFaceQuadrics(*faces, f, positions, positionStride, colors, colorStride,
+                                  colorScale, w, mine, q);
+                }
+              });
 }
 
 AttributeQuadricMetric::AttributeQuadricMetric(const DecimatorOptions& options)
@@ -210,13 +250,13 @@ AttributeQuadricMetric::AttributeQuadricMetric(const DecimatorOptions& options)
 }
 
 void AttributeQuadricMetric::Initialize(const HalfEdgeMesh& mesh, const Frame&,
-                                        Buffer<HotVertex>& hot, bool useColor, int)
+                                        Buffer<HotVertex>& hot, bool useColor, int threads)
 {
   this->Hot = &hot;
   this->UseColor = useColor;
   InitializeAttributeQuadrics(mesh, hot.empty() ? nullptr : hot[0].P, HotStride,
                               useColor && !hot.empty() ? hot[0].C : nullptr, HotStride,
-                              this->ColorWeight, this->Weights, this->States);
+                              this->ColorWeight, this->Weights, this->States, threads);
 }
 
 void AttributeQuadricMetric::Offset(int32_t v0, int32_t v1, double dx[3], double ds[3]) const

@@ -67,14 +67,13 @@ static_assert(sizeof(AttributeQuadric) == 92, "23 floats per vertex");
 
 /**
  * The initial quadrics of the vertices (colours times colorScale; colors may be null), with
- * Garland and Heckbert's boundary planes and the edge-length term as weighted.
+ * Garland and Heckbert's boundary planes and the edge-length term as weighted, on `threads`
+ * threads (the same quadrics bit for bit for any number).
  */
-VTKCOLORDECIMATION_EXPORT void InitializeAttributeQuadrics(const HalfEdgeMesh& mesh,
-                                                           const float* positions,
-                                                           int positionStride, const float* colors,
-                                                           int colorStride, double colorScale,
-                                                           const AttributeQuadricWeights& weights,
-                                                           LargeVector<AttributeQuadric>& quadrics);
+VTKCOLORDECIMATION_EXPORT void InitializeAttributeQuadrics(
+  const HalfEdgeMesh& mesh, const float* positions, int positionStride, const float* colors,
+  int colorStride, double colorScale, const AttributeQuadricWeights& weights,
+  Buffer<AttributeQuadric>& quadrics, int threads = 1);
 
 /// The attribute quadric as the engine's policy: half-edge collapses at cost (Q0 + Q1)(x1).
 class VTKCOLORDECIMATION_EXPORT AttributeQuadricMetric
@@ -105,14 +104,14 @@ public:
   void Merge(int32_t v0, int32_t v1, bool, const Placement&);
 
   static constexpr size_t BytesPerVertex() { return sizeof(AttributeQuadric); }
-  void Release() { this->States = LargeVector<AttributeQuadric>(); }
+  void Release() { this->States = Buffer<AttributeQuadric>(); }
   template <typename Map>
   void Restore(const Map& restore)
   {
     restore(this->States);
   }
 
-  LargeVector<AttributeQuadric> States;
+  Buffer<AttributeQuadric> States;
 
 private:
   /// The offset of v1's point of R^6 from v0's.
