@@ -1,8 +1,8 @@
 #include "metric/AttributeQuadric.h"
 
+#include "mesh/FaceWalk.h"
 #include "mesh/HalfEdgeMesh.h"
 #include "metric/Quadric.h"
-#include "util/Parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -130,18 +130,11 @@ bool ColorGradients(const double x[3][3], const double s[3][3], double g[3][3])
   return true;
 }
 
-/// Corners in [First, Last): the vertices one thread sets up.
-struct VertexRange
-{
-  int32_t First, Last;
-  bool Has(int32_t v) const { return v >= this->First && v < this->Last; }
-};
-
 /// The boundary edges of face f: the plane through each, perpendicular to the face, added to
-/// its ends in `mine`.
+/// its ends that the walk owns.
 void AddBoundaryPlanes(const HalfEdgeMesh& mesh, int32_t f, const int32_t tri[3],
                        const double x[3][3], const double n[3], double boundaryWeight,
-                       VertexRange mine, AttributeQuadric* quadrics)
+                       const FaceWalk& walk, AttributeQuadric* quadrics)
 {
   for (int c = 0; c < 3; ++c)
   {
@@ -159,7 +152,7 @@ void AddBoundaryPlanes(const HalfEdgeMesh& mesh, int32_t f, const int32_t tri[3]
     }
     for (const int32_t v : { tri[c], tri[(c + 1) % 3] })
     {
-      if (mine.Has(v))
+      if (walk.Owns(v))
       {
         quadrics[v].AddPlane(m, weight);
       }
@@ -167,15 +160,15 @@ void AddBoundaryPlanes(const HalfEdgeMesh& mesh, int32_t f, const int32_t tri[3]
   }
 }
 
-/// Face f's terms added to the quadrics of its corners in `mine`.
+/// Face f's terms added to the quadrics of its corners that the walk owns.
 void AddFaceQuadrics(const HalfEdgeMesh& mesh, int32_t f, const float* positions,
                      int positionStride, const float* colors, int colorStride, double colorScale,
-                     const AttributeQuadricWeights& weights, VertexRange mine,
+                     const AttributeQuadricWeights& weights, const FaceWalk& walk,
                      AttributeQuadric* quadrics)
 {
   int32_t tri[3];
   mesh.GetFace(f, tri);
-  if (!mesh.IsFaceAlive(f) || !(mine.Has(tri[0]) || mine.Has(tri[1]) || mine.Has(tri[2])))
+  if (!(walk.Owns(tri[0]) || walk.Owns(tri[1]) || walk.Owns(tri[2])))
   {
     return;
   }
@@ -204,14 +197,14 @@ void AddFaceQuadrics(const HalfEdgeMesh& mesh, int32_t f, const float* positions
   }
   for (const int32_t v : tri)
   {
-    if (mine.Has(v))
+    if (walk.Owns(v))
     {
       quadrics[v].AddTriangle(n, g, 0.5 * twiceArea, weights);
     }
   }
   if (weights.Boundary > 0.0)
   {
-    AddBoundaryPlanes(mesh, f, tri, x, n, weights.Boundary, mine, quadrics);
+    AddBoundaryPlanes(mesh, f, tri, x, n, weights.Boundary, walk, quadrics);
   }
 }
 } // namespace
@@ -221,25 +214,23 @@ void InitializeAttributeQuadrics(const HalfEdgeMesh& mesh, const float* position
                                  double colorScale, const AttributeQuadricWeights& weights,
                                  Buffer<AttributeQuadric>& quadrics, int threads)
 {
-  // Each thread zeroes, then sums, the quadrics of its own range of vertices, face by face in
-  // index order (so every vertex adds its terms in the same order whatever the ranges): it
-  // reads every face but computes only those that touch its range.
-  const size_t n = static_cast<size_t>(mesh.GetNumberOfVertices());
-  quadrics.resize(n);
+  // Each thread zeroes, then sums, the quadrics of its own range of vertices (mesh/FaceWalk.h).
+  quadrics.resize(static_cast<size_t>(mesh.GetNumberOfVertices()));
   AttributeQuadric* q = quadrics.data();
   const HalfEdgeMesh* faces = &mesh;
   const AttributeQuadricWeights w = weights;
-  ParallelFor(n, threads,
-              [=](size_t begin, size_t end, int)
-              {
-                std::fill(q + begin, q + end, AttributeQuadric());
-                const VertexRange mine{ static_cast<int32_t>(begin), static_cast<int32_t>(end) };
-                for (int32_t f = 0; f < faces->GetNumberOfFaceSlots(); ++f)
-                {
-                  AddFaceQuadrics(*faces, f, positions, positionStride, colors, colorStride,
-                                  colorScale, w, mine, q);
-                }
-              });
+  ForEachVertexRange(mesh, threads,
+                     [=](const FaceWalk& walk)
+                     {
+                       std::fill(q + walk.First, q + walk.Last, AttributeQuadric());
+                       ForEachLiveFace(*faces, walk,
+                                       [&](int32_t f)
+                                       {
+                                         AddFaceQuadrics(*faces, f, positions, positionStride,
+                                                         colors, colorStride, colorScale, w, walk,
+                                                         q);
+                                       });
+                     });
 }
 
 AttributeQuadricMetric::AttributeQuadricMetric(const DecimatorOptions& options)

@@ -1,10 +1,10 @@
 #include "metric/HalfEdgeColor.h"
 
+#include "mesh/FaceWalk.h"
 #include "mesh/HalfEdgeMesh.h"
 #include "util/Parallel.h"
 
 #include <algorithm>
-#include <limits>
 
 namespace colordecimation
 {
@@ -77,14 +77,14 @@ struct QuadricWeights
 };
 
 /// The plane terms of face f (eq. 8, and the boundary planes) added to those of its corners
-/// that lie in [first, last).
+/// that the walk owns.
 void AddFacePlanes(const HalfEdgeMesh& mesh, const float* positions, int positionStride,
-                   const QuadricWeights& weights, int32_t f, int32_t first, int32_t last,
+                   const QuadricWeights& weights, int32_t f, const FaceWalk& walk,
                    VertexMetric* metrics)
 {
   int32_t tri[3];
   mesh.GetFace(f, tri);
-  const auto owned = [first, last](int32_t v) { return v >= first && v < last; };
+  const auto owned = [&walk](int32_t v) { return walk.Owns(v); };
   if (!owned(tri[0]) && !owned(tri[1]) && !owned(tri[2]))
   {
     return;
@@ -149,77 +149,13 @@ void AddFacePlanes(const HalfEdgeMesh& mesh, const float* positions, int positio
     }
   }
 }
-constexpr int ChunkShift = 10; // faces per chunk: 1024
-
-/// For each chunk of faces, the lowest and highest vertex id its faces use (2 per chunk).
-std::vector<int32_t> ChunkVertexRanges(const HalfEdgeMesh& mesh, size_t numChunks, int threads)
-{
-  const int32_t numFaces = mesh.GetNumberOfFaceSlots();
-  std::vector<int32_t> chunkRange(2 * numChunks);
-  int32_t* ranges = chunkRange.data();
-  ParallelFor(numChunks, threads,
-              [&mesh, ranges, numFaces](size_t begin, size_t end, int)
-              {
-                for (size_t c = begin; c < end; ++c)
-                {
-                  int32_t lo = std::numeric_limits<int32_t>::max(), hi = -1;
-                  const auto f0 = static_cast<int32_t>(c << ChunkShift);
-                  const int32_t f1 = std::min(numFaces, f0 + (int32_t(1) << ChunkShift));
-                  for (int32_t h = 3 * f0; h < 3 * f1; ++h)
-                  {
-                    const int32_t v = mesh.Origin(h);
-                    if (v >= 0)
-                    {
-                      lo = std::min(lo, v);
-                      hi = std::max(hi, v);
-                    }
-                  }
-                  ranges[2 * c] = lo;
-                  ranges[2 * c + 1] = hi;
-                }
-              });
-  return chunkRange;
-}
-
-/**
- * The faces a thread owning the vertices [First, Last) walks: face f, or, if f starts a chunk,
- * the first face from there on whose chunk uses a vertex of [First, Last) (NumFaces if none
- * does). Without chunks (one thread) every face.
- */
-struct FaceWalk
-{
-  const int32_t* Ranges;
-  size_t NumChunks;
-  int32_t First, Last, NumFaces;
-
-  int32_t From(int32_t f) const
-  {
-    if ((f & ((int32_t(1) << ChunkShift) - 1)) != 0)
-    {
-      return f;
-    }
-    for (auto c = static_cast<size_t>(f) >> ChunkShift; c < this->NumChunks; ++c)
-    {
-      if (this->Ranges[2 * c + 1] >= this->First && this->Ranges[2 * c] < this->Last)
-      {
-        return std::min(this->NumFaces, static_cast<int32_t>(c << ChunkShift));
-      }
-    }
-    return this->NumChunks > 0 ? this->NumFaces : f;
-  }
-};
-
 /// eq. 8: each triangle's plane, weighted by its area, on each of its corners it owns.
 void AddAllFacePlanes(const HalfEdgeMesh& mesh, const float* positions, int positionStride,
                       const QuadricWeights& weights, const FaceWalk& walk, VertexMetric* state)
 {
-  for (int32_t f = walk.From(0); f < walk.NumFaces; f = walk.From(f + 1))
-  {
-    if (mesh.IsFaceAlive(f))
-    {
-      AddFacePlanes(mesh, positions, positionStride, weights, f, walk.First, walk.Last, state);
-    }
-  }
+  ForEachLiveFace(mesh, walk,
+                  [&](int32_t f)
+                  { AddFacePlanes(mesh, positions, positionStride, weights, f, walk, state); });
 }
 
 /// eq. 14: each edge once (a boundary edge has one half-edge, an interior edge two); the sum
@@ -280,28 +216,19 @@ void InitializeVertexMetrics(const HalfEdgeMesh& mesh, const float* positions, c
                              double boundaryWeight, int threads, double edgeLengthWeight)
 {
   const QuadricWeights weights{ boundaryWeight, edgeLengthWeight };
-  // Each thread owns a range of vertices and walks the faces and edges in their order (those
-  // that may touch its vertices), adding to its own vertices only: every vertex sees the same
-  // sums in the same order as with one thread. With several threads, the faces are taken in
-  // chunks with the range of vertex ids each chunk uses, and a thread skips the chunks that use
-  // none of its vertices (in the spatial order, most of the others' faces).
-  const int32_t numFaces = mesh.GetNumberOfFaceSlots();
-  const size_t numChunks = threads > 1 ? (static_cast<size_t>(numFaces) >> ChunkShift) + 1 : 0;
-  const std::vector<int32_t> chunkRange = ChunkVertexRanges(mesh, numChunks, threads);
-  const int32_t* ranges = chunkRange.data();
-  ParallelFor(static_cast<size_t>(mesh.GetNumberOfVertices()), threads,
-              [&mesh, positions, colors, state, positionStride, colorStride, weights, numFaces,
-               ranges, numChunks](size_t begin, size_t end, int)
-              {
-                const FaceWalk walk{ ranges, numChunks, static_cast<int32_t>(begin),
-                                     static_cast<int32_t>(end), numFaces };
-                std::fill(state + begin, state + end, VertexMetric());
-                AddAllFacePlanes(mesh, positions, positionStride, weights, walk, state);
-                if (colors)
-                {
-                  AddVisualImportance(mesh, colors, colorStride, walk, state);
-                }
-              });
+  // Each thread sums the terms of its own range of vertices (mesh/FaceWalk.h).
+  const HalfEdgeMesh* faces = &mesh;
+  ForEachVertexRange(
+    mesh, threads,
+    [faces, positions, colors, state, positionStride, colorStride, weights](const FaceWalk& walk)
+    {
+      std::fill(state + walk.First, state + walk.Last, VertexMetric());
+      AddAllFacePlanes(*faces, positions, positionStride, weights, walk, state);
+      if (colors)
+      {
+        AddVisualImportance(*faces, colors, colorStride, walk, state);
+      }
+    });
 }
 
 void InitializeVertexMetrics(const HalfEdgeMesh& mesh, const float* positions, const float* colors,

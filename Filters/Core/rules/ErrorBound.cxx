@@ -1,7 +1,7 @@
 #include "rules/ErrorBound.h"
 
+#include "mesh/FaceWalk.h"
 #include "mesh/HalfEdgeMesh.h"
-#include "util/Parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,62 +11,56 @@ namespace colordecimation
 
 namespace
 {
-/// Adds each live face's area-weighted plane quadric to those of its vertices in [first, last),
-/// face by face in index order (so each vertex sums its faces in the same order, whatever the
-/// ranges).
+/// Face f's area-weighted plane quadric added to those of its corners that the walk owns.
 template <typename PlaneSum>
-void AddFacePlanes(const HalfEdgeMesh& mesh, const float* positions, int stride, int32_t first,
-                   int32_t last, PlaneSum* planes)
+void AddFacePlane(const HalfEdgeMesh& mesh, const float* positions, int stride, int32_t f,
+                  const FaceWalk& walk, PlaneSum* planes)
 {
-  for (int32_t f = 0; f < mesh.GetNumberOfFaceSlots(); ++f)
+  int32_t ids[3];
+  mesh.GetFace(f, ids);
+  if (!(walk.Owns(ids[0]) || walk.Owns(ids[1]) || walk.Owns(ids[2])))
   {
-    int32_t ids[3];
-    mesh.GetFace(f, ids);
-    const auto mine = [first, last](int32_t v) { return v >= first && v < last; };
-    if (!mesh.IsFaceAlive(f) || !(mine(ids[0]) || mine(ids[1]) || mine(ids[2])))
+    return;
+  }
+  double p[3][3];
+  for (int k = 0; k < 3; ++k)
+  {
+    std::copy(positions + size_t(stride) * ids[k], positions + size_t(stride) * ids[k] + 3, p[k]);
+  }
+  const double e1[3] = { p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2] };
+  const double e2[3] = { p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2] };
+  double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                  e1[0] * e2[1] - e1[1] * e2[0] };
+  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (!(length > 0.0))
+  {
+    return; // no plane
+  }
+  for (double& c : n)
+  {
+    c /= length;
+  }
+  const double area = 0.5 * length;
+  const double d = -(n[0] * p[0][0] + n[1] * p[0][1] + n[2] * p[0][2]);
+  for (const int32_t v : ids)
+  {
+    if (!walk.Owns(v))
     {
       continue;
     }
-    double p[3][3];
+    PlaneSum& q = planes[v];
+    q.A[0] += area * n[0] * n[0];
+    q.A[1] += area * n[0] * n[1];
+    q.A[2] += area * n[0] * n[2];
+    q.A[3] += area * n[1] * n[1];
+    q.A[4] += area * n[1] * n[2];
+    q.A[5] += area * n[2] * n[2];
     for (int k = 0; k < 3; ++k)
     {
-      std::copy(positions + size_t(stride) * ids[k], positions + size_t(stride) * ids[k] + 3, p[k]);
+      q.B[k] += area * d * n[k];
     }
-    const double e1[3] = { p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2] };
-    const double e2[3] = { p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2] };
-    double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                    e1[0] * e2[1] - e1[1] * e2[0] };
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (!(length > 0.0))
-    {
-      continue; // no plane
-    }
-    for (double& c : n)
-    {
-      c /= length;
-    }
-    const double area = 0.5 * length;
-    const double d = -(n[0] * p[0][0] + n[1] * p[0][1] + n[2] * p[0][2]);
-    for (const int32_t v : ids)
-    {
-      if (!mine(v))
-      {
-        continue;
-      }
-      PlaneSum& q = planes[v];
-      q.A[0] += area * n[0] * n[0];
-      q.A[1] += area * n[0] * n[1];
-      q.A[2] += area * n[0] * n[2];
-      q.A[3] += area * n[1] * n[1];
-      q.A[4] += area * n[1] * n[2];
-      q.A[5] += area * n[2] * n[2];
-      for (int k = 0; k < 3; ++k)
-      {
-        q.B[k] += area * d * n[k];
-      }
-      q.C += area * d * d;
-      q.Area += area;
-    }
+    q.C += area * d * d;
+    q.Area += area;
   }
 }
 } // namespace
@@ -80,19 +74,19 @@ void ErrorBound::Initialize(const HalfEdgeMesh& mesh, const float* positions, in
   {
     return;
   }
-  // Each thread zeroes, then sums, the planes of its own range of vertices: it reads every
-  // face but computes only those that touch its range (the renumbered mesh keeps them few).
+  // Each thread zeroes, then sums, the planes of its own range of vertices (mesh/FaceWalk.h).
   const size_t n = static_cast<size_t>(mesh.GetNumberOfVertices());
   this->Planes.resize(n);
   PlaneSum* planes = this->Planes.data();
   const HalfEdgeMesh* faces = &mesh;
-  ParallelFor(n, threads,
-              [planes, faces, positions, stride](size_t begin, size_t end, int)
-              {
-                std::fill(planes + begin, planes + end, PlaneSum{});
-                AddFacePlanes(*faces, positions, stride, static_cast<int32_t>(begin),
-                              static_cast<int32_t>(end), planes);
-              });
+  ForEachVertexRange(
+    mesh, threads,
+    [planes, faces, positions, stride](const FaceWalk& walk)
+    {
+      std::fill(planes + walk.First, planes + walk.Last, PlaneSum{});
+      ForEachLiveFace(*faces, walk,
+                      [&](int32_t f) { AddFacePlane(*faces, positions, stride, f, walk, planes); });
+    });
 }
 
 double ErrorBound::SquaredError(int32_t v0, int32_t v1, const double x[3]) const
