@@ -1826,6 +1826,35 @@ CD_TEST_CASE(RulesDegenerate)
   CD_CHECK(rules.Check(mesh, coincident.data(), 0, 1) == CollapseVerdict::Degenerate);
 }
 
+CD_TEST_CASE(RulesRounding)
+{
+  // The fan of RulesDegenerate at z = 1000, where a float coordinate is rounded by up to
+  // 3e-5 (x and y, below 2, by up to 1.2e-7).
+  const int32_t fan[15] = { 0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5, 0, 5, 1 };
+  const float z = 1000;
+  // A, B and C on the line A + t (-1, 1, 1/3): the floats of z + 1/3 and z + 2/3 leave
+  // (A,B,C) a sine of 2e-5 (above 1e-6), but an area that the rounding of z accounts for.
+  const float rounded[18] = { 0,  0,  z, 1,    0,  z, 0, 1, z + 1.0f / 3, -1, 2, z + 2.0f / 3,
+                              -1, -1, z, 0.5f, -1, z };
+  // C at (-1, 1.999): (A,B,C) is a sliver of twice-area 1e-3 in the plane z = 1000, far
+  // above what rounding x and y could do; rounding z tilts it but cannot flatten it.
+  const float sliver[18] = { 0, 0, z, 1, 0, z, 0, 1, z, -1, 1.999f, z, -1, -1, z, 0.5f, -1, z };
+  HalfEdgeMesh mesh;
+  mesh.Build(6, fan, 5);
+  CollapseRules rules{ CollapseRuleOptions() };
+  CD_CHECK(rules.Check(mesh, rounded, 0, 1) == CollapseVerdict::Degenerate);
+  CD_CHECK(rules.Check(mesh, sliver, 0, 1) == CollapseVerdict::Legal);
+  // The same with x and z swapped: no axis is favoured.
+  float across[18];
+  for (int i = 0; i < 6; ++i)
+  {
+    across[3 * i] = sliver[3 * i + 2];
+    across[3 * i + 1] = sliver[3 * i + 1];
+    across[3 * i + 2] = sliver[3 * i];
+  }
+  CD_CHECK(rules.Check(mesh, across, 0, 1) == CollapseVerdict::Legal);
+}
+
 CD_TEST_CASE(RulesBoundary)
 {
   const int nx = 6, ny = 4;

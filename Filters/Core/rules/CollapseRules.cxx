@@ -152,22 +152,40 @@ CollapseVerdict CollapseRules::CheckGeometry(const HalfEdgeMesh& mesh, const flo
 
 namespace
 {
-/// Whether the triangle (p1, pa, pb), of twice-area squared newLength2 and squared edges fa2 and
-/// fb2 from p1, has an area that the float rounding of its corners could account for: a
-/// rounding of up to noise per coordinate moves its twice area by about noise (|fa| + |fb|),
-/// and (|fa| + |fb|)^2 <= 2 (fa2 + fb2).
-inline bool WithinRounding(const double p1[3], const float* pa, const float* pb, double newLength2,
-                           double fa2, double fb2)
+/// |(e x n)_0| eta_0 + |(e x n)_1| eta_1 + |(e x n)_2| eta_2.
+inline double RoundingLever(const double e[3], const double n[3], const double eta[3])
 {
-  double magnitude = 0;
+  return eta[0] * std::abs(e[1] * n[2] - e[2] * n[1]) +
+    eta[1] * std::abs(e[2] * n[0] - e[0] * n[2]) + eta[2] * std::abs(e[0] * n[1] - e[1] * n[0]);
+}
+
+/// Whether the triangle (p1, pa, pb), of normal n (twice its area, squared length
+/// newLength2) and edges fa = pa - p1, fb = pb - p1, has an area that the float rounding of
+/// its corners could account for. Coordinate k of a corner is rounded by up to
+/// eta_k = 8 eps max|x_k|; moving corner c by d changes the area along n by
+/// d . (e_c x n) / |n|, e_c the edge opposite c, so the area can reach zero only if
+/// |n|^2 <= sum_c sum_k eta_k |(e_c x n)_k|. Per axis, because a triangle far from the origin
+/// along one axis is rounded coarsely along that axis only, which moves its area only if its
+/// plane is not across that axis. A bound over all axes at once ((|fa| + |fb|)^2 <=
+/// 2 (fa2 + fb2)) rules out most triangles first.
+inline bool WithinRounding(const double p1[3], const float* pa, const float* pb, const double n[3],
+                           double newLength2, const double fa[3], const double fb[3], double fa2,
+                           double fb2)
+{
+  double eta[3];
   for (int k = 0; k < 3; ++k)
   {
-    magnitude = std::max(
-      magnitude,
-      std::max(std::abs(p1[k]), std::max(std::abs(double(pa[k])), std::abs(double(pb[k])))));
+    eta[k] = 8.0 * std::numeric_limits<float>::epsilon() *
+      std::max(std::abs(p1[k]), std::max(std::abs(double(pa[k])), std::abs(double(pb[k]))));
   }
-  const double noise = 8.0 * std::numeric_limits<float>::epsilon() * magnitude;
-  return !(newLength2 > 2.0 * noise * noise * (fa2 + fb2));
+  const double noise = std::max(eta[0], std::max(eta[1], eta[2]));
+  if (newLength2 > 2.0 * noise * noise * (fa2 + fb2))
+  {
+    return false;
+  }
+  const double opposite[3] = { fb[0] - fa[0], fb[1] - fa[1], fb[2] - fa[2] };
+  return !(newLength2 >
+           RoundingLever(opposite, n, eta) + RoundingLever(fa, n, eta) + RoundingLever(fb, n, eta));
 }
 } // namespace
 
@@ -206,7 +224,7 @@ CollapseVerdict CollapseRules::CheckFan(const HalfEdgeMesh& mesh, const float* p
       // within the rounding of the stored (float) positions, where exactly collinear input
       // points can come out with a sine above 1e-6.
       if (!(newLength2 > 1e-12 * fa2 * fb2) || !(fa2 > 0) || !(fb2 > 0) ||
-          WithinRounding(p1, pa, pb, newLength2, fa2, fb2))
+          WithinRounding(p1, pa, pb, newN, newLength2, fa, fb, fa2, fb2))
       {
         verdict = CollapseVerdict::Degenerate;
         return;
