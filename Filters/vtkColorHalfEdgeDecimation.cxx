@@ -12,6 +12,7 @@
 #include "Adapter/OutputMesh.h"
 #include "Adapter/RecordTable.h"
 #include "Core/Decimator.h"
+#include "Core/util/PhaseTimes.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
@@ -310,6 +311,7 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   , NumberOfCollapses(0)
   , StateMemory(0)
   , NumberOfThreadsUsed(0)
+  , Phases(new colordecimation::PhaseTimes)
 {
   this->SetOriginalPointIdsArrayName("vtkOriginalPointIds");
   this->SetNumberOfOutputPorts(2);
@@ -321,6 +323,7 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
 vtkColorHalfEdgeDecimation::~vtkColorHalfEdgeDecimation()
 {
   this->SetOriginalPointIdsArrayName(nullptr);
+  delete this->Phases;
 }
 
 //------------------------------------------------------------------------------
@@ -409,6 +412,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
     return 1;
   }
   FixSharedPoints(this, outputVector->GetInformationObject(0), mesh);
+  this->Phases->Lap("input");
 
   // 3. Decimate to the target, or until MaximumError or no valid collapse stops it.
   const auto numTriangles = static_cast<vtkIdType>(mesh.Soup.SourceCell.size());
@@ -437,6 +441,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
     colordecimation::adapter::WriteOutput(this, input, mesh, decimator, written, output);
   this->ActualReduction = 1.0 - static_cast<double>(numOutTriangles) / numTriangles;
   WriteRecord(this, mesh, decimator, vtkTable::GetData(outputVector, 1));
+  this->Phases->Lap("output");
   if (!this->GetAbortExecute())
   {
     this->UpdateProgress(1.0); // after an abort, the progress stays where the run stopped
@@ -453,6 +458,7 @@ void vtkColorHalfEdgeDecimation::ResetStatistics()
   this->NumberOfCollapses = 0;
   this->StateMemory = 0;
   this->NumberOfThreadsUsed = 0;
+  this->Phases->Start();
 }
 
 //------------------------------------------------------------------------------
@@ -464,6 +470,26 @@ void vtkColorHalfEdgeDecimation::KeepStatistics(const colordecimation::Decimator
   this->StateMemory = static_cast<vtkIdType>(stats.StateBytes);
   this->NumberOfThreadsUsed =
     std::max({ stats.Threads, stats.CollapseThreads, stats.WideCollapseThreads });
+  this->Phases->Append(stats.Phases);
+}
+
+//------------------------------------------------------------------------------
+int vtkColorHalfEdgeDecimation::GetNumberOfPhases() const
+{
+  return static_cast<int>(this->Phases->Get().size());
+}
+
+//------------------------------------------------------------------------------
+const char* vtkColorHalfEdgeDecimation::GetPhaseName(int index) const
+{
+  return index >= 0 && index < this->GetNumberOfPhases() ? this->Phases->Get()[index].Name
+                                                         : nullptr;
+}
+
+//------------------------------------------------------------------------------
+double vtkColorHalfEdgeDecimation::GetPhaseSeconds(int index) const
+{
+  return index >= 0 && index < this->GetNumberOfPhases() ? this->Phases->Get()[index].Seconds : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -554,4 +580,10 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfCollapses: " << this->NumberOfCollapses << "\n";
   os << indent << "StateMemory: " << this->StateMemory << "\n";
   os << indent << "NumberOfThreadsUsed: " << this->NumberOfThreadsUsed << "\n";
+  os << indent << "Phases:";
+  for (int i = 0; i < this->GetNumberOfPhases(); ++i)
+  {
+    os << (i ? ", " : " ") << this->GetPhaseName(i) << " " << this->GetPhaseSeconds(i) << " s";
+  }
+  os << "\n";
 }

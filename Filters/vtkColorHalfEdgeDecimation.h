@@ -85,6 +85,7 @@ class vtkTable;
 namespace colordecimation
 {
 struct DecimatorStatistics;
+class PhaseTimes;
 }
 
 class VTKCOLORDECIMATION_EXPORT vtkColorHalfEdgeDecimation : public vtkPolyDataAlgorithm
@@ -462,6 +463,22 @@ public:
    */
   vtkGetMacro(NumberOfThreadsUsed, int);
 
+  ///@{
+  /**
+   * The phase breakdown of the last execution: how many phases, and each one's name and
+   * wall-clock seconds, in the order they ran. "input" (checks, points, triangles, colours),
+   * the decimation's set-up ("spatial order", "connectivity", "frame", "reference normals",
+   * "error planes", "metric state"), "first costing", the schedule's steps ("collapses" for
+   * Greedy; "batch selection", "block collapses", "deferred collapses", "re-costing" for
+   * Batched, each summed over the passes), "restore order", "prune" (with PruneComponents)
+   * and "output" (the output mesh and the collapse record). Together they cover the
+   * execution. An index out of range gives nullptr and 0.
+   */
+  int GetNumberOfPhases() const;
+  const char* GetPhaseName(int index) const;
+  double GetPhaseSeconds(int index) const;
+  ///@}
+
 protected:
   vtkColorHalfEdgeDecimation();
   ~vtkColorHalfEdgeDecimation() override;
@@ -504,6 +521,7 @@ protected:
   vtkIdType NumberOfCollapses;
   vtkIdType StateMemory;
   int NumberOfThreadsUsed;
+  colordecimation::PhaseTimes* Phases;
 
 private:
   vtkColorHalfEdgeDecimation(const vtkColorHalfEdgeDecimation&) = delete;

@@ -383,7 +383,7 @@ void AddOutputOptions(CLI::App& app, Options& options)
     .add_option("--stats", options.Stats,
                 "write the figures as JSON (filter_seconds, input/output points\n"
                 "and triangles, reduction, metric, schedule, threads, state and\n"
-                "peak memory)")
+                "peak memory, the filter's phases and their seconds)")
     ->type_name("FILE.json");
   app
     .add_option("--snapshot", options.Snapshot,
@@ -864,6 +864,12 @@ Json Statistics(vtkColorHalfEdgeDecimation* filter, const Options& options, cons
   stats["state_memory_bytes"] = static_cast<long long>(filter->GetStateMemory());
   stats["filter_peak_memory_bytes"] = figures.FilterPeak;
   stats["peak_rss_bytes"] = figures.PeakRss;
+  stats["phases"] = Json::array(); // the filter's phase breakdown, in order
+  for (int i = 0; i < filter->GetNumberOfPhases(); ++i)
+  {
+    stats["phases"].push_back(
+      { { "name", filter->GetPhaseName(i) }, { "seconds", filter->GetPhaseSeconds(i) } });
+  }
   if (!options.Levels.empty() || !options.FromRecord.empty())
   {
     stats["levels"] = LevelList(figures.Levels);

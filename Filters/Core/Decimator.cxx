@@ -78,6 +78,7 @@ DecimatorStatistics Decimator::RunWith(const DecimatorInput& input, int64_t targ
   DecimatorStatistics stats;
   stats.InputTriangles = input.NumberOfTriangles;
   stats.TargetTriangles = std::max<int64_t>(targetTriangles, 0);
+  stats.Phases.Start();
   engine->Start(input, stats);
   if (this->Options.RecordCollapses)
   {
@@ -97,12 +98,14 @@ DecimatorStatistics Decimator::RunWith(const DecimatorInput& input, int64_t targ
   stats.Threads = engine->GetThreadsUsed();
   const bool renumbered = engine->IsRenumbered();
   engine->Stop();
+  stats.Phases.Lap("restore order");
   if (this->Options.PruneComponents && !stats.Aborted && !stats.ErrorBoundReached)
   {
     const PruneReport pruned =
       PruneComponents(engine->GetMesh(), input.Points, input.Fixed, stats.TargetTriangles);
     stats.PrunedComponents = pruned.Components;
     stats.PrunedTriangles = pruned.Triangles;
+    stats.Phases.Lap("prune");
   }
   stats.OutputTriangles = engine->GetMesh().GetNumberOfLiveFaces();
   stats.MetricBytesPerVertex = Metric::BytesPerVertex();

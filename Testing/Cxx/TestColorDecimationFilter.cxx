@@ -17,6 +17,7 @@
 #include "vtkPoints.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -417,6 +418,55 @@ CD_TEST_CASE(Abort)
   for (int schedule : { vtkColorHalfEdgeDecimation::Greedy, vtkColorHalfEdgeDecimation::Batched })
   {
     CheckAbort(schedule);
+  }
+}
+
+/// The phases of the last run as "name name ...", after checking that their seconds are
+/// non-negative and add up to at most `wall` and at least half of it.
+std::string CheckPhases(vtkColorHalfEdgeDecimation* filter, double wall)
+{
+  std::string names;
+  double sum = 0;
+  for (int i = 0; i < filter->GetNumberOfPhases(); ++i)
+  {
+    CD_CHECK(filter->GetPhaseSeconds(i) >= 0);
+    sum += filter->GetPhaseSeconds(i);
+    names += std::string(i ? " " : "") + filter->GetPhaseName(i);
+  }
+  std::cout << "  phases " << names << ": " << sum << " of " << wall << " s" << std::endl;
+  CD_CHECK_MSG(sum <= wall && sum >= 0.5 * wall, "phases " << sum << " s, run " << wall << " s");
+  return names;
+}
+
+CD_TEST_CASE(PhaseTimes)
+{
+  auto mesh = meshes::Icosphere(6, Pattern::SharpRegions);
+  const std::string setUp = "input spatial order connectivity frame reference normals error planes "
+                            "metric state first costing ";
+  const std::string greedy = setUp + "collapses restore order output";
+  const std::string batched =
+    setUp + "batch selection block collapses deferred collapses re-costing restore order output";
+  for (int schedule : { vtkColorHalfEdgeDecimation::Greedy, vtkColorHalfEdgeDecimation::Batched })
+  {
+    vtkNew<vtkColorHalfEdgeDecimation> filter;
+    filter->SetInputData(mesh);
+    filter->SetTargetReduction(0.9);
+    filter->SetCollapseSchedule(schedule);
+    const auto start = std::chrono::steady_clock::now();
+    filter->Update();
+    const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::string names = CheckPhases(filter, wall);
+    CD_CHECK_MSG(names == (schedule == vtkColorHalfEdgeDecimation::Greedy ? greedy : batched),
+                 names);
+    CD_CHECK(filter->GetPhaseName(-1) == nullptr && filter->GetPhaseSeconds(-1) == 0);
+    const int count = filter->GetNumberOfPhases();
+    CD_CHECK(filter->GetPhaseName(count) == nullptr && filter->GetPhaseSeconds(count) == 0);
+    // A run refused at the input check has no phases.
+    vtkNew<vtkPolyData> empty;
+    filter->SetInputData(empty);
+    filter->Update();
+    CD_CHECK(filter->GetNumberOfPhases() == 0);
   }
 }
 

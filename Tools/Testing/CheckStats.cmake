@@ -6,7 +6,7 @@
 #         [-DCHECK_FILE=mesh -DMESH_CHECK=ColorDecimationMeshCheck]
 #         -P CheckStats.cmake
 #
-# Every required key must be there with a plausible value; "threads" must be THREADS, or at
+# Every required key must be there with a plausible value, and a phase breakdown; "threads" must be THREADS, or at
 # least MIN_THREADS (at least 1 without either); with CHECK_FILE, the output counts in the
 # JSON must be those of the mesh file (read by MESH_CHECK). METRIC and SCHEDULE are checked
 # when given; each SETTINGS key must have that value in the JSON's "settings".
@@ -23,6 +23,21 @@ foreach (key IN ITEMS filter_seconds input_triangles output_triangles input_poin
     message(FATAL_ERROR "key '${key}' missing: ${problem}")
   endif ()
   set(${key} "${value}")
+endforeach ()
+
+# The filter's phase breakdown: a non-empty list of {name, seconds}.
+string(JSON phases ERROR_VARIABLE problem LENGTH "${json}" phases)
+if (problem OR phases LESS 1)
+  message(FATAL_ERROR "no phase breakdown ('phases'): ${problem}")
+endif ()
+math(EXPR last "${phases} - 1")
+foreach (i RANGE ${last})
+  foreach (key IN ITEMS name seconds)
+    string(JSON value ERROR_VARIABLE problem GET "${json}" phases ${i} ${key})
+    if (problem)
+      message(FATAL_ERROR "phase ${i} has no '${key}': ${problem}")
+    endif ()
+  endforeach ()
 endforeach ()
 
 function (expect condition_text)

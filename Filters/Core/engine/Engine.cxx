@@ -45,23 +45,28 @@ void EngineBase::SetUp(const DecimatorInput& input, bool useColor, DecimatorStat
 {
   const int32_t n = input.NumberOfPoints;
   this->ComputeOrder(input);
+  stats.Phases.Lap("spatial order");
   this->BuildMesh(input, stats);
+  stats.Phases.Lap("connectivity");
   const int32_t* source = this->Renumbered ? this->Order.OldVertex.data() : nullptr;
   this->Geometry = MeasureFrame(this->Mesh, input.Points, source, this->ThreadCount(size_t(n)));
   stats.MeanEdgeLength = this->Geometry.MeanEdgeLength;
   this->UseColor = useColor;
   FillHotRecords(this->Geometry, n, input.Points, useColor ? input.Colors : nullptr, source,
                  this->Options.Space, this->ThreadCount(size_t(n)), this->Hot);
+  stats.Phases.Lap("frame");
   // Each face slot's input normal bounds how far collapses may turn it, in total.
   CollapseRules::ComputeReferenceNormals(this->Mesh, this->Positions(), HotStride,
                                          this->ReferenceNormals,
                                          this->ThreadCount(size_t(input.NumberOfTriangles)));
+  stats.Phases.Lap("reference normals");
   // A record measures every collapse's error: an infinite bound, if none is given.
   const double bound = this->Options.MaximumError > 0 ? this->Options.MaximumError
     : this->Options.RecordCollapses                   ? std::numeric_limits<double>::infinity()
                                                       : 0.0;
   this->Errors.Initialize(this->Mesh, this->Positions(), HotStride, bound * this->Geometry.Scale,
                           this->ThreadCount(size_t(n)));
+  stats.Phases.Lap("error planes");
   this->Record.Clear();
   this->Record.InputPoints = n;
   this->Record.InputTriangles = input.NumberOfTriangles;

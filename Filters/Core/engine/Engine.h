@@ -218,6 +218,7 @@ public:
     this->TheMetric.Initialize(this->Mesh, this->Geometry, this->Hot, this->UseColor,
                                this->ThreadCount(3 * size_t(input.NumberOfTriangles)));
     this->Main.Rules.SetReferenceNormals(this->ReferenceNormals.data());
+    stats.Phases.Lap("metric state");
   }
   /// After the schedule: the workers and input normals freed, the order restored.
   void Stop()

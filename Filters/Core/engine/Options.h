@@ -9,6 +9,7 @@
 
 #include "mesh/HalfEdgeMesh.h"
 #include "metric/ColorSpace.h"
+#include "util/PhaseTimes.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -131,6 +132,7 @@ struct DecimatorStatistics
   int64_t SeamLockedVertices = 0;  ///< of those, locked (more than one twin)
   size_t StateBytes = 0;           ///< bytes held by the decimator's arrays
   size_t MetricBytesPerVertex = 0; ///< the metric's per-vertex state
+  PhaseTimes Phases;               ///< wall-clock seconds of each phase of the run
 };
 
 } // namespace colordecimation

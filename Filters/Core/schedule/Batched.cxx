@@ -61,6 +61,7 @@ public:
   void Run(DecimatorStatistics& stats, const ProgressFunction& progress)
   {
     this->Start();
+    stats.Phases.Lap("first costing");
     const HalfEdgeMesh& mesh = this->E.GetMesh();
     const int64_t startFaces = mesh.GetNumberOfLiveFaces();
     const int64_t toRemove = std::max<int64_t>(startFaces - stats.TargetTriangles, 1);
@@ -72,10 +73,13 @@ public:
       {
         break;
       }
+      stats.Phases.Lap("batch selection");
       this->Affected.clear();
       this->Rejected.clear();
       this->CollapseByBlocks(pass, stats);
+      stats.Phases.Lap("block collapses");
       this->CollapseDeferred(pass, stats);
+      stats.Phases.Lap("deferred collapses");
       ++stats.Passes;
       if (this->E.GetOptions().VerifyBlockFlags)
       {
@@ -86,6 +90,7 @@ public:
         break; // the pass that met MaximumError is the last
       }
       this->Recost(pass);
+      stats.Phases.Lap("re-costing");
       if (progress)
       {
         const double done = double(startFaces - mesh.GetNumberOfLiveFaces()) / toRemove;
@@ -95,6 +100,7 @@ public:
     stats.CollapseThreads = this->CollapseThreadsUsed;
     stats.WideCollapseThreads = this->WideCollapseThreadsUsed;
     stats.ActualError = this->E.ToInputDistance(this->LargestSquaredError);
+    stats.Phases.Lap("batch selection"); // the last, empty, selection
   }
 
 private:

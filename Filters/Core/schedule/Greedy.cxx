@@ -28,6 +28,7 @@ public:
   void Run(DecimatorStatistics& stats, const ProgressFunction& progress)
   {
     this->PushEveryVertex();
+    stats.Phases.Lap("first costing");
     const int64_t startFaces = this->E.GetMesh().GetNumberOfLiveFaces();
     const int64_t toRemove = std::max<int64_t>(startFaces - stats.TargetTriangles, 1);
     int64_t nextReport = 0;
@@ -51,6 +52,7 @@ public:
       }
     }
     stats.ActualError = this->E.ToInputDistance(this->LargestSquaredError);
+    stats.Phases.Lap("collapses");
   }
 
 private:
