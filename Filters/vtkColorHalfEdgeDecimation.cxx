@@ -415,7 +415,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   this->Phases->Lap("input");
 
   // 3. Decimate to the target, or until MaximumError or no valid collapse stops it.
-  const auto numTriangles = static_cast<vtkIdType>(mesh.Soup.SourceCell.size());
+  const vtkIdType numTriangles = mesh.Soup.Count();
   const int64_t target = colordecimation::adapter::TargetTriangles(
     this->TargetNumberOfTriangles, this->TargetReduction, numTriangles);
   this->UpdateProgress(0.05);

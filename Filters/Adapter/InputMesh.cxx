@@ -61,7 +61,7 @@ DecimatorInput InputMesh::CoreInput() const
   in.NumberOfPoints = static_cast<int32_t>(this->Points.size() / 3);
   in.Points = this->Points.data();
   in.Colors = this->Colors.empty() ? nullptr : this->Colors.data();
-  in.NumberOfTriangles = static_cast<int32_t>(this->Soup.SourceCell.size());
+  in.NumberOfTriangles = static_cast<int32_t>(this->Soup.Count());
   in.Triangles = this->Soup.Triangles.data();
   in.Fixed = this->Soup.HasFixed ? this->Soup.Fixed.data() : nullptr;
   return in;
@@ -124,19 +124,15 @@ bool CopyPlainTriangles(const Id* connectivity, vtkIdType numTriangles, vtkIdTyp
     return false;
   }
   soup.Triangles.resize(3 * nt);
-  soup.SourceCell.resize(nt);
+  soup.SourceCell = Buffer<vtkIdType>(); // triangle f is cell firstCell + f
+  soup.FirstCell = firstCell;
   int32_t* triangles = soup.Triangles.data();
-  vtkIdType* sources = soup.SourceCell.data();
   ParallelFor(nt, threads,
-              [connectivity, triangles, sources, firstCell](size_t begin, size_t end, int)
+              [connectivity, triangles](size_t begin, size_t end, int)
               {
                 for (size_t i = 3 * begin; i < 3 * end; ++i)
                 {
                   triangles[i] = static_cast<int32_t>(connectivity[i]);
-                }
-                for (size_t f = begin; f < end; ++f)
-                {
-                  sources[f] = firstCell + static_cast<vtkIdType>(f);
                 }
               });
   return true;
@@ -519,7 +515,7 @@ bool ReadGeometry(vtkObject* self, vtkPolyData* input, int threads, InputMesh& m
                                     << " triangles that repeat a point and " << soup.BadCells
                                     << " polygons with fewer than 3 points.");
   }
-  const auto numTriangles = static_cast<vtkIdType>(soup.SourceCell.size());
+  const vtkIdType numTriangles = soup.Count();
   if (numTriangles > std::numeric_limits<int32_t>::max() / 3)
   {
     vtkErrorWithObjectMacro(self, << "Too many triangles (" << numTriangles << ").");

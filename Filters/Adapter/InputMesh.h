@@ -30,7 +30,10 @@ namespace adapter
 struct TriangleSoup
 {
   Buffer<int32_t> Triangles;
+  /// The input cell of each triangle; empty when triangle f is cell FirstCell + f (polygons
+  /// that are all triangles: 8 bytes a triangle saved).
   Buffer<vtkIdType> SourceCell;
+  vtkIdType FirstCell = 0;
   vtkIdType Polygons = 0;    ///< cells with more than 3 points that were triangulated
   vtkIdType Strips = 0;      ///< strips decomposed
   vtkIdType Degenerate = 0;  ///< triangles with a repeated point, dropped
@@ -44,6 +47,8 @@ struct TriangleSoup
 
   /// Add the triangle `ids` of input cell `cell` (dropped if it repeats a point).
   void Add(const vtkIdType* ids, vtkIdType cell, vtkIdType numPoints);
+  /// The number of triangles.
+  vtkIdType Count() const { return static_cast<vtkIdType>(this->Triangles.size() / 3); }
 };
 
 struct InputMesh

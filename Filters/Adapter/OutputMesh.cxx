@@ -222,29 +222,31 @@ void WriteTriangles(const Faces& faces, const TriangleSoup& soup, const UsedPoin
   }
   const vtkIdType* newId = used.NewId.data();
   const vtkIdType* before = used.TrianglesBefore.data();
-  const vtkIdType* cell = soup.SourceCell.data();
-  ParallelFor(static_cast<size_t>(faces.Count()), used.FaceThreads,
-              [faces, points, source, target, newId, before, cell](size_t begin, size_t end, int t)
-              {
-                vtkIdType next = before[t];
-                for (size_t f = begin; f < end; ++f)
-                {
-                  int32_t tri[3];
-                  if (faces.Get(static_cast<int32_t>(f), tri))
-                  {
-                    for (int k = 0; k < 3; ++k)
-                    {
-                      points[3 * next + k] = newId[tri[k]];
-                    }
-                    if (source)
-                    {
-                      source[next] = cell[f];
-                      target[next] = next;
-                    }
-                    ++next;
-                  }
-                }
-              });
+  const vtkIdType* cell = soup.SourceCell.empty() ? nullptr : soup.SourceCell.data();
+  const vtkIdType firstCell = soup.FirstCell;
+  ParallelFor(
+    static_cast<size_t>(faces.Count()), used.FaceThreads,
+    [faces, points, source, target, newId, before, cell, firstCell](size_t begin, size_t end, int t)
+    {
+      vtkIdType next = before[t];
+      for (size_t f = begin; f < end; ++f)
+      {
+        int32_t tri[3];
+        if (faces.Get(static_cast<int32_t>(f), tri))
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            points[3 * next + k] = newId[tri[k]];
+          }
+          if (source)
+          {
+            source[next] = cell ? cell[f] : firstCell + static_cast<vtkIdType>(f);
+            target[next] = next;
+          }
+          ++next;
+        }
+      }
+    });
   vtkNew<vtkCellArray> polys;
   polys->SetData(3, connectivity);
   output->SetPolys(polys);
@@ -461,8 +463,8 @@ vtkIdType WriteLevel(vtkObject* self, vtkPolyData* input, const InputMesh& mesh,
                      const std::vector<int32_t>& where, const char* originalIdsName, int threads,
                      vtkPolyData* output)
 {
-  const LevelFaces faces{ mesh.Soup.Triangles.data(),
-                          static_cast<int32_t>(mesh.Soup.SourceCell.size()), where.data() };
+  const LevelFaces faces{ mesh.Soup.Triangles.data(), static_cast<int32_t>(mesh.Soup.Count()),
+                          where.data() };
   return Write(self, input, mesh, faces, nullptr, originalIdsName, threads, output);
 }
 

@@ -219,7 +219,7 @@ MeshIdentity Identify(const InputMesh& mesh)
 {
   MeshIdentity identity;
   identity.Points = static_cast<vtkIdType>(mesh.Points.size() / 3);
-  identity.Triangles = static_cast<vtkIdType>(mesh.Soup.SourceCell.size());
+  identity.Triangles = mesh.Soup.Count();
   uint64_t h = 0xcbf29ce484222325ULL;
   h = HashWords(mesh.Points.data(), mesh.Points.size() * sizeof(double), h);
   h = HashWords(mesh.Soup.Triangles.data(), mesh.Soup.Triangles.size() * sizeof(int32_t), h);
