@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Levels of detail from one run against one plain run, on the same mesh, in alternating rounds
-# (docs/BENCHMARK-LOD.md has the figures and the command that made them).
+# (docs/BENCHMARK.md, "Levels of detail from one run", has the figures and the commands).
 #
 # Usage: scripts/bench-lod.sh [MESH] [ROUNDS]   (default: the 7 mm kitchen of ../shared/data, 5)
 #
