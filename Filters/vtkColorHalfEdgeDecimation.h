@@ -472,7 +472,8 @@ public:
    * Greedy; "batch selection", "block collapses", "deferred collapses", "re-costing" for
    * Batched, each summed over the passes), "restore order", "prune" (with PruneComponents)
    * and "output" (the output mesh and the collapse record). Together they cover the
-   * execution. An index out of range gives nullptr and 0.
+   * execution but for bookkeeping between the filter and the decimation (microseconds). An
+   * index out of range gives nullptr and 0.
    */
   int GetNumberOfPhases() const;
   const char* GetPhaseName(int index) const;

@@ -1829,7 +1829,7 @@ CD_TEST_CASE(RulesDegenerate)
 CD_TEST_CASE(RulesRounding)
 {
   // The fan of RulesDegenerate at z = 1000, where a float coordinate is rounded by up to
-  // 3e-5 (x and y, below 2, by up to 1.2e-7).
+  // 3e-5 (x and y, below 2, by up to 6e-8).
   const int32_t fan[15] = { 0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5, 0, 5, 1 };
   const float z = 1000;
   // A, B and C on the line A + t (-1, 1, 1/3): the floats of z + 1/3 and z + 2/3 leave

@@ -166,8 +166,9 @@ inline double RoundingLever(const double e[3], const double n[3], const double e
 /// d . (e_c x n) / |n|, e_c the edge opposite c, so the area can reach zero only if
 /// |n|^2 <= sum_c sum_k eta_k |(e_c x n)_k|. Per axis, because a triangle far from the origin
 /// along one axis is rounded coarsely along that axis only, which moves its area only if its
-/// plane is not across that axis. A bound over all axes at once ((|fa| + |fb|)^2 <=
-/// 2 (fa2 + fb2)) rules out most triangles first.
+/// plane is not across that axis. Refused only when the bound over all axes at once
+/// (|n|^2 <= 2 noise^2 (fa2 + fb2), noise the largest eta_k) says so too; it is tested first,
+/// as it rules out most triangles cheaply.
 inline bool WithinRounding(const double p1[3], const float* pa, const float* pb, const double n[3],
                            double newLength2, const double fa[3], const double fb[3], double fa2,
                            double fb2)

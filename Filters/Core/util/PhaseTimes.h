@@ -51,7 +51,8 @@ public:
     this->Phases.push_back({ name, seconds });
   }
 
-  /// Add another run's phases after these (the time since this one's last Lap stays open).
+  /// Add another run's phases after these; the next Lap measures from now (the time since
+  /// this one's last Lap, spent in the other run's set-up before its Start, is not counted).
   void Append(const PhaseTimes& other)
   {
     this->Phases.insert(this->Phases.end(), other.Phases.begin(), other.Phases.end());
