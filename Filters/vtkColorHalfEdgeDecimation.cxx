@@ -236,7 +236,8 @@ colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, 
 }
 
 /// The collapse record into `table` (port 1), when asked for; empty otherwise.
-void WriteRecord(vtkColorHalfEdgeDecimation* self, const InputMesh& mesh,
+void WriteRecord(vtkColorHalfEdgeDecimation* self,
+                 const colordecimation::adapter::MeshIdentity& identity,
                  const colordecimation::Decimator& decimator, vtkTable* table)
 {
   if (!table || !self->GetGenerateCollapseRecord())
@@ -249,8 +250,7 @@ void WriteRecord(vtkColorHalfEdgeDecimation* self, const InputMesh& mesh,
                                        "move the surviving point): the record is empty.");
     return;
   }
-  colordecimation::adapter::WriteRecordTable(decimator.GetRecord(),
-                                             colordecimation::adapter::Identify(mesh),
+  colordecimation::adapter::WriteRecordTable(decimator.GetRecord(), identity,
                                              self->GetCollapseScheduleAsString(), table);
 }
 
@@ -414,8 +414,12 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   FixSharedPoints(this, outputVector->GetInformationObject(0), mesh);
   this->Phases->Lap("input");
 
-  // 3. Decimate to the target, or until MaximumError or no valid collapse stops it.
+  // 3. Decimate to the target, or until MaximumError or no valid collapse stops it. The core
+  // frees the input's copies once it has read them (the record's identity is taken first).
   const vtkIdType numTriangles = mesh.Soup.Count();
+  const colordecimation::adapter::MeshIdentity identity =
+    this->GenerateCollapseRecord && !MovesPoints(this) ? colordecimation::adapter::Identify(mesh)
+                                                       : colordecimation::adapter::MeshIdentity();
   const int64_t target = colordecimation::adapter::TargetTriangles(
     this->TargetNumberOfTriangles, this->TargetReduction, numTriangles);
   this->UpdateProgress(0.05);
@@ -440,7 +444,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   const vtkIdType numOutTriangles =
     colordecimation::adapter::WriteOutput(this, input, mesh, decimator, written, output);
   this->ActualReduction = 1.0 - static_cast<double>(numOutTriangles) / numTriangles;
-  WriteRecord(this, mesh, decimator, vtkTable::GetData(outputVector, 1));
+  WriteRecord(this, identity, decimator, vtkTable::GetData(outputVector, 1));
   this->Phases->Lap("output");
   if (!this->GetAbortExecute())
   {

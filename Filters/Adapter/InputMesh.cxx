@@ -55,7 +55,7 @@ void TriangleSoup::Add(const vtkIdType* ids, vtkIdType cell, vtkIdType numPoints
   this->SourceCell.push_back(cell);
 }
 
-DecimatorInput InputMesh::CoreInput() const
+DecimatorInput InputMesh::CoreInput()
 {
   DecimatorInput in;
   in.NumberOfPoints = static_cast<int32_t>(this->Points.size() / 3);
@@ -64,6 +64,12 @@ DecimatorInput InputMesh::CoreInput() const
   in.NumberOfTriangles = static_cast<int32_t>(this->Soup.Count());
   in.Triangles = this->Soup.Triangles.data();
   in.Fixed = this->Soup.HasFixed ? this->Soup.Fixed.data() : nullptr;
+  in.ReleaseInput = [this]()
+  {
+    this->Points = Buffer<double>();
+    this->Soup.Triangles = Buffer<int32_t>();
+    this->Colors = std::vector<float>();
+  };
   return in;
 }
 

@@ -60,8 +60,12 @@ struct InputMesh
   /// The colour array's mapping to [0,1]: (x - offset) * scale, as { offset, scale }.
   double ColorMapping[2] = { 0.0, 0.0 };
 
-  /// The core's view of it (pointers into this mesh).
-  DecimatorInput CoreInput() const;
+  /**
+   * The core's view of it: pointers into this mesh, and a ReleaseInput that frees the points,
+   * colours and triangles once the core has its own copies (SourceCell, Fixed and the colour
+   * array's mapping stay for the output).
+   */
+  DecimatorInput CoreInput();
 };
 
 /**

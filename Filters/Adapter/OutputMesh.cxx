@@ -432,7 +432,7 @@ vtkIdType Write(vtkObject* self, vtkPolyData* input, const InputMesh& mesh, cons
   vtkPointData* outPD = output->GetPointData();
   outPD->CopyAllocate(inPD, used.Source->GetNumberOfIds());
   outPD->CopyData(inPD, used.Source, used.Target);
-  if (decimator && decimator->HasMovedVertices() && !mesh.Colors.empty())
+  if (decimator && decimator->HasMovedVertices() && mesh.ColorArray)
   {
     WriteMovedColors(mesh, *decimator, used, outPD);
   }

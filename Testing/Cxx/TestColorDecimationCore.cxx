@@ -1650,6 +1650,83 @@ CD_TEST_CASE(BatchedOneAtATimeIsGreedy)
   }
 }
 
+/// Face slots and removed vertices that differ between two runs (any metric).
+long long CountMeshDifferences(const Decimator& a, const Decimator& b)
+{
+  const HalfEdgeMesh& ma = a.GetMesh();
+  const HalfEdgeMesh& mb = b.GetMesh();
+  long long differences = 0;
+  for (int32_t f = 0; f < ma.GetNumberOfFaceSlots(); ++f)
+  {
+    int32_t ta[3], tb[3];
+    ma.GetFace(f, ta);
+    mb.GetFace(f, tb);
+    differences += std::equal(ta, ta + 3, tb) ? 0 : 1;
+  }
+  for (int32_t v = 0; v < ma.GetNumberOfVertices(); ++v)
+  {
+    differences += ma.IsRemoved(v) != mb.IsRemoved(v) ? 1 : 0;
+  }
+  return differences;
+}
+
+/**
+ * ReleaseInput is called once, after the set-up: a caller that then spoils its points,
+ * colours and triangles (as one that frees them would) gets the same decimation. Not called
+ * with PruneComponents, which reads the points at the end. The mesh is large enough to be
+ * decimated in a spatial order (the input read through the maps).
+ */
+CD_TEST_CASE(ReleaseInput)
+{
+  std::vector<double> points;
+  std::vector<float> colors;
+  std::vector<int32_t> triangles;
+  const DecimatorInput input = JitteredSphere(260, points, colors, triangles);
+  CD_CHECK(input.NumberOfPoints >= 65536);
+  const int64_t target = input.NumberOfTriangles / 10;
+  for (CollapseSchedule schedule : { CollapseSchedule::Greedy, CollapseSchedule::Batched })
+  {
+    for (ErrorMetric metric : { ErrorMetric::AttributeQuadric, ErrorMetric::HalfEdgeColor })
+    {
+      DecimatorOptions options;
+      options.Metric = metric;
+      options.Schedule = schedule;
+      Decimator kept(options);
+      const DecimatorStatistics a = kept.Run(input, target);
+      std::vector<double> p = points;
+      std::vector<float> c = colors;
+      std::vector<int32_t> t = triangles;
+      DecimatorInput spoiled = input;
+      spoiled.Points = p.data();
+      spoiled.Colors = c.data();
+      spoiled.Triangles = t.data();
+      int calls = 0;
+      spoiled.ReleaseInput = [&]()
+      {
+        ++calls;
+        std::fill(p.begin(), p.end(), std::numeric_limits<double>::quiet_NaN());
+        std::fill(c.begin(), c.end(), -1.0f);
+        std::fill(t.begin(), t.end(), -1);
+      };
+      Decimator released(options);
+      const DecimatorStatistics b = released.Run(spoiled, target);
+      CD_CHECK(calls == 1);
+      CD_CHECK(a.Collapses > input.NumberOfPoints / 3 && a.Collapses == b.Collapses);
+      const long long differences = CountMeshDifferences(kept, released);
+      CD_CHECK_MSG(differences == 0, differences << " differences after the release");
+
+      options.PruneComponents = true;
+      p = points;
+      c = colors;
+      t = triangles;
+      calls = 0;
+      Decimator pruned(options);
+      pruned.Run(spoiled, target);
+      CD_CHECK(calls == 0);
+    }
+  }
+}
+
 //------------------------------------------------------------------------------
 CD_TEST_CASE(RulesLinkCondition)
 {

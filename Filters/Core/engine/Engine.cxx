@@ -54,6 +54,10 @@ void EngineBase::SetUp(const DecimatorInput& input, bool useColor, DecimatorStat
   this->UseColor = useColor;
   FillHotRecords(this->Geometry, n, input.Points, useColor ? input.Colors : nullptr, source,
                  this->Options.Space, this->ThreadCount(size_t(n)), this->Hot);
+  if (input.ReleaseInput && !this->Options.PruneComponents)
+  {
+    input.ReleaseInput(); // the rest reads the engine's own copies
+  }
   stats.Phases.Lap("frame");
   // Each face slot's input normal bounds how far collapses may turn it, in total.
   CollapseRules::ComputeReferenceNormals(this->Mesh, this->Positions(), HotStride,

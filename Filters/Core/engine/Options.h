@@ -104,6 +104,12 @@ struct DecimatorInput
   int32_t NumberOfTriangles = 0;
   const int32_t* Triangles = nullptr; ///< 3 point ids per triangle, no repeated id
   const uint8_t* Fixed = nullptr;     ///< optional, 1 per point: non-zero points never collapse
+  /**
+   * Optional: called once the run has read Points, Colors and Triangles for the last time
+   * (after the frame of its set-up), so that the caller can free them before the decimation
+   * state grows. Not called with PruneComponents, which reads the points at the end.
+   */
+  std::function<void()> ReleaseInput;
 };
 
 struct DecimatorStatistics
