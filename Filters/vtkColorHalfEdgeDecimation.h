@@ -451,8 +451,8 @@ public:
 
   /**
    * Bytes held by the decimation's own arrays in the last execution (connectivity, input
-   * normals, the metric's 48 bytes per vertex, heap, the maps back from the spatial order of
-   * large meshes); input and output data sets not included.
+   * normals, the metric's per-vertex state, heap or keys, the maps back from the spatial order
+   * of large meshes); input and output data sets not included.
    */
   vtkGetMacro(StateMemory, vtkIdType);
 

@@ -21,7 +21,7 @@ const Metric* MetricOf(const EngineBase* engine)
 
 /**
  * Bytes held by the decimator's arrays. Connectivity 24 B/triangle + 5 B/vertex; reference
- * normals 12 B/triangle; the metric's state; hot record 32; Greedy: heap 16 per entry + 20 per
+ * normals 4 B/triangle; the metric's state; hot record 32; Greedy: heap 16 per entry + 20 per
  * vertex; Batched: key 8, stamp 4, the batch (at most a quarter of the vertices, 16 B each,
  * collected by the threads and then copied) 8, the list of affected vertices 4, the list of
  * live vertices and its shrunk copy 8, and the block flags 1; choice 4 + 1; moved flags 1 for
@@ -35,7 +35,7 @@ size_t StateBytes(const DecimatorOptions& options, const DecimatorInput& input, 
   const size_t n = size_t(input.NumberOfPoints), triangles = size_t(input.NumberOfTriangles);
   const size_t ordering = options.Schedule == CollapseSchedule::Batched ? 33 : 36;
   const size_t bound = options.MaximumError > 0 ? ErrorBound::BytesPerVertex : 0;
-  size_t bytes = (24 + 12 + (reoriented ? 1 : 0)) * triangles +
+  size_t bytes = (24 + sizeof(PackedNormal) + (reoriented ? 1 : 0)) * triangles +
     n *
       (5 + metricBytes + sizeof(HotVertex) + ordering + 4 + 1 + (moves ? 1 : 0) + bound +
        (seams ? 5 : 0));

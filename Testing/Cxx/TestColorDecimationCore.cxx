@@ -1518,8 +1518,8 @@ DecimatorInput JitteredSphere(int resolution, std::vector<double>& points,
   return input;
 }
 
-/// Faces, removed vertices, positions and metric state that differ between two runs.
-long long CountDifferences(const Decimator& a, const Decimator& b, ErrorMetric metric)
+/// Face slots and removed vertices that differ between two runs (any metric).
+long long CountMeshDifferences(const Decimator& a, const Decimator& b)
 {
   const HalfEdgeMesh& ma = a.GetMesh();
   const HalfEdgeMesh& mb = b.GetMesh();
@@ -1539,6 +1539,23 @@ long long CountDifferences(const Decimator& a, const Decimator& b, ErrorMetric m
   for (int32_t v = 0; v < ma.GetNumberOfVertices(); ++v)
   {
     differences += ma.IsRemoved(v) != mb.IsRemoved(v) ? 1 : 0;
+  }
+  return differences;
+}
+
+/// Faces, removed vertices, positions and metric state that differ between two runs.
+long long CountDifferences(const Decimator& a, const Decimator& b, ErrorMetric metric)
+{
+  const HalfEdgeMesh& ma = a.GetMesh();
+  const HalfEdgeMesh& mb = b.GetMesh();
+  if (ma.GetNumberOfFaceSlots() != mb.GetNumberOfFaceSlots() ||
+      ma.GetNumberOfVertices() != mb.GetNumberOfVertices())
+  {
+    return -1;
+  }
+  long long differences = CountMeshDifferences(a, b);
+  for (int32_t v = 0; v < ma.GetNumberOfVertices(); ++v)
+  {
     const float* pa = a.GetNormalizedPosition(v);
     const float* pb = b.GetNormalizedPosition(v);
     differences += std::equal(pa, pa + 3, pb) ? 0 : 1;
@@ -1648,26 +1665,6 @@ CD_TEST_CASE(BatchedOneAtATimeIsGreedy)
     CD_CHECK(c.OutputTriangles <= target && c.OutputTriangles >= target - 2);
     CD_CHECK(c.Passes > 1 && c.Passes < c.Collapses / 4);
   }
-}
-
-/// Face slots and removed vertices that differ between two runs (any metric).
-long long CountMeshDifferences(const Decimator& a, const Decimator& b)
-{
-  const HalfEdgeMesh& ma = a.GetMesh();
-  const HalfEdgeMesh& mb = b.GetMesh();
-  long long differences = 0;
-  for (int32_t f = 0; f < ma.GetNumberOfFaceSlots(); ++f)
-  {
-    int32_t ta[3], tb[3];
-    ma.GetFace(f, ta);
-    mb.GetFace(f, tb);
-    differences += std::equal(ta, ta + 3, tb) ? 0 : 1;
-  }
-  for (int32_t v = 0; v < ma.GetNumberOfVertices(); ++v)
-  {
-    differences += ma.IsRemoved(v) != mb.IsRemoved(v) ? 1 : 0;
-  }
-  return differences;
 }
 
 /**
@@ -1930,6 +1927,53 @@ CD_TEST_CASE(RulesRounding)
     across[3 * i + 2] = sliver[3 * i];
   }
   CD_CHECK(rules.Check(mesh, across, 0, 1) == CollapseVerdict::Legal);
+}
+
+/// The drift guard's reference normals in 4 bytes: axes exact, any direction within 1e-4
+/// radians, the length ignored, no direction for degenerate input.
+CD_TEST_CASE(PackedNormals)
+{
+  const double axes[6][3] = { { 1, 0, 0 },  { -1, 0, 0 }, { 0, 1, 0 },
+                              { 0, -1, 0 }, { 0, 0, 1 },  { 0, 0, -1 } };
+  for (const auto& axis : axes)
+  {
+    double n[3];
+    UnpackNormal(PackNormal(axis), n);
+    CD_CHECK(n[0] == axis[0] && n[1] == axis[1] && n[2] == axis[2]);
+  }
+  const double inf = std::numeric_limits<double>::infinity();
+  const double bad[3][3] = { { 0, 0, 0 },
+                             { std::numeric_limits<double>::quiet_NaN(), 0, 1 },
+                             { inf, 0, 0 } };
+  for (const auto& b : bad)
+  {
+    double n[3] = { 1, 1, 1 };
+    UnpackNormal(PackNormal(b), n);
+    CD_CHECK(n[0] == 0 && n[1] == 0 && n[2] == 0);
+  }
+  std::mt19937 rng(5);
+  std::normal_distribution<double> gauss;
+  double worst = 0;
+  int differentByLength = 0;
+  for (int i = 0; i < 100000; ++i)
+  {
+    const double d[3] = { gauss(rng), gauss(rng), gauss(rng) };
+    const double scaled[3] = { 1e-6 * d[0], 1e-6 * d[1], 1e-6 * d[2] };
+    const PackedNormal p = PackNormal(d);
+    const PackedNormal q = PackNormal(scaled);
+    differentByLength += (p.U != q.U || p.V != q.V) ? 1 : 0;
+    double n[3];
+    UnpackNormal(p, n);
+    const double cross[3] = { d[1] * n[2] - d[2] * n[1], d[2] * n[0] - d[0] * n[2],
+                              d[0] * n[1] - d[1] * n[0] };
+    const double angle =
+      std::atan2(std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]),
+                 d[0] * n[0] + d[1] * n[1] + d[2] * n[2]);
+    worst = std::max(worst, angle);
+  }
+  std::cout << "  largest angle after packing: " << worst << " rad" << std::endl;
+  CD_CHECK(worst < 1e-4);
+  CD_CHECK(differentByLength == 0);
 }
 
 CD_TEST_CASE(RulesBoundary)

@@ -155,7 +155,7 @@ void EngineBase::FindSeamsAndLocks(const DecimatorInput& input, DecimatorStatist
 
 void EngineBase::Finish(bool keepHot)
 {
-  this->ReferenceNormals = Buffer<float>();
+  this->ReferenceNormals = Buffer<PackedNormal>();
   this->Errors.Release();
   this->Seams.Release();
   if (this->Options.RecordCollapses)

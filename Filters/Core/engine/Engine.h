@@ -160,11 +160,11 @@ protected:
   bool Large = false;      ///< at least LargeMeshVertices points
   bool Renumbered = false; ///< the run works under SpatialOrder's ids
   SpatialOrder Order;
-  Buffer<float> ReferenceNormals; ///< the input normal of every face slot (CollapseRules)
-  ErrorBound Errors;              ///< the planes of MaximumError (empty without a bound)
-  SeamMap Seams;                  ///< the attribute seams (section 15)
-  std::vector<uint8_t> Flipped;   ///< per input triangle: reversed (empty: none was)
-  CollapseRecord Record;          ///< with RecordCollapses, after Finish
+  Buffer<PackedNormal> ReferenceNormals; ///< the input normal of every face slot (CollapseRules)
+  ErrorBound Errors;                     ///< the planes of MaximumError (empty without a bound)
+  SeamMap Seams;                         ///< the attribute seams (section 15)
+  std::vector<uint8_t> Flipped;          ///< per input triangle: reversed (empty: none was)
+  CollapseRecord Record;                 ///< with RecordCollapses, after Finish
   mutable int ThreadsUsed = 1;
 
 private:

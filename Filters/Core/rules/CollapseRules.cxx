@@ -36,6 +36,60 @@ bool TurnsTooFar(const double from[3], const double to[3], double toLength2, dou
 }
 } // namespace
 
+namespace
+{
+constexpr double PackScale = 32767.0;
+constexpr int16_t NoDirection = std::numeric_limits<int16_t>::min(); // never a packed value
+
+double SignOf(double x)
+{
+  return x >= 0 ? 1.0 : -1.0;
+}
+
+/// The octahedron's lower half onto the corners of its upper square, and back.
+void Fold(double& u, double& v)
+{
+  const double fu = (1.0 - std::abs(v)) * SignOf(u);
+  const double fv = (1.0 - std::abs(u)) * SignOf(v);
+  u = fu;
+  v = fv;
+}
+} // namespace
+
+PackedNormal PackNormal(const double n[3])
+{
+  const double l1 = std::abs(n[0]) + std::abs(n[1]) + std::abs(n[2]);
+  if (!(l1 > 0) || !std::isfinite(l1))
+  {
+    return { NoDirection, NoDirection };
+  }
+  double u = n[0] / l1, v = n[1] / l1;
+  if (n[2] < 0)
+  {
+    Fold(u, v);
+  }
+  return { static_cast<int16_t>(std::lround(u * PackScale)),
+           static_cast<int16_t>(std::lround(v * PackScale)) };
+}
+
+void UnpackNormal(PackedNormal packed, double n[3])
+{
+  if (packed.U == NoDirection)
+  {
+    n[0] = n[1] = n[2] = 0.0;
+    return;
+  }
+  double u = packed.U / PackScale, v = packed.V / PackScale;
+  const double z = 1.0 - std::abs(u) - std::abs(v);
+  if (z < 0)
+  {
+    Fold(u, v);
+  }
+  n[0] = u;
+  n[1] = v;
+  n[2] = z;
+}
+
 CollapseVerdict CollapseRules::Check(const HalfEdgeMesh& mesh, const float* positions, int32_t v0,
                                      int32_t v1, int stride)
 {
@@ -237,8 +291,8 @@ CollapseVerdict CollapseRules::CheckFan(const HalfEdgeMesh& mesh, const float* p
       }
       if (this->ReferenceNormals)
       {
-        const float* ref = this->ReferenceNormals + 3 * (h / 3);
-        const double refN[3] = { ref[0], ref[1], ref[2] };
+        double refN[3];
+        UnpackNormal(this->ReferenceNormals[h / 3], refN);
         if (TurnsTooFar(refN, newN, newLength2, this->Options.MinimumDriftCosine))
         {
           verdict = CollapseVerdict::Flip;
@@ -249,34 +303,25 @@ CollapseVerdict CollapseRules::CheckFan(const HalfEdgeMesh& mesh, const float* p
 }
 
 void CollapseRules::ComputeReferenceNormals(const HalfEdgeMesh& mesh, const float* positions,
-                                            int stride, Buffer<float>& normals, int threads)
+                                            int stride, Buffer<PackedNormal>& normals, int threads)
 {
   const int32_t numFaces = mesh.GetNumberOfFaceSlots();
-  normals.resize(3 * static_cast<size_t>(numFaces)); // every slot written below
-  float* out = normals.data();
+  normals.resize(static_cast<size_t>(numFaces)); // every slot written below
+  PackedNormal* out = normals.data();
   ParallelFor(static_cast<size_t>(numFaces), threads,
               [&mesh, positions, stride, out](size_t begin, size_t end, int)
               {
                 for (auto f = static_cast<int32_t>(begin); f < static_cast<int32_t>(end); ++f)
                 {
-                  std::fill_n(out + 3 * static_cast<size_t>(f), 3, 0.0f);
-                  if (!mesh.IsFaceAlive(f))
+                  double n[3] = { 0, 0, 0 };
+                  if (mesh.IsFaceAlive(f))
                   {
-                    continue;
+                    int32_t ids[3];
+                    mesh.GetFace(f, ids);
+                    TriangleNormal(positions + stride * ids[0], positions + stride * ids[1],
+                                   positions + stride * ids[2], n);
                   }
-                  int32_t ids[3];
-                  mesh.GetFace(f, ids);
-                  double n[3];
-                  TriangleNormal(positions + stride * ids[0], positions + stride * ids[1],
-                                 positions + stride * ids[2], n);
-                  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-                  if (length > 0 && std::isfinite(length))
-                  {
-                    for (int k = 0; k < 3; ++k)
-                    {
-                      out[3 * static_cast<size_t>(f) + k] = static_cast<float>(n[k] / length);
-                    }
-                  }
+                  out[f] = PackNormal(n);
                 }
               });
 }

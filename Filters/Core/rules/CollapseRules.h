@@ -41,6 +41,23 @@ struct CollapseRuleOptions
   double MinimumDriftCosine = -1.0;
 };
 
+/**
+ * A direction in 4 bytes: the octahedral map (the unit vector divided by its L1 norm, the
+ * lower half folded over the upper), 16 bits a coordinate. Unpacked, it is within 1e-4 radians
+ * of the packed direction; it keeps the drift guard's reference normals at 4 bytes a triangle
+ * instead of 12.
+ */
+struct PackedNormal
+{
+  int16_t U;
+  int16_t V;
+};
+
+/// `n` packed (any length; zero, NaN or infinite: "no direction").
+VTKCOLORDECIMATION_EXPORT PackedNormal PackNormal(const double n[3]);
+/// The direction of a PackedNormal, with L1 norm 1 (zero for "no direction").
+VTKCOLORDECIMATION_EXPORT void UnpackNormal(PackedNormal packed, double n[3]);
+
 /// Why a collapse was refused (for tests and statistics).
 enum class CollapseVerdict
 {
@@ -63,21 +80,21 @@ public:
   const CollapseRuleOptions& GetOptions() const { return this->Options; }
 
   /**
-   * The input triangles' unit normals (3 floats per face slot, zero for a degenerate
-   * triangle; see ComputeReferenceNormals), which bound the drift of each face slot's normal.
-   * Null (the default) disables that test. The array must outlive the checks.
+   * The input triangles' normals (one PackedNormal per face slot; see
+   * ComputeReferenceNormals), which bound the drift of each face slot's normal. Null (the
+   * default) disables that test. The array must outlive the checks.
    */
-  void SetReferenceNormals(const float* normals) { this->ReferenceNormals = normals; }
+  void SetReferenceNormals(const PackedNormal* normals) { this->ReferenceNormals = normals; }
 
   /**
-   * The unit normal of every live face slot of `mesh` (zero where the triangle is
-   * degenerate), for SetReferenceNormals. Kept per face slot rather than recomputed from the
-   * input's corners, so that the check reads one record instead of three vertices that may
-   * long have been collapsed away, and stays right when collapses move vertices. On `threads`
-   * threads (each face is computed alone: the same result for any number).
+   * The normal of every live face slot of `mesh` (none where the triangle is degenerate), for
+   * SetReferenceNormals. Kept per face slot rather than recomputed from the input's corners,
+   * so that the check reads one record instead of three vertices that may long have been
+   * collapsed away, and stays right when collapses move vertices. On `threads` threads (each
+   * face is computed alone: the same result for any number).
    */
   static void ComputeReferenceNormals(const HalfEdgeMesh& mesh, const float* positions, int stride,
-                                      Buffer<float>& normals, int threads = 1);
+                                      Buffer<PackedNormal>& normals, int threads = 1);
 
   /**
    * Full check of v0 -> v1. The position of vertex v is positions[stride * v + 0..2] (so that
@@ -127,7 +144,7 @@ private:
                            int32_t centre, int32_t other, const double newPosition[3]) const;
 
   CollapseRuleOptions Options;
-  const float* ReferenceNormals = nullptr;
+  const PackedNormal* ReferenceNormals = nullptr;
   std::vector<int32_t> Neighbors; ///< scratch, reused
 };
 
