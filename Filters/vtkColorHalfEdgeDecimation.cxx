@@ -112,7 +112,7 @@ bool IsPointArray(vtkColorHalfEdgeDecimation* self, const char* role, const char
 /// error) for a bad one. Without one, the decimation goes by geometry alone: quietly for a mesh
 /// without point scalars, with a warning when an array selected by name is not there.
 bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int association,
-                vtkIdType numPoints, InputMesh& mesh)
+                vtkIdType numPoints, int threads, InputMesh& mesh)
 {
   const char* name = array && array->GetName() ? array->GetName() : "";
   if (!array)
@@ -141,7 +141,7 @@ bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int assoc
     return false;
   }
   const vtkIdType nonFinite =
-    colordecimation::adapter::ConvertColors(array, mesh.Colors, mesh.ColorMapping);
+    colordecimation::adapter::ConvertColors(array, mesh.Colors, mesh.ColorMapping, threads);
   if (nonFinite > 0)
   {
     vtkWarningWithObjectMacro(self, << nonFinite
@@ -406,7 +406,8 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
     : nullptr;
   vtkDataArray* locks = this->GetLockArray(inputVector, lockAssociation);
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  if ((this->ErrorMetric != Geometry && !ReadColors(this, colors, association, numPoints, mesh)) ||
+  if ((this->ErrorMetric != Geometry &&
+       !ReadColors(this, colors, association, numPoints, threads, mesh)) ||
       !ReadLocks(this, locks, lockAssociation, numPoints, mesh))
   {
     return 1;

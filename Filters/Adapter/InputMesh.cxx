@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace colordecimation
 {
@@ -68,7 +69,7 @@ DecimatorInput InputMesh::CoreInput()
   {
     this->Points = Buffer<double>();
     this->Soup.Triangles = Buffer<int32_t>();
-    this->Colors = std::vector<float>();
+    this->Colors = Buffer<float>();
   };
   return in;
 }
@@ -402,61 +403,98 @@ vtkIdType LockPoints(vtkDataArray* locks, TriangleSoup& soup)
   return locked;
 }
 
-vtkIdType ConvertColors(vtkDataArray* array, std::vector<float>& rgb, double mapping[2])
+namespace
 {
-  const vtkIdType n = array->GetNumberOfTuples();
+/// The smallest and largest finite value of components [0, used) of `array`, by ranges of
+/// tuples on `threads` threads (min and max do not depend on the order).
+void FiniteRange(vtkDataArray* array, int used, int threads, double& lo, double& hi)
+{
+  const size_t n = static_cast<size_t>(array->GetNumberOfTuples());
+  std::vector<double> los(size_t(threads), std::numeric_limits<double>::infinity());
+  std::vector<double> his(size_t(threads), -std::numeric_limits<double>::infinity());
+  double* loOut = los.data();
+  double* hiOut = his.data();
+  ParallelFor(n, threads,
+              [array, used, loOut, hiOut](size_t begin, size_t end, int t)
+              {
+                double l = loOut[t], h = hiOut[t];
+                for (size_t i = begin; i < end; ++i)
+                {
+                  for (int k = 0; k < used; ++k)
+                  {
+                    const double x = array->GetComponent(static_cast<vtkIdType>(i), k);
+                    if (std::isfinite(x))
+                    {
+                      l = std::min(l, x);
+                      h = std::max(h, x);
+                    }
+                  }
+                }
+                loOut[t] = l;
+                hiOut[t] = h;
+              });
+  lo = *std::min_element(los.begin(), los.end());
+  hi = *std::max_element(his.begin(), his.end());
+}
+} // namespace
+
+vtkIdType ConvertColors(vtkDataArray* array, Buffer<float>& rgb, double mapping[2], int threads)
+{
+  const size_t n = static_cast<size_t>(array->GetNumberOfTuples());
   const int comps = array->GetNumberOfComponents();
   const int used = comps >= 3 ? 3 : 1; // RGB(A...) or a grey value
-  rgb.assign(3 * static_cast<size_t>(n), 0.0f);
-  vtkIdType nonFinite = 0;
+  rgb.resize(3 * n);                   // every value written below
+  float* out = rgb.data();
+  // Arrays of one contiguous buffer are read on all threads; others (implicit, or
+  // structure-of-arrays) on one.
+  threads = array->HasStandardMemoryLayout() ? ThreadsFor(n, threads, 1 << 16) : 1;
 
   mapping[0] = 0.0;
   mapping[1] = 1.0 / 255.0;
   if (auto* uc = vtkUnsignedCharArray::FastDownCast(array))
   {
     const unsigned char* src = uc->GetPointer(0);
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        rgb[3 * i + k] = src[comps * i + (used == 3 ? k : 0)] / 255.0f;
-      }
-    }
+    ParallelFor(n, threads,
+                [src, comps, used, out](size_t begin, size_t end, int)
+                {
+                  for (size_t i = begin; i < end; ++i)
+                  {
+                    for (int k = 0; k < 3; ++k)
+                    {
+                      out[3 * i + k] = src[comps * i + (used == 3 ? k : 0)] / 255.0f;
+                    }
+                  }
+                });
     return 0;
   }
 
-  // Range of the components used, finite values only.
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -lo;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    for (int k = 0; k < used; ++k)
-    {
-      const double x = array->GetComponent(i, k);
-      if (std::isfinite(x))
-      {
-        lo = std::min(lo, x);
-        hi = std::max(hi, x);
-      }
-    }
-  }
+  double lo = 0.0, hi = 0.0;
+  FiniteRange(array, used, threads, lo, hi);
   const bool unit = lo >= 0.0 && hi <= 1.0;
   const double offset = unit ? 0.0 : lo;
   const double scale = unit ? 1.0 : (hi > lo ? 1.0 / (hi - lo) : 0.0);
   mapping[0] = offset;
   mapping[1] = scale;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    bool finite = true;
-    for (int k = 0; k < 3; ++k)
-    {
-      const double x = array->GetComponent(i, used == 3 ? k : 0);
-      finite = finite && std::isfinite(x);
-      rgb[3 * i + k] = std::isfinite(x) ? static_cast<float>((x - offset) * scale) : 0.0f;
-    }
-    nonFinite += finite ? 0 : 1;
-  }
-  return nonFinite;
+  std::vector<vtkIdType> nonFinite(size_t(threads), 0);
+  vtkIdType* counts = nonFinite.data();
+  ParallelFor(n, threads,
+              [array, used, offset, scale, out, counts](size_t begin, size_t end, int t)
+              {
+                for (size_t i = begin; i < end; ++i)
+                {
+                  bool finite = true;
+                  for (int k = 0; k < 3; ++k)
+                  {
+                    const double x =
+                      array->GetComponent(static_cast<vtkIdType>(i), used == 3 ? k : 0);
+                    finite = finite && std::isfinite(x);
+                    out[3 * i + k] =
+                      std::isfinite(x) ? static_cast<float>((x - offset) * scale) : 0.0f;
+                  }
+                  counts[t] += finite ? 0 : 1;
+                }
+              });
+  return std::accumulate(nonFinite.begin(), nonFinite.end(), vtkIdType(0));
 }
 
 void WriteColor(vtkDataArray* array, vtkIdType i, const double rgb[3], const double mapping[2])

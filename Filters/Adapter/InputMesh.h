@@ -55,7 +55,7 @@ struct InputMesh
 {
   Buffer<double> Points; ///< 3 per point
   TriangleSoup Soup;
-  std::vector<float> Colors;          ///< 3 per point, RGB in [0,1]; empty without colour
+  Buffer<float> Colors;               ///< 3 per point, RGB in [0,1]; empty without colour
   vtkDataArray* ColorArray = nullptr; ///< the input's colour array, if any
   /// The colour array's mapping to [0,1]: (x - offset) * scale, as { offset, scale }.
   double ColorMapping[2] = { 0.0, 0.0 };
@@ -107,11 +107,12 @@ vtkIdType FixOpenBoundary(TriangleSoup& soup);
 vtkIdType LockPoints(vtkDataArray* locks, TriangleSoup& soup);
 
 /**
- * RGB in [0,1], 3 floats per point (section 2). Returns the number of tuples holding a NaN or
- * infinite value (measured as 0, carried through unchanged). The mapping used is
- * (x - offset) * scale; it is returned in `mapping` (offset, scale).
+ * RGB in [0,1], 3 floats per point (section 2), on `threads` threads for an array of one
+ * contiguous buffer. Returns the number of tuples holding a NaN or infinite value (measured
+ * as 0, carried through unchanged). The mapping used is (x - offset) * scale; it is returned
+ * in `mapping` (offset, scale).
  */
-vtkIdType ConvertColors(vtkDataArray* array, std::vector<float>& rgb, double mapping[2]);
+vtkIdType ConvertColors(vtkDataArray* array, Buffer<float>& rgb, double mapping[2], int threads);
 
 /**
  * Writes an RGB colour in [0,1] into tuple `i` of a colour array, in the array's own type and

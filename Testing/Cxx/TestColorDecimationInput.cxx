@@ -20,6 +20,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 using namespace colordecimation;
@@ -233,6 +234,57 @@ CD_TEST_CASE(ColorFloatRange)
   SetColors(shifted, s);
   const RunResult rs = Decimate(shifted, 0.9);
   CD_CHECK(Result(rs) == Result(ru));
+}
+
+/**
+ * The colours are converted on the filter's threads, by ranges of points: on a mesh large
+ * enough for two ranges, one thread and two give the same decimation and the same NaN count,
+ * for unsigned char, for a float range whose ends lie in the last range only (a range taken
+ * from the first alone would map every colour differently) and for a one-component grey.
+ */
+CD_TEST_CASE(ColorConversionThreads)
+{
+  auto mesh = meshes::Grid(420, 400, Pattern::SharpRegions);
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  CD_CHECK(n >= 2 * 65536);
+  vtkNew<vtkFloatArray> wide;
+  wide->SetNumberOfComponents(3);
+  wide->SetNumberOfTuples(n);
+  wide->SetName("Wide");
+  vtkNew<vtkDoubleArray> grey;
+  grey->SetNumberOfTuples(n);
+  grey->SetName("Grey");
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      wide->SetValue(3 * i + k, 100.0f + 10.0f * RGB(mesh)->GetValue(3 * i + k));
+    }
+    grey->SetValue(i, 0.2 + 0.002 * RGB(mesh)->GetValue(3 * i));
+  }
+  wide->SetValue(3 * (n - 1), -4000.0f); // the ends of the range, in the last points
+  wide->SetValue(3 * (n - 2) + 1, 9000.0f);
+  wide->SetValue(3 * (n / 3), std::numeric_limits<float>::quiet_NaN()); // one NaN a range
+  wide->SetValue(3 * (n - 3) + 2, std::numeric_limits<float>::quiet_NaN());
+  vtkDataArray* arrays[] = { RGB(mesh), wide, grey };
+  for (vtkDataArray* array : arrays)
+  {
+    auto input = Copy(mesh);
+    SetColors(input, array);
+    const auto threads = [](int t)
+    { return [t](vtkColorHalfEdgeDecimation* f) { f->SetNumberOfThreads(t); }; };
+    const RunResult one = Decimate(input, 0.9, threads(1));
+    const RunResult two = Decimate(input, 0.9, threads(2));
+    std::cout << "  " << array->GetName() << ": " << two.Output->GetNumberOfPolys()
+              << " triangles, " << two.Warnings << " warning(s)" << std::endl;
+    CD_CHECK(one.Errors == 0 && two.Errors == 0);
+    CD_CHECK(two.Filter->GetNumberOfThreadsUsed() == 2);
+    CD_CHECK(Result(one) == Result(two));
+    CD_CHECK(one.Warnings == two.Warnings);
+    CD_CHECK(
+      array != wide.Get() ||
+      (one.HasWarning("2 colour tuples hold NaN") && two.HasWarning("2 colour tuples hold NaN")));
+  }
 }
 
 CD_TEST_CASE(ColorOneComponent)
