@@ -178,6 +178,8 @@ bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObjec
     vtkErrorMacro(<< "The collapse record cannot be used: " << why << ". Output is empty.");
     return false;
   }
+  // The levels are written from the input's own points: the copy was for the check alone.
+  cache.Mesh.Points = colordecimation::Buffer<double>();
   cache.Input = GeometryKey(input);
   cache.RecordData = record;
   cache.RecordTime = RecordTime(record);
