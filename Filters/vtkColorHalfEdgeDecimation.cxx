@@ -235,6 +235,16 @@ colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, 
   return options;
 }
 
+/// The input's identity for the collapse record, when there will be one (taken before the run,
+/// which frees the copies it is computed from).
+colordecimation::adapter::MeshIdentity RecordIdentity(vtkColorHalfEdgeDecimation* self,
+                                                      const InputMesh& mesh)
+{
+  return self->GetGenerateCollapseRecord() && !MovesPoints(self)
+    ? colordecimation::adapter::Identify(mesh)
+    : colordecimation::adapter::MeshIdentity();
+}
+
 /// The collapse record into `table` (port 1), when asked for; empty otherwise.
 void WriteRecord(vtkColorHalfEdgeDecimation* self,
                  const colordecimation::adapter::MeshIdentity& identity,
@@ -415,12 +425,9 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   FixSharedPoints(this, outputVector->GetInformationObject(0), mesh);
   this->Phases->Lap("input");
 
-  // 3. Decimate to the target, or until MaximumError or no valid collapse stops it. The core
-  // frees the input's copies once it has read them (the record's identity is taken first).
+  // 3. Decimate to the target, or until MaximumError or no valid collapse stops it.
   const vtkIdType numTriangles = mesh.Soup.Count();
-  const colordecimation::adapter::MeshIdentity identity =
-    this->GenerateCollapseRecord && !MovesPoints(this) ? colordecimation::adapter::Identify(mesh)
-                                                       : colordecimation::adapter::MeshIdentity();
+  const colordecimation::adapter::MeshIdentity identity = RecordIdentity(this, mesh);
   const int64_t target = colordecimation::adapter::TargetTriangles(
     this->TargetNumberOfTriangles, this->TargetReduction, numTriangles);
   this->UpdateProgress(0.05);

@@ -178,8 +178,10 @@ bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObjec
     vtkErrorMacro(<< "The collapse record cannot be used: " << why << ". Output is empty.");
     return false;
   }
-  // The levels are written from the input's own points: the copy was for the check alone.
+  // The levels are written from the input's own points: the copy was for the check alone,
+  // as were the fixed flags.
   cache.Mesh.Points = colordecimation::Buffer<double>();
+  cache.Mesh.Soup.Fixed = std::vector<uint8_t>();
   cache.Input = GeometryKey(input);
   cache.RecordData = record;
   cache.RecordTime = RecordTime(record);

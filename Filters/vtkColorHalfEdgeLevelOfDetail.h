@@ -42,7 +42,7 @@
  * ParaView slider) only redoes the linear extraction; the progress text "Reading the mesh and
  * checking the collapse record" says when they are read. What is kept: the triangles (12
  * bytes each; 8 more with their cell ids when the cells are not all triangles), the record
- * (32 bytes a collapse) and 5 bytes a point (the level's point map and flags).
+ * (32 bytes a collapse) and the level's point map (4 bytes a point).
  *
  * @sa
  * vtkColorHalfEdgeDecimation

@@ -480,6 +480,7 @@ vtkIdType ConvertColors(vtkDataArray* array, Buffer<float>& rgb, double mapping[
   ParallelFor(n, threads,
               [array, used, offset, scale, out, counts](size_t begin, size_t end, int t)
               {
+                vtkIdType bad = 0;
                 for (size_t i = begin; i < end; ++i)
                 {
                   bool finite = true;
@@ -491,8 +492,9 @@ vtkIdType ConvertColors(vtkDataArray* array, Buffer<float>& rgb, double mapping[
                     out[3 * i + k] =
                       std::isfinite(x) ? static_cast<float>((x - offset) * scale) : 0.0f;
                   }
-                  counts[t] += finite ? 0 : 1;
+                  bad += finite ? 0 : 1;
                 }
+                counts[t] = bad;
               });
   return std::accumulate(nonFinite.begin(), nonFinite.end(), vtkIdType(0));
 }

@@ -62,8 +62,9 @@ struct InputMesh
 
   /**
    * The core's view of it: pointers into this mesh, and a ReleaseInput that frees the points,
-   * colours and triangles once the core has its own copies (SourceCell, Fixed and the colour
-   * array's mapping stay for the output).
+   * colours and triangles once the core has its own copies (the source cells and the colour
+   * array's mapping stay for the output). For one run: the mesh must outlive it, and a second
+   * run needs a new mesh.
    */
   DecimatorInput CoreInput();
 };

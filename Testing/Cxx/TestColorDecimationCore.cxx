@@ -1873,6 +1873,39 @@ CD_TEST_CASE(RulesFlip)
            CollapseVerdict::Flip);
 }
 
+/// The drift guard reads the packed reference normals: a flat fan whose reference normals lean
+/// by 74.9 degrees may collapse, by 75.1 degrees it may not (the guard's bound is 75).
+CD_TEST_CASE(RulesDrift)
+{
+  const double pi = 3.14159265358979323846;
+  const int32_t fan[15] = { 0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5, 0, 5, 1 };
+  const float flat[18] = { 0, 0, 0, 1, 0, 0, 0.2f, 0.2f, 0, -1, 1, 0, -1, -1, 0, 0.2f, -0.2f, 0 };
+  HalfEdgeMesh mesh;
+  mesh.Build(6, fan, 5);
+  CollapseRuleOptions options;
+  options.MinimumNormalCosine = 0.0;
+  options.MinimumDriftCosine = std::cos(75.0 * pi / 180.0);
+  for (const double degrees : { 74.9, 75.1 })
+  {
+    // The reference: the same fan turned about the x axis, normals (0, -sin, cos).
+    const double a = degrees * pi / 180.0;
+    std::vector<float> turned(flat, flat + 18);
+    for (int v = 0; v < 6; ++v)
+    {
+      turned[3 * v + 1] = static_cast<float>(flat[3 * v + 1] * std::cos(a));
+      turned[3 * v + 2] = static_cast<float>(flat[3 * v + 1] * std::sin(a));
+    }
+    Buffer<PackedNormal> normals;
+    CollapseRules::ComputeReferenceNormals(mesh, turned.data(), 3, normals);
+    CollapseRules rules(options);
+    rules.SetReferenceNormals(normals.data());
+    const CollapseVerdict verdict = rules.Check(mesh, flat, 0, 2);
+    CD_CHECK(verdict == (degrees < 75 ? CollapseVerdict::Legal : CollapseVerdict::Flip));
+    rules.SetReferenceNormals(nullptr); // no reference, no drift guard
+    CD_CHECK(rules.Check(mesh, flat, 0, 2) == CollapseVerdict::Legal);
+  }
+}
+
 CD_TEST_CASE(RulesDegenerate)
 {
   // Centre at the origin, ring A(1,0) B(0,1) C(-1,2) D(-1,-1) E(0.5,-1): A, B and C are
@@ -1940,6 +1973,19 @@ CD_TEST_CASE(PackedNormals)
     double n[3];
     UnpackNormal(PackNormal(axis), n);
     CD_CHECK(n[0] == axis[0] && n[1] == axis[1] && n[2] == axis[2]);
+  }
+  // On the folds (z < 0 with x or y zero, a signed zero, z just below 0).
+  const double folds[6][3] = { { 0, 1, -1 },  { 0, -1, -1 },   { 1, 0, -1 },
+                               { -1, 0, -1 }, { -0.0, 1, -1 }, { 0, 1, -1e-9 } };
+  for (const auto& f : folds)
+  {
+    double n[3];
+    UnpackNormal(PackNormal(f), n);
+    const double l1 = std::abs(f[0]) + std::abs(f[1]) + std::abs(f[2]);
+    for (int k = 0; k < 3; ++k)
+    {
+      CD_CHECK_NEAR(n[k], f[k] / l1, 1e-4);
+    }
   }
   const double inf = std::numeric_limits<double>::infinity();
   const double bad[3][3] = { { 0, 0, 0 },

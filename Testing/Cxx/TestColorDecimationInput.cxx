@@ -15,6 +15,7 @@
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkSOADataArrayTemplate.h"
 #include "vtkStripper.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -239,8 +240,9 @@ CD_TEST_CASE(ColorFloatRange)
 /**
  * The colours are converted on the filter's threads, by ranges of points: on a mesh large
  * enough for two ranges, one thread and two give the same decimation and the same NaN count,
- * for unsigned char, for a float range whose ends lie in the last range only (a range taken
- * from the first alone would map every colour differently) and for a one-component grey.
+ * for unsigned char, for a float and a one-component double range whose ends lie in the last
+ * range only (a range taken from the first alone would map every colour differently), and
+ * for a structure-of-arrays copy of the float one (converted on one thread: the same again).
  */
 CD_TEST_CASE(ColorConversionThreads)
 {
@@ -260,13 +262,20 @@ CD_TEST_CASE(ColorConversionThreads)
     {
       wide->SetValue(3 * i + k, 100.0f + 10.0f * RGB(mesh)->GetValue(3 * i + k));
     }
-    grey->SetValue(i, 0.2 + 0.002 * RGB(mesh)->GetValue(3 * i));
+    grey->SetValue(i, 20.0 + 2.0 * RGB(mesh)->GetValue(3 * i));
   }
-  wide->SetValue(3 * (n - 1), -4000.0f); // the ends of the range, in the last points
+  wide->SetValue(3 * (n - 1), -4000.0f); // the ends of the ranges, in the last points
   wide->SetValue(3 * (n - 2) + 1, 9000.0f);
+  grey->SetValue(n - 1, -300.0);
+  grey->SetValue(n - 2, 900.0);
   wide->SetValue(3 * (n / 3), std::numeric_limits<float>::quiet_NaN()); // one NaN a range
   wide->SetValue(3 * (n - 3) + 2, std::numeric_limits<float>::quiet_NaN());
-  vtkDataArray* arrays[] = { RGB(mesh), wide, grey };
+  vtkNew<vtkSOADataArrayTemplate<float>> split;
+  split->DeepCopy(wide);
+  split->SetName("Split");
+  CD_CHECK(!split->HasStandardMemoryLayout() && split->GetValue(3 * (n - 1)) == -4000.0f);
+  vtkDataArray* arrays[] = { RGB(mesh), wide, grey, split };
+  std::set<Tri> wideResult;
   for (vtkDataArray* array : arrays)
   {
     auto input = Copy(mesh);
@@ -281,9 +290,15 @@ CD_TEST_CASE(ColorConversionThreads)
     CD_CHECK(two.Filter->GetNumberOfThreadsUsed() == 2);
     CD_CHECK(Result(one) == Result(two));
     CD_CHECK(one.Warnings == two.Warnings);
+    const bool nan = array == wide.Get() || array == split.Get();
     CD_CHECK(
-      array != wide.Get() ||
+      !nan ||
       (one.HasWarning("2 colour tuples hold NaN") && two.HasWarning("2 colour tuples hold NaN")));
+    if (array == wide.Get())
+    {
+      wideResult = Result(two);
+    }
+    CD_CHECK(array != split.Get() || Result(two) == wideResult);
   }
 }
 

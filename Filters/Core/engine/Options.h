@@ -107,7 +107,8 @@ struct DecimatorInput
   /**
    * Optional: called once the run has read Points, Colors and Triangles for the last time
    * (after the frame of its set-up), so that the caller can free them before the decimation
-   * state grows. Not called with PruneComponents, which reads the points at the end.
+   * state grows. Not called with PruneComponents, which reads the points at the end. After
+   * it, this input cannot be run again.
    */
   std::function<void()> ReleaseInput;
 };

@@ -44,8 +44,7 @@ struct CollapseRuleOptions
 /**
  * A direction in 4 bytes: the octahedral map (the unit vector divided by its L1 norm, the
  * lower half folded over the upper), 16 bits a coordinate. Unpacked, it is within 1e-4 radians
- * of the packed direction; it keeps the drift guard's reference normals at 4 bytes a triangle
- * instead of 12.
+ * of the packed direction (the drift guard's reference normals: 4 bytes a triangle).
  */
 struct PackedNormal
 {
