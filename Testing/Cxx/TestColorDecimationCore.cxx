@@ -52,7 +52,8 @@ double Dot(const double a[3], const double b[3])
 const float PyramidColors[15] = { 0, 0, 0, 0.6f, 0, 0, 0, 0, 0, 0, 0.8f, 0, 0, 0, 0 };
 
 //------------------------------------------------------------------------------
-CD_TEST_CASE(Quadric)
+/// One plane through the centre, axis-aligned and oblique: Q(d) = w (n.d)^2 by hand.
+void CheckQuadricOnePlane()
 {
   // One plane through the centre: Q(d) = w (n.d)^2.
   Quadric q;
@@ -73,10 +74,12 @@ CD_TEST_CASE(Quadric)
   const double d3[3] = { 3, 4, -1 };
   // n.d = 1.8 + 3.2 = 5, so 0.5 * 25 = 12.5.
   CD_CHECK_NEAR(oblique.Evaluate(d3), 12.5, 1e-6);
+}
 
+/// A sum of random planes against the direct sum of weighted squared plane distances.
+void CheckQuadricSumOfPlanes(std::mt19937& rng, std::uniform_real_distribution<double>& u)
+{
   // Sum of planes vs the direct sum of weighted squared plane distances, random points.
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-1, 1);
   Quadric sum;
   std::vector<std::array<double, 4>> planes;
   for (int i = 0; i < 5; ++i)
@@ -102,10 +105,16 @@ CD_TEST_CASE(Quadric)
     }
     CD_CHECK_NEAR(sum.Evaluate(d), direct, 1e-6);
   }
+}
 
+/// AddShifted of two one-plane quadrics against the merged quadric computed by hand.
+void CheckQuadricAddShiftedByHand()
+{
   // AddShifted: v0 at p0 with the plane z = p0.z (w 2); v1 at p1 = p0 + (1,2,3) with the
   // plane x = p1.x (w 3). The merged quadric, centred at p1, at offset y from p1 is
   // 2 (3 + y_z)^2 + 3 y_x^2.
+  const double nz[3] = { 0, 0, 1 };
+  const double zero[3] = { 0, 0, 0 };
   Quadric q0, q1;
   q0.AddPlaneThroughCentre(nz, 2.0);
   const double nx[3] = { 1, 0, 0 };
@@ -117,7 +126,11 @@ CD_TEST_CASE(Quadric)
   CD_CHECK_NEAR(q1.Evaluate(y1), 35.0, 1e-6); // 2 * 16 + 3
   const double y2[3] = { -2, 5, -3 };
   CD_CHECK_NEAR(q1.Evaluate(y2), 12.0, 1e-6); // 2 * 0 + 3 * 4
+}
 
+/// AddShifted of random quadrics against evaluating both at the same absolute point.
+void CheckQuadricAddShiftedRandom(std::mt19937& rng, std::uniform_real_distribution<double>& u)
+{
   // AddShifted of random quadrics (with their own b and c) against evaluating both at the
   // same absolute point.
   for (int trial = 0; trial < 10; ++trial)
@@ -138,6 +151,17 @@ CD_TEST_CASE(Quadric)
     const double yb[3] = { y[0] + s2[0], y[1] + s2[1], y[2] + s2[2] };
     CD_CHECK_NEAR(merged.Evaluate(y), c.Evaluate(y) + b.Evaluate(yb), 1e-5);
   }
+}
+
+CD_TEST_CASE(Quadric)
+{
+  CheckQuadricOnePlane();
+  // The random phases draw from one generator, in this order.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  CheckQuadricSumOfPlanes(rng, u);
+  CheckQuadricAddShiftedByHand();
+  CheckQuadricAddShiftedRandom(rng, u);
 }
 
 //------------------------------------------------------------------------------
@@ -196,7 +220,8 @@ CD_TEST_CASE(VisualImportance)
 }
 
 //------------------------------------------------------------------------------
-CD_TEST_CASE(CollapseColorError)
+/// The colour error by hand on a three-member ring (reference and batch) and a one-colour ring.
+void CheckColorErrorByHand()
 {
   // v0 at the origin, black. Ring: i0 at (2,0,0) red, i1 at (0,1,0) black, i2 at (-1,0,0) green.
   const double p0[3] = { 0, 0, 0 }, c0[3] = { 0, 0, 0 };
@@ -241,7 +266,11 @@ CD_TEST_CASE(CollapseColorError)
   flat.Add(0, pa, c0, true);
   flat.Add(1, pb, c0, true);
   CD_CHECK(CollapseColorError(p0, c0, flat, 0) == 0.0);
+}
 
+/// The batch colour error against the reference on random rings: the very same bits.
+void CheckColorErrorRandomRings()
+{
   // Random rings of 1 to 19 members (whole vector blocks and remainders, the valences of
   // real meshes and the large rings of poles), some with repeated positions or colours: the
   // batch version sums the same terms in the same order as the reference, so it gives the
@@ -282,6 +311,13 @@ CD_TEST_CASE(CollapseColorError)
 #endif
     }
   }
+}
+
+//------------------------------------------------------------------------------
+CD_TEST_CASE(CollapseColorError)
+{
+  CheckColorErrorByHand();
+  CheckColorErrorRandomRings();
 }
 
 //------------------------------------------------------------------------------
@@ -385,6 +421,22 @@ CD_TEST_CASE(CollapseCostFrame)
 }
 
 //------------------------------------------------------------------------------
+/// The RGB point scalars of a generated mesh as floats in [0, 1], three per point.
+std::vector<float> UnitColors(vtkPolyData* mesh)
+{
+  const int32_t n = static_cast<int32_t>(mesh->GetNumberOfPoints());
+  std::vector<float> colors(3 * static_cast<size_t>(n));
+  vtkDataArray* rgb = mesh->GetPointData()->GetScalars();
+  for (int32_t i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      colors[3 * i + k] = static_cast<float>(rgb->GetComponent(i, k) / 255.0);
+    }
+  }
+  return colors;
+}
+
 /// Keying high-valence vertices by a lower bound (Decimator::LargeRing) must not change the
 /// result: a UV sphere's poles have valence 120 here.
 CD_TEST_CASE(HighValenceBound)
@@ -392,16 +444,11 @@ CD_TEST_CASE(HighValenceBound)
   auto mesh = meshes::UVSphere(120, meshes::Pattern::SharpRegions);
   const int32_t n = static_cast<int32_t>(mesh->GetNumberOfPoints());
   std::vector<double> points(3 * static_cast<size_t>(n));
-  std::vector<float> colors(3 * static_cast<size_t>(n));
-  vtkDataArray* rgb = mesh->GetPointData()->GetScalars();
   for (int32_t i = 0; i < n; ++i)
   {
     mesh->GetPoint(i, &points[3 * i]);
-    for (int k = 0; k < 3; ++k)
-    {
-      colors[3 * i + k] = static_cast<float>(rgb->GetComponent(i, k) / 255.0);
-    }
   }
+  const std::vector<float> colors = UnitColors(mesh);
   std::vector<int32_t> triangles;
   for (const Tri& t : GetTriangles(mesh))
   {
@@ -436,15 +483,102 @@ CD_TEST_CASE(HighValenceBound)
   CD_CHECK_MSG(faces[0] == faces[1], "the bounded and the exact keys give different meshes");
 }
 
-CD_TEST_CASE(BatchSelection)
+/// The random source of BatchSelection: one generator and its distributions, drawn in turn.
+struct SelectionDraws
 {
-  // SelectCheapest against a full sort: the same set (the smallest by key, ties by vertex) for
-  // any number of threads, in vertex order; with ties across the cut, NaN (last, as +inf), -0
-  // (equal to +0), negative keys, non-candidates, near ties, and samples that mislead.
-  std::mt19937 rng(2026);
-  std::uniform_int_distribution<int> kind(0, 9);
-  std::uniform_real_distribution<double> wide(-3.0, 40.0);
-  std::uniform_int_distribution<int> coarse(0, 6);
+  std::mt19937 Rng{ 2026 };
+  std::uniform_int_distribution<int> Kind{ 0, 9 };
+  std::uniform_real_distribution<double> Wide{ -3.0, 40.0 };
+  std::uniform_int_distribution<int> Coarse{ 0, 6 };
+};
+
+/// The keys and candidacy of n vertices for one pattern of BatchSelection (see there).
+void MakeSelectionKeys(int pattern, int32_t n, SelectionDraws& draws, std::vector<double>& keys,
+                       std::vector<char>& eligible)
+{
+  std::mt19937& rng = draws.Rng;
+  std::uniform_int_distribution<int>& kind = draws.Kind;
+  std::uniform_real_distribution<double>& wide = draws.Wide;
+  std::uniform_int_distribution<int>& coarse = draws.Coarse;
+  keys.assign(n, 0.0);
+  eligible.assign(n, 0);
+  for (int32_t v = 0; v < n; ++v)
+  {
+    const int k = kind(rng);
+    keys[v] = k == 0 ? std::nan("")
+      : k == 1       ? -0.0
+      : k == 2       ? 0.5 * coarse(rng)
+      : k == 3       ? 1.0 + 1e-9 * coarse(rng)
+      : k < 6        ? 1.0 + 1e-5 * coarse(rng)
+                     : std::exp(wide(rng)) * (k == 6 ? -1.0 : 1.0);
+    eligible[v] = kind(rng) != 0;
+    if (pattern == 1)
+    {
+      keys[v] = v % 16 == 0 ? -1.0 - v : 1.0 + v % 7;
+    }
+    else if (pattern == 2)
+    {
+      eligible[v] = eligible[v] && v % 16 != 0;
+    }
+    else if (pattern == 3)
+    {
+      keys[v] = v % 16 == 0 ? 100.0 + v : 1.0 + v % 7;
+    }
+    else if (pattern == 4)
+    {
+      eligible[v] = 1;
+      keys[v] = v % 4 == 1 ? 1.0 + 1e-3 * (v % 5) : 50.0 + v % 3;
+    }
+  }
+}
+
+/// SelectCheapest of a share of the candidates against a full sort, on 1, 2 and 3 threads.
+void CheckSelectCheapestShare(int pattern, const std::vector<double>& keys,
+                              const std::vector<char>& eligible, const std::vector<Candidate>& all,
+                              double share)
+{
+  const int32_t n = static_cast<int32_t>(keys.size());
+  const size_t wanted = static_cast<size_t>(share * static_cast<double>(all.size()));
+  std::vector<Candidate> expected(all.begin(), all.begin() + wanted);
+  std::sort(expected.begin(), expected.end(),
+            [](const Candidate& a, const Candidate& b) { return a.Vertex < b.Vertex; });
+  for (const int threads : { 1, 2, 3 })
+  {
+    std::vector<Candidate> out = { { -1.0, -1 } }; // appended to, not replaced
+    size_t seen = 0;
+    const size_t total = SelectCheapest(
+      static_cast<size_t>(n), nullptr,
+      [&keys, &eligible](int32_t v, double& key)
+      {
+        key = OrderableKey(keys[v]);
+        return eligible[v] != 0;
+      },
+      [wanted, &seen](size_t count)
+      {
+        seen = count;
+        return wanted;
+      },
+      threads, out);
+    CD_CHECK(total == all.size() && seen == (n > 0 ? all.size() : seen));
+    CD_CHECK_MSG(out.size() == expected.size() + 1,
+                 "pattern " << pattern << " n " << n << " share " << share << " threads " << threads
+                            << ": " << out.size() - 1 << " selected, " << expected.size()
+                            << " expected");
+    bool same = out.size() == expected.size() + 1 && out[0].Vertex == -1;
+    for (size_t i = 0; same && i < expected.size(); ++i)
+    {
+      const Candidate& a = out[i + 1];
+      const Candidate& b = expected[i];
+      same = a.Vertex == b.Vertex && std::memcmp(&a.Key, &b.Key, sizeof(double)) == 0;
+    }
+    CD_CHECK_MSG(
+      same, "pattern " << pattern << " n " << n << " share " << share << " threads " << threads);
+  }
+}
+
+/// SelectCheapest against a full sort for every pattern, size and share (see BatchSelection).
+void CheckSelectionPatterns(SelectionDraws& draws)
+{
   // Pattern 0: random keys (many ties, near ties 1e-9 and 1e-5 apart around 1). Pattern 1: the
   // vertices a sample of every 16th would see are the cheapest (the estimate misleads). Pattern
   // 2: those vertices are no candidates (an empty sample). Pattern 3: they are the dearest
@@ -454,36 +588,9 @@ CD_TEST_CASE(BatchSelection)
   {
     for (const int32_t n : { 0, 1, 7, 1000, 20000, 100000 })
     {
-      std::vector<double> keys(n);
-      std::vector<char> eligible(n);
-      for (int32_t v = 0; v < n; ++v)
-      {
-        const int k = kind(rng);
-        keys[v] = k == 0 ? std::nan("")
-          : k == 1       ? -0.0
-          : k == 2       ? 0.5 * coarse(rng)
-          : k == 3       ? 1.0 + 1e-9 * coarse(rng)
-          : k < 6        ? 1.0 + 1e-5 * coarse(rng)
-                         : std::exp(wide(rng)) * (k == 6 ? -1.0 : 1.0);
-        eligible[v] = kind(rng) != 0;
-        if (pattern == 1)
-        {
-          keys[v] = v % 16 == 0 ? -1.0 - v : 1.0 + v % 7;
-        }
-        else if (pattern == 2)
-        {
-          eligible[v] = eligible[v] && v % 16 != 0;
-        }
-        else if (pattern == 3)
-        {
-          keys[v] = v % 16 == 0 ? 100.0 + v : 1.0 + v % 7;
-        }
-        else if (pattern == 4)
-        {
-          eligible[v] = 1;
-          keys[v] = v % 4 == 1 ? 1.0 + 1e-3 * (v % 5) : 50.0 + v % 3;
-        }
-      }
+      std::vector<double> keys;
+      std::vector<char> eligible;
+      MakeSelectionKeys(pattern, n, draws, keys, eligible);
       std::vector<Candidate> all;
       for (int32_t v = 0; v < n; ++v)
       {
@@ -495,48 +602,18 @@ CD_TEST_CASE(BatchSelection)
       std::sort(all.begin(), all.end());
       for (const double share : { 0.0, 0.001, 0.25, 0.5, 1.0 })
       {
-        const size_t wanted = static_cast<size_t>(share * static_cast<double>(all.size()));
-        std::vector<Candidate> expected(all.begin(), all.begin() + wanted);
-        std::sort(expected.begin(), expected.end(),
-                  [](const Candidate& a, const Candidate& b) { return a.Vertex < b.Vertex; });
-        for (const int threads : { 1, 2, 3 })
-        {
-          std::vector<Candidate> out = { { -1.0, -1 } }; // appended to, not replaced
-          size_t seen = 0;
-          const size_t total = SelectCheapest(
-            static_cast<size_t>(n), nullptr,
-            [&keys, &eligible](int32_t v, double& key)
-            {
-              key = OrderableKey(keys[v]);
-              return eligible[v] != 0;
-            },
-            [wanted, &seen](size_t count)
-            {
-              seen = count;
-              return wanted;
-            },
-            threads, out);
-          CD_CHECK(total == all.size() && seen == (n > 0 ? all.size() : seen));
-          CD_CHECK_MSG(out.size() == expected.size() + 1,
-                       "pattern " << pattern << " n " << n << " share " << share << " threads "
-                                  << threads << ": " << out.size() - 1 << " selected, "
-                                  << expected.size() << " expected");
-          bool same = out.size() == expected.size() + 1 && out[0].Vertex == -1;
-          for (size_t i = 0; same && i < expected.size(); ++i)
-          {
-            const Candidate& a = out[i + 1];
-            const Candidate& b = expected[i];
-            same = a.Vertex == b.Vertex && std::memcmp(&a.Key, &b.Key, sizeof(double)) == 0;
-          }
-          CD_CHECK_MSG(same,
-                       "pattern " << pattern << " n " << n << " share " << share << " threads "
-                                  << threads);
-        }
+        CheckSelectCheapestShare(pattern, keys, eligible, all, share);
       }
     }
   }
-  CD_CHECK(OrderableKey(std::nan("")) == std::numeric_limits<double>::infinity());
+}
 
+/// SelectCheapest over a list of vertices: only the listed ones count, on 1, 2 and 3 threads.
+void CheckSelectionFromList(SelectionDraws& draws)
+{
+  std::mt19937& rng = draws.Rng;
+  std::uniform_int_distribution<int>& kind = draws.Kind;
+  std::uniform_int_distribution<int>& coarse = draws.Coarse;
   // A list of vertices (as the Batched schedule passes its live ones): only the listed ones
   // count, and the result is the same as over an identity list of those.
   const int32_t n = 50000;
@@ -589,6 +666,17 @@ CD_TEST_CASE(BatchSelection)
     }
     CD_CHECK_MSG(same, "a list of vertices, threads " << threads);
   }
+}
+
+CD_TEST_CASE(BatchSelection)
+{
+  // SelectCheapest against a full sort: the same set (the smallest by key, ties by vertex) for
+  // any number of threads, in vertex order; with ties across the cut, NaN (last, as +inf), -0
+  // (equal to +0), negative keys, non-candidates, near ties, and samples that mislead.
+  SelectionDraws draws; // the phases draw from it in this order
+  CheckSelectionPatterns(draws);
+  CD_CHECK(OrderableKey(std::nan("")) == std::numeric_limits<double>::infinity());
+  CheckSelectionFromList(draws);
 }
 
 CD_TEST_CASE(SortByKey)
@@ -741,11 +829,26 @@ CD_TEST_CASE(CountingSort)
   }
 }
 
-CD_TEST_CASE(VertexHeap)
+/// Every vertex is in the heap exactly when in the reference, with the reference's key.
+void CheckVertexHeapMatches(const VertexHeap& heap, std::map<int32_t, double>& reference, int32_t n)
 {
-  const int32_t n = 400;
-  VertexHeap heap(n);
-  std::map<int32_t, double> reference; // vertex -> key
+  for (int32_t v = 0; v < n; ++v)
+  {
+    CD_CHECK(heap.Contains(v) == (reference.count(v) > 0));
+    if (reference.count(v))
+    {
+      CD_CHECK(heap.GetKey(v) == reference[v]);
+    }
+  }
+}
+
+/**
+ * Random sets, removals and pops against a reference map: pops give the smallest key, sizes
+ * and tops agree. Returns false if it stopped early (more than 20 failures).
+ */
+bool CheckVertexHeapRandomOperations(VertexHeap& heap, std::map<int32_t, double>& reference,
+                                     int32_t n)
+{
   std::mt19937 rng(12345);
   std::uniform_int_distribution<int32_t> vertex(0, n - 1);
   std::uniform_int_distribution<int> op(0, 9);
@@ -796,21 +899,20 @@ CD_TEST_CASE(VertexHeap)
     }
     if (step % 997 == 0)
     {
-      for (int32_t v = 0; v < n; ++v)
-      {
-        CD_CHECK(heap.Contains(v) == (reference.count(v) > 0));
-        if (reference.count(v))
-        {
-          CD_CHECK(heap.GetKey(v) == reference[v]);
-        }
-      }
+      CheckVertexHeapMatches(heap, reference, n);
     }
     if (GetNumberOfFailures() > 20)
     {
-      return;
+      return false;
     }
   }
   CD_CHECK(pops > 1000);
+  return true;
+}
+
+/// Draining the heap gives the keys sorted, as the sorted reference.
+void CheckVertexHeapDrain(VertexHeap& heap, const std::map<int32_t, double>& reference)
+{
   // Drain: keys come out sorted, as the sorted reference.
   std::vector<double> expected;
   for (const auto& e : reference)
@@ -826,6 +928,18 @@ CD_TEST_CASE(VertexHeap)
     CD_CHECK(heap.Pop() == v);
   }
   CD_CHECK(drained == expected);
+}
+
+CD_TEST_CASE(VertexHeap)
+{
+  const int32_t n = 400;
+  VertexHeap heap(n);
+  std::map<int32_t, double> reference; // vertex -> key
+  if (!CheckVertexHeapRandomOperations(heap, reference, n))
+  {
+    return;
+  }
+  CheckVertexHeapDrain(heap, reference);
   // Reset empties it.
   heap.Set(3, 1.0);
   heap.Reset(10);
@@ -833,20 +947,24 @@ CD_TEST_CASE(VertexHeap)
 }
 
 //------------------------------------------------------------------------------
-/// Every structural invariant of a corner table; returns the number of violations.
-long long CheckMeshConsistency(const HalfEdgeMesh& mesh, bool closed)
+/// The violations CheckMeshConsistency counts; the first five are reported as failed checks.
+struct ConsistencyFailures
 {
-  long long bad = 0;
-  auto fail = [&](const std::string& what)
+  long long Count = 0;
+  void operator()(const std::string& what)
   {
-    if (++bad <= 5)
+    if (++this->Count <= 5)
     {
       ReportFailure(__FILE__, __LINE__, "half-edge mesh consistent", what);
     }
-  };
+  }
+};
+
+/// The live faces of a corner table: distinct live vertices and consistent twins (counts corners).
+void CheckFaceConsistency(const HalfEdgeMesh& mesh, bool closed, std::vector<int>& corners,
+                          ConsistencyFailures& fail)
+{
   const int32_t faces = mesh.GetNumberOfFaceSlots();
-  const int32_t n = mesh.GetNumberOfVertices();
-  std::vector<int> corners(n, 0);
   long long live = 0;
   for (int32_t f = 0; f < faces; ++f)
   {
@@ -889,6 +1007,13 @@ long long CheckMeshConsistency(const HalfEdgeMesh& mesh, bool closed)
   {
     fail("live face count");
   }
+}
+
+/// The vertices of a corner table: removed ones unused, circulation visits every corner.
+void CheckVertexConsistency(const HalfEdgeMesh& mesh, const std::vector<int>& corners,
+                            ConsistencyFailures& fail)
+{
+  const int32_t n = mesh.GetNumberOfVertices();
   for (int32_t v = 0; v < n; ++v)
   {
     if (mesh.IsRemoved(v))
@@ -935,7 +1060,16 @@ long long CheckMeshConsistency(const HalfEdgeMesh& mesh, bool closed)
       fail("boundary vertex " + std::to_string(v) + " does not start at its boundary");
     }
   }
-  return bad;
+}
+
+/// Every structural invariant of a corner table; returns the number of violations.
+long long CheckMeshConsistency(const HalfEdgeMesh& mesh, bool closed)
+{
+  ConsistencyFailures fail;
+  std::vector<int> corners(mesh.GetNumberOfVertices(), 0);
+  CheckFaceConsistency(mesh, closed, corners, fail);
+  CheckVertexConsistency(mesh, corners, fail);
+  return fail.Count;
 }
 
 /// The live faces of a corner table.
@@ -1166,7 +1300,8 @@ CD_TEST_CASE(HalfEdgeCollapse)
 }
 
 //------------------------------------------------------------------------------
-CD_TEST_CASE(SpatialOrder)
+/// Morton codes by hand: x, y and z take bits 0, 1 and 2 of each group of three.
+void CheckMortonCodes()
 {
   // Morton codes by hand: x, y and z take bits 0, 1 and 2 of each group of three.
   const double lo[3] = { 0, 0, 0 };
@@ -1186,29 +1321,27 @@ CD_TEST_CASE(SpatialOrder)
   CD_CHECK(code(1023, 1023, 1023) == (1u << 30) - 1);
   const double outside[3] = { -5, 2, std::nan("") };
   CD_CHECK(MortonCode(outside, lo, 1.0) == code(0, 1023, 0)); // clamped; NaN goes to 0
+}
 
-  // Permute: block i goes to block to[i], cycles of every length included.
+/// Permute: block i goes to block to[i], cycles of every length included.
+void CheckPermute()
+{
+  const int32_t to[7] = { 3, 0, 1, 2, 4, 6, 5 }; // a 4-cycle, a fixed point, a swap
+  std::vector<int> values;
+  for (int i = 0; i < 7; ++i)
   {
-    const int32_t to[7] = { 3, 0, 1, 2, 4, 6, 5 }; // a 4-cycle, a fixed point, a swap
-    std::vector<int> values;
-    for (int i = 0; i < 7; ++i)
-    {
-      values.insert(values.end(), { 10 * i, 10 * i + 1 });
-    }
-    Permute(values, 7, to, 2);
-    for (int i = 0; i < 7; ++i)
-    {
-      CD_CHECK(values[2 * to[i]] == 10 * i && values[2 * to[i] + 1] == 10 * i + 1);
-    }
+    values.insert(values.end(), { 10 * i, 10 * i + 1 });
   }
+  Permute(values, 7, to, 2);
+  for (int i = 0; i < 7; ++i)
+  {
+    CD_CHECK(values[2 * to[i]] == 10 * i && values[2 * to[i] + 1] == 10 * i + 1);
+  }
+}
 
-  // A whole mesh: both orders are permutations, vertices follow their codes, triangles their
-  // smallest renumbered vertex, and equal keys keep the input order.
-  PlainMesh m = ToPlain(meshes::Torus(40, 16, meshes::Pattern::Constant));
-  m.Points[0] = std::nan(""); // a non-finite point must not break the order
-  SpatialOrder order;
-  ComputeSpatialOrder(m.NumberOfPoints(), m.Points.data(), m.NumberOfTriangles(),
-                      m.Triangles.data(), order);
+/// The vertex order is a permutation that follows the Morton codes, equal codes in input order.
+void CheckSpatialVertexOrder(const PlainMesh& m, const SpatialOrder& order)
+{
   const int32_t n = m.NumberOfPoints();
   CD_CHECK(static_cast<int32_t>(order.OldVertex.size()) == n);
   CD_CHECK(static_cast<int32_t>(order.NewVertex.size()) == n);
@@ -1237,6 +1370,11 @@ CD_TEST_CASE(SpatialOrder)
     const uint32_t cb = MortonCode(&m.Points[3 * b], boxLo, extent);
     CD_CHECK(ca < cb || (ca == cb && a < b));
   }
+}
+
+/// The face order is a permutation by smallest renumbered vertex, equal keys in input order.
+void CheckSpatialFaceOrder(const PlainMesh& m, const SpatialOrder& order)
+{
   const int32_t nt = m.NumberOfTriangles();
   CD_CHECK(static_cast<int32_t>(order.OldFace.size()) == nt);
   std::vector<char> seenFace(nt, 0);
@@ -1255,6 +1393,135 @@ CD_TEST_CASE(SpatialOrder)
   }
 }
 
+CD_TEST_CASE(SpatialOrder)
+{
+  CheckMortonCodes();
+  CheckPermute();
+
+  // A whole mesh: both orders are permutations, vertices follow their codes, triangles their
+  // smallest renumbered vertex, and equal keys keep the input order.
+  PlainMesh m = ToPlain(meshes::Torus(40, 16, meshes::Pattern::Constant));
+  m.Points[0] = std::nan(""); // a non-finite point must not break the order
+  SpatialOrder order;
+  ComputeSpatialOrder(m.NumberOfPoints(), m.Points.data(), m.NumberOfTriangles(),
+                      m.Triangles.data(), order);
+  CheckSpatialVertexOrder(m, order);
+  CheckSpatialFaceOrder(m, order);
+}
+
+/// Decimate a little (random legal collapses), so that dead faces and removed vertices exist.
+void DecimateALittle(HalfEdgeMesh& mesh, const PlainMesh& m, std::mt19937& rng)
+{
+  CollapseRuleOptions options;
+  options.MinimumNormalCosine = -1.0;
+  CollapseRules rules(options);
+  for (int attempt = 0; attempt < 400; ++attempt)
+  {
+    const int32_t v0 = static_cast<int32_t>(rng() % m.NumberOfPoints());
+    if (!mesh.IsCollapsible(v0))
+    {
+      continue;
+    }
+    std::vector<int32_t> ring;
+    mesh.ForEachNeighbor(v0, [&](int32_t u) { ring.push_back(u); });
+    const int32_t v1 = ring[rng() % ring.size()];
+    if (rules.IsLegal(mesh, m.Positions.data(), v0, v1))
+    {
+      mesh.Collapse(v0, v1);
+    }
+  }
+}
+
+/// The identity permutation of `count` ids, shuffled.
+std::vector<int32_t> ShuffledIds(int32_t count, std::mt19937& rng)
+{
+  std::vector<int32_t> to(count);
+  for (int32_t i = 0; i < count; ++i)
+  {
+    to[i] = i;
+  }
+  std::shuffle(to.begin(), to.end(), rng);
+  return to;
+}
+
+/// The inverse of a permutation.
+std::vector<int32_t> InversePermutation(const std::vector<int32_t>& to)
+{
+  std::vector<int32_t> back(to.size());
+  for (int32_t i = 0; i < static_cast<int32_t>(to.size()); ++i)
+  {
+    back[to[i]] = i;
+  }
+  return back;
+}
+
+/// The renumbered faces are the old ones under the new names, twins included.
+void CheckRenumberedFaces(const HalfEdgeMesh& before, const HalfEdgeMesh& mesh,
+                          const std::vector<int32_t>& vertexTo, const std::vector<int32_t>& faceTo)
+{
+  const int32_t nf = before.GetNumberOfFaceSlots();
+  for (int32_t f = 0; f < nf; ++f)
+  {
+    CD_CHECK(mesh.IsFaceAlive(faceTo[f]) == before.IsFaceAlive(f));
+    if (!before.IsFaceAlive(f))
+    {
+      continue;
+    }
+    int32_t a[3], b[3];
+    before.GetFace(f, a);
+    mesh.GetFace(faceTo[f], b);
+    for (int k = 0; k < 3; ++k)
+    {
+      CD_CHECK(b[k] == vertexTo[a[k]]);
+      const int32_t twin = before.Twin(3 * f + k);
+      CD_CHECK(mesh.Twin(3 * faceTo[f] + k) == (twin < 0 ? -1 : 3 * faceTo[twin / 3] + twin % 3));
+    }
+  }
+}
+
+/// The renumbered vertices keep their flags and their fans (from the same half-edge).
+void CheckRenumberedVertices(const HalfEdgeMesh& before, const HalfEdgeMesh& mesh,
+                             const std::vector<int32_t>& vertexTo)
+{
+  const int32_t n = before.GetNumberOfVertices();
+  for (int32_t v = 0; v < n; ++v)
+  {
+    const int32_t w = vertexTo[v];
+    CD_CHECK(mesh.IsLocked(w) == before.IsLocked(v));
+    CD_CHECK(mesh.IsRemoved(w) == before.IsRemoved(v));
+    CD_CHECK(mesh.IsCollapsible(w) == before.IsCollapsible(v));
+    if (before.IsCollapsible(v))
+    {
+      CD_CHECK(mesh.IsBoundaryVertex(w) == before.IsBoundaryVertex(v));
+      std::vector<int32_t> expected, got;
+      before.ForEachNeighbor(v, [&](int32_t u) { expected.push_back(vertexTo[u]); });
+      mesh.ForEachNeighbor(w, [&](int32_t u) { got.push_back(u); });
+      CD_CHECK(got == expected); // the same fan, from the same starting half-edge
+    }
+  }
+}
+
+/// Renumbering back with the inverse permutations gives the very same arrays.
+void CheckRenumberedBack(const HalfEdgeMesh& before, HalfEdgeMesh& mesh,
+                         const std::vector<int32_t>& vertexTo, const std::vector<int32_t>& faceTo)
+{
+  const int32_t n = before.GetNumberOfVertices();
+  const int32_t nf = before.GetNumberOfFaceSlots();
+  // And back: the inverse permutations give the very same arrays.
+  const std::vector<int32_t> vertexBack = InversePermutation(vertexTo);
+  const std::vector<int32_t> faceBack = InversePermutation(faceTo);
+  mesh.Renumber(vertexBack.data(), faceBack.data());
+  for (int32_t h = 0; h < 3 * nf; ++h)
+  {
+    CD_CHECK(mesh.Origin(h) == before.Origin(h) && mesh.Twin(h) == before.Twin(h));
+  }
+  for (int32_t v = 0; v < n; ++v)
+  {
+    CD_CHECK(mesh.Outgoing(v) == before.Outgoing(v));
+    CD_CHECK(mesh.IsLocked(v) == before.IsLocked(v) && mesh.IsRemoved(v) == before.IsRemoved(v));
+  }
+}
+
 /// HalfEdgeMesh::Renumber: a renumbered mesh is the same mesh under new names, and renumbering
 /// it back restores every array, mid-decimation included.
 CD_TEST_CASE(HalfEdgeRenumber)
@@ -1267,95 +1534,153 @@ CD_TEST_CASE(HalfEdgeRenumber)
     mesh.Build(m.NumberOfPoints(), m.Triangles.data(), m.NumberOfTriangles());
     mesh.Lock(7);
     // Decimate a little first, so that dead faces and removed vertices are renumbered too.
-    CollapseRuleOptions options;
-    options.MinimumNormalCosine = -1.0;
-    CollapseRules rules(options);
     std::mt19937 rng(5);
-    for (int attempt = 0; attempt < 400; ++attempt)
-    {
-      const int32_t v0 = static_cast<int32_t>(rng() % m.NumberOfPoints());
-      if (!mesh.IsCollapsible(v0))
-      {
-        continue;
-      }
-      std::vector<int32_t> ring;
-      mesh.ForEachNeighbor(v0, [&](int32_t u) { ring.push_back(u); });
-      const int32_t v1 = ring[rng() % ring.size()];
-      if (rules.IsLegal(mesh, m.Positions.data(), v0, v1))
-      {
-        mesh.Collapse(v0, v1);
-      }
-    }
+    DecimateALittle(mesh, m, rng);
     const HalfEdgeMesh before = mesh;
-    const int32_t n = mesh.GetNumberOfVertices();
-    const int32_t nf = mesh.GetNumberOfFaceSlots();
-    std::vector<int32_t> vertexTo(n), faceTo(nf);
-    for (int32_t v = 0; v < n; ++v)
-    {
-      vertexTo[v] = v;
-    }
-    for (int32_t f = 0; f < nf; ++f)
-    {
-      faceTo[f] = f;
-    }
-    std::shuffle(vertexTo.begin(), vertexTo.end(), rng);
-    std::shuffle(faceTo.begin(), faceTo.end(), rng);
+    const std::vector<int32_t> vertexTo = ShuffledIds(mesh.GetNumberOfVertices(), rng);
+    const std::vector<int32_t> faceTo = ShuffledIds(mesh.GetNumberOfFaceSlots(), rng);
     mesh.Renumber(vertexTo.data(), faceTo.data());
     CheckMeshConsistency(mesh, closed);
     CD_CHECK(mesh.GetNumberOfLiveFaces() == before.GetNumberOfLiveFaces());
-    for (int32_t f = 0; f < nf; ++f)
+    CheckRenumberedFaces(before, mesh, vertexTo, faceTo);
+    CheckRenumberedVertices(before, mesh, vertexTo);
+    CheckRenumberedBack(before, mesh, vertexTo, faceTo);
+  }
+}
+
+/// The arrays of an input renumbered by hand (RenumberByHand).
+struct RenumberedArrays
+{
+  std::vector<double> Points;
+  std::vector<float> Colors;
+  std::vector<uint8_t> Fixed;
+  std::vector<int32_t> Triangles;
+};
+
+/// The same input (with colours and fixed points) renumbered by hand in `order`.
+DecimatorInput RenumberByHand(const DecimatorInput& input, const SpatialOrder& order,
+                              RenumberedArrays& arrays)
+{
+  const int32_t n = input.NumberOfPoints;
+  const int32_t nt = input.NumberOfTriangles;
+  std::vector<double>& points = arrays.Points;
+  std::vector<float>& colors2 = arrays.Colors;
+  std::vector<uint8_t>& fixed2 = arrays.Fixed;
+  std::vector<int32_t>& triangles = arrays.Triangles;
+  points.assign(3 * static_cast<size_t>(n), 0.0);
+  colors2.assign(3 * static_cast<size_t>(n), 0.0f);
+  fixed2.assign(n, 0);
+  triangles.assign(3 * static_cast<size_t>(nt), 0);
+  for (int32_t v = 0; v < n; ++v)
+  {
+    const int32_t old = order.OldVertex[v];
+    for (int k = 0; k < 3; ++k)
     {
-      CD_CHECK(mesh.IsFaceAlive(faceTo[f]) == before.IsFaceAlive(f));
-      if (!before.IsFaceAlive(f))
-      {
-        continue;
-      }
-      int32_t a[3], b[3];
-      before.GetFace(f, a);
-      mesh.GetFace(faceTo[f], b);
-      for (int k = 0; k < 3; ++k)
-      {
-        CD_CHECK(b[k] == vertexTo[a[k]]);
-        const int32_t twin = before.Twin(3 * f + k);
-        CD_CHECK(mesh.Twin(3 * faceTo[f] + k) == (twin < 0 ? -1 : 3 * faceTo[twin / 3] + twin % 3));
-      }
+      points[3 * v + k] = input.Points[3 * old + k];
+      colors2[3 * v + k] = input.Colors[3 * old + k];
     }
-    for (int32_t v = 0; v < n; ++v)
+    fixed2[v] = input.Fixed[old];
+  }
+  for (int32_t f = 0; f < nt; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
     {
-      const int32_t w = vertexTo[v];
-      CD_CHECK(mesh.IsLocked(w) == before.IsLocked(v));
-      CD_CHECK(mesh.IsRemoved(w) == before.IsRemoved(v));
-      CD_CHECK(mesh.IsCollapsible(w) == before.IsCollapsible(v));
-      if (before.IsCollapsible(v))
-      {
-        CD_CHECK(mesh.IsBoundaryVertex(w) == before.IsBoundaryVertex(v));
-        std::vector<int32_t> expected, got;
-        before.ForEachNeighbor(v, [&](int32_t u) { expected.push_back(vertexTo[u]); });
-        mesh.ForEachNeighbor(w, [&](int32_t u) { got.push_back(u); });
-        CD_CHECK(got == expected); // the same fan, from the same starting half-edge
-      }
-    }
-    // And back: the inverse permutations give the very same arrays.
-    std::vector<int32_t> vertexBack(n), faceBack(nf);
-    for (int32_t v = 0; v < n; ++v)
-    {
-      vertexBack[vertexTo[v]] = v;
-    }
-    for (int32_t f = 0; f < nf; ++f)
-    {
-      faceBack[faceTo[f]] = f;
-    }
-    mesh.Renumber(vertexBack.data(), faceBack.data());
-    for (int32_t h = 0; h < 3 * nf; ++h)
-    {
-      CD_CHECK(mesh.Origin(h) == before.Origin(h) && mesh.Twin(h) == before.Twin(h));
-    }
-    for (int32_t v = 0; v < n; ++v)
-    {
-      CD_CHECK(mesh.Outgoing(v) == before.Outgoing(v));
-      CD_CHECK(mesh.IsLocked(v) == before.IsLocked(v) && mesh.IsRemoved(v) == before.IsRemoved(v));
+      triangles[3 * f + k] = order.NewVertex[input.Triangles[3 * order.OldFace[f] + k]];
     }
   }
+  DecimatorInput renumbered = input;
+  renumbered.Points = points.data();
+  renumbered.Colors = colors2.data();
+  renumbered.Fixed = fixed2.data();
+  renumbered.Triangles = triangles.data();
+  return renumbered;
+}
+
+/// The faces of the run in order (input ids) that differ from the run on the renumbered input.
+long long CountRenumberedFaceMismatches(const HalfEdgeMesh& ma, const HalfEdgeMesh& mb,
+                                        const SpatialOrder& order, int32_t nt)
+{
+  long long mismatches = 0;
+  for (int32_t f = 0; f < nt; ++f)
+  {
+    const int32_t slot = order.OldFace[f]; // b's face f is the input's face `slot`
+    if (ma.IsFaceAlive(slot) != mb.IsFaceAlive(f))
+    {
+      ++mismatches;
+      continue;
+    }
+    if (!mb.IsFaceAlive(f))
+    {
+      continue;
+    }
+    int32_t ta[3], tb[3];
+    ma.GetFace(slot, ta);
+    mb.GetFace(f, tb);
+    for (int k = 0; k < 3; ++k)
+    {
+      mismatches += ta[k] != order.OldVertex[tb[k]] ? 1 : 0;
+    }
+  }
+  return mismatches;
+}
+
+/// The vertex states (removal, position, metric) of the two runs that differ.
+long long CountRenumberedVertexMismatches(const Decimator& inOrder, const Decimator& byHand,
+                                          const SpatialOrder& order, int32_t n, ErrorMetric metric)
+{
+  const HalfEdgeMesh& ma = inOrder.GetMesh();
+  const HalfEdgeMesh& mb = byHand.GetMesh();
+  long long mismatches = 0;
+  for (int32_t v = 0; v < n; ++v)
+  {
+    const int32_t old = order.OldVertex[v];
+    mismatches += ma.IsRemoved(old) != mb.IsRemoved(v) ? 1 : 0;
+    mismatches += inOrder.IsMoved(old) != byHand.IsMoved(v) ? 1 : 0;
+    const float* pa = inOrder.GetNormalizedPosition(old);
+    const float* pb = byHand.GetNormalizedPosition(v);
+    mismatches += std::equal(pa, pa + 3, pb) ? 0 : 1;
+    if (metric == ErrorMetric::HalfEdgeColor)
+    {
+      mismatches += inOrder.GetMetrics()[old].Importance != byHand.GetMetrics()[v].Importance;
+      mismatches += inOrder.GetMetrics()[old].Q.C != byHand.GetMetrics()[v].Q.C;
+    }
+    else
+    {
+      mismatches += inOrder.GetColorQuadrics()[old].C != byHand.GetColorQuadrics()[v].C;
+    }
+  }
+  return mismatches;
+}
+
+/// With `metric`: the run in spatial order against the plain run on the renumbered input.
+void CheckRenumberedRun(ErrorMetric metric, const DecimatorInput& input,
+                        const DecimatorInput& renumbered, const SpatialOrder& order)
+{
+  const int32_t n = input.NumberOfPoints;
+  const int32_t nt = input.NumberOfTriangles;
+  DecimatorOptions options;
+  options.Metric = metric;
+  options.OptimalPlacement = metric == ErrorMetric::ColorQuadric;
+  Decimator inOrder(options);
+  const DecimatorStatistics a = inOrder.Run(input, nt / 10);
+  options.Renumber = false;
+  Decimator byHand(options);
+  const DecimatorStatistics b = byHand.Run(renumbered, nt / 10);
+  CD_CHECK(a.OutputTriangles <= nt / 10);
+  CD_CHECK(a.Collapses == b.Collapses && a.OutputTriangles == b.OutputTriangles);
+
+  const HalfEdgeMesh& ma = inOrder.GetMesh();
+  const HalfEdgeMesh& mb = byHand.GetMesh();
+  CD_CHECK(ma.GetNumberOfFaceSlots() == nt && mb.GetNumberOfFaceSlots() == nt);
+  long long mismatches = CountRenumberedFaceMismatches(ma, mb, order, nt);
+  CD_CHECK_MSG(mismatches == 0, mismatches << " faces differ from the run on the renumbered input");
+  mismatches = CountRenumberedVertexMismatches(inOrder, byHand, order, n, metric);
+  CD_CHECK_MSG(mismatches == 0, mismatches << " vertex states differ");
+  for (int32_t i = 0; i < n; i += 97)
+  {
+    CD_CHECK(!ma.IsRemoved(i)); // the fixed points followed their vertices
+  }
+  CD_CHECK(b.Collapses > nt / 3); // a real decimation, not an empty comparison
 }
 
 /**
@@ -1370,15 +1695,7 @@ CD_TEST_CASE(RenumberSameResult)
   const int32_t n = m.NumberOfPoints();
   const int32_t nt = m.NumberOfTriangles();
   CD_CHECK(n >= 65536); // above Decimator::LargeMeshVertices
-  std::vector<float> colors(m.Points.size());
-  vtkDataArray* rgb = poly->GetPointData()->GetScalars();
-  for (int32_t i = 0; i < n; ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      colors[3 * i + k] = static_cast<float>(rgb->GetComponent(i, k) / 255.0);
-    }
-  }
+  const std::vector<float> colors = UnitColors(poly);
   std::vector<uint8_t> fixed(n, 0);
   for (int32_t i = 0; i < n; i += 97)
   {
@@ -1395,97 +1712,12 @@ CD_TEST_CASE(RenumberSameResult)
   // The same input, renumbered by hand.
   SpatialOrder order;
   ComputeSpatialOrder(n, m.Points.data(), nt, m.Triangles.data(), order);
-  std::vector<double> points(m.Points.size());
-  std::vector<float> colors2(colors.size());
-  std::vector<uint8_t> fixed2(n);
-  std::vector<int32_t> triangles(m.Triangles.size());
-  for (int32_t v = 0; v < n; ++v)
-  {
-    const int32_t old = order.OldVertex[v];
-    for (int k = 0; k < 3; ++k)
-    {
-      points[3 * v + k] = m.Points[3 * old + k];
-      colors2[3 * v + k] = colors[3 * old + k];
-    }
-    fixed2[v] = fixed[old];
-  }
-  for (int32_t f = 0; f < nt; ++f)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      triangles[3 * f + k] = order.NewVertex[m.Triangles[3 * order.OldFace[f] + k]];
-    }
-  }
-  DecimatorInput renumbered = input;
-  renumbered.Points = points.data();
-  renumbered.Colors = colors2.data();
-  renumbered.Fixed = fixed2.data();
-  renumbered.Triangles = triangles.data();
+  RenumberedArrays arrays;
+  const DecimatorInput renumbered = RenumberByHand(input, order, arrays);
 
   for (ErrorMetric metric : { ErrorMetric::HalfEdgeColor, ErrorMetric::ColorQuadric })
   {
-    DecimatorOptions options;
-    options.Metric = metric;
-    options.OptimalPlacement = metric == ErrorMetric::ColorQuadric;
-    Decimator inOrder(options);
-    const DecimatorStatistics a = inOrder.Run(input, nt / 10);
-    options.Renumber = false;
-    Decimator byHand(options);
-    const DecimatorStatistics b = byHand.Run(renumbered, nt / 10);
-    CD_CHECK(a.OutputTriangles <= nt / 10);
-    CD_CHECK(a.Collapses == b.Collapses && a.OutputTriangles == b.OutputTriangles);
-
-    const HalfEdgeMesh& ma = inOrder.GetMesh();
-    const HalfEdgeMesh& mb = byHand.GetMesh();
-    CD_CHECK(ma.GetNumberOfFaceSlots() == nt && mb.GetNumberOfFaceSlots() == nt);
-    long long mismatches = 0;
-    for (int32_t f = 0; f < nt; ++f)
-    {
-      const int32_t slot = order.OldFace[f]; // b's face f is the input's face `slot`
-      if (ma.IsFaceAlive(slot) != mb.IsFaceAlive(f))
-      {
-        ++mismatches;
-        continue;
-      }
-      if (!mb.IsFaceAlive(f))
-      {
-        continue;
-      }
-      int32_t ta[3], tb[3];
-      ma.GetFace(slot, ta);
-      mb.GetFace(f, tb);
-      for (int k = 0; k < 3; ++k)
-      {
-        mismatches += ta[k] != order.OldVertex[tb[k]] ? 1 : 0;
-      }
-    }
-    CD_CHECK_MSG(mismatches == 0,
-                 mismatches << " faces differ from the run on the renumbered input");
-    mismatches = 0;
-    for (int32_t v = 0; v < n; ++v)
-    {
-      const int32_t old = order.OldVertex[v];
-      mismatches += ma.IsRemoved(old) != mb.IsRemoved(v) ? 1 : 0;
-      mismatches += inOrder.IsMoved(old) != byHand.IsMoved(v) ? 1 : 0;
-      const float* pa = inOrder.GetNormalizedPosition(old);
-      const float* pb = byHand.GetNormalizedPosition(v);
-      mismatches += std::equal(pa, pa + 3, pb) ? 0 : 1;
-      if (metric == ErrorMetric::HalfEdgeColor)
-      {
-        mismatches += inOrder.GetMetrics()[old].Importance != byHand.GetMetrics()[v].Importance;
-        mismatches += inOrder.GetMetrics()[old].Q.C != byHand.GetMetrics()[v].Q.C;
-      }
-      else
-      {
-        mismatches += inOrder.GetColorQuadrics()[old].C != byHand.GetColorQuadrics()[v].C;
-      }
-    }
-    CD_CHECK_MSG(mismatches == 0, mismatches << " vertex states differ");
-    for (int32_t i = 0; i < n; i += 97)
-    {
-      CD_CHECK(!ma.IsRemoved(i)); // the fixed points followed their vertices
-    }
-    CD_CHECK(b.Collapses > nt / 3); // a real decimation, not an empty comparison
+    CheckRenumberedRun(metric, input, renumbered, order);
   }
 }
 
@@ -1725,13 +1957,12 @@ CD_TEST_CASE(ReleaseInput)
 }
 
 //------------------------------------------------------------------------------
-CD_TEST_CASE(RulesLinkCondition)
+/// A tetrahedron: every collapse would make two triangles share all three vertices.
+void CheckLinkTetrahedron(CollapseRules& rules, HalfEdgeMesh& mesh)
 {
-  CollapseRules rules{ CollapseRuleOptions() };
   // A tetrahedron: every collapse would make two triangles share all three vertices.
   const int32_t tetra[12] = { 0, 2, 1, 0, 3, 2, 0, 1, 3, 1, 2, 3 };
   const float tetraPositions[12] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-  HalfEdgeMesh mesh;
   mesh.Build(4, tetra, 4);
   for (int32_t a = 0; a < 4; ++a)
   {
@@ -1743,51 +1974,57 @@ CD_TEST_CASE(RulesLinkCondition)
       }
     }
   }
+}
 
-  // An open annulus with 3 vertices on each boundary loop: collapsing along the inner loop
-  // would pinch it (a0 and a1 share a2 besides the opposite vertex b1).
-  // a_i = i, b_i = 3 + i; triangles (a_i, b_i, b_i+1), (a_i, b_i+1, a_i+1).
-  auto annulus = [](int k, std::vector<int32_t>& tris, std::vector<float>& pos)
+/**
+ * An open annulus with k vertices on each boundary loop, radii 1 and 2 in the z = 0 plane:
+ * a_i = i, b_i = k + i; triangles (a_i, b_i, b_i+1), (a_i, b_i+1, a_i+1).
+ */
+void Annulus(int k, std::vector<int32_t>& tris, std::vector<float>& pos)
+{
+  tris.clear();
+  pos.clear();
+  for (int i = 0; i < k; ++i)
   {
-    tris.clear();
-    pos.clear();
+    const int32_t a = i, a1 = (i + 1) % k, b = k + i, b1 = k + (i + 1) % k;
+    const int32_t t[6] = { a, b, b1, a, b1, a1 };
+    tris.insert(tris.end(), t, t + 6);
+  }
+  for (int ring = 0; ring < 2; ++ring)
+  {
     for (int i = 0; i < k; ++i)
     {
-      const int32_t a = i, a1 = (i + 1) % k, b = k + i, b1 = k + (i + 1) % k;
-      const int32_t t[6] = { a, b, b1, a, b1, a1 };
-      tris.insert(tris.end(), t, t + 6);
+      const double angle = 2.0 * 3.14159265358979 * i / k;
+      const double r = ring == 0 ? 1.0 : 2.0;
+      pos.push_back(static_cast<float>(r * std::cos(angle)));
+      pos.push_back(static_cast<float>(r * std::sin(angle)));
+      pos.push_back(0.0f);
     }
-    for (int ring = 0; ring < 2; ++ring)
-    {
-      for (int i = 0; i < k; ++i)
-      {
-        const double angle = 2.0 * 3.14159265358979 * i / k;
-        const double r = ring == 0 ? 1.0 : 2.0;
-        pos.push_back(static_cast<float>(r * std::cos(angle)));
-        pos.push_back(static_cast<float>(r * std::sin(angle)));
-        pos.push_back(0.0f);
-      }
-    }
-  };
+  }
+}
+
+/// Annuli: with 3 vertices per loop a collapse along the inner loop pinches it, with 4 not.
+void CheckLinkAnnulus(CollapseRules& rules, HalfEdgeMesh& mesh)
+{
+  // An open annulus with 3 vertices on each boundary loop: collapsing along the inner loop
+  // would pinch it (a0 and a1 share a2 besides the opposite vertex b1).
   std::vector<int32_t> tris;
   std::vector<float> pos;
-  annulus(3, tris, pos);
+  Annulus(3, tris, pos);
   MeshBuildReport report = mesh.Build(6, tris.data(), 6);
   CD_CHECK(report.LockedVertices == 0 && report.BoundaryEdges == 6);
   CD_CHECK(mesh.IsBoundaryVertex(0) && mesh.IsBoundaryVertex(1));
   CD_CHECK(rules.Check(mesh, pos.data(), 0, 1) == CollapseVerdict::LinkCondition);
   CD_CHECK(rules.Check(mesh, pos.data(), 1, 0) == CollapseVerdict::LinkCondition);
   // With 4 vertices per loop the same collapse is fine.
-  annulus(4, tris, pos);
+  Annulus(4, tris, pos);
   mesh.Build(8, tris.data(), 8);
   CD_CHECK(rules.Check(mesh, pos.data(), 0, 1) == CollapseVerdict::Legal);
+}
 
-  // A single triangle: collapsing an edge would leave it hanging by a vertex.
-  const int32_t one[3] = { 0, 1, 2 };
-  const float onePositions[9] = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
-  mesh.Build(3, one, 1);
-  CD_CHECK(rules.Check(mesh, onePositions, 0, 1) == CollapseVerdict::LinkCondition);
-
+/// An octahedron collapsed down to a tetrahedron: which collapses the link condition refuses.
+void CheckLinkOctahedron(CollapseRules& rules, HalfEdgeMesh& mesh)
+{
   // An octahedron: collapsing +x onto +y is fine and gives a triangular bipyramid whose
   // apexes (+z, -z) have valence 3. There an equator edge is refused (its opposite vertices
   // have valence 3), an apex -> equator collapse is fine (a tetrahedron results), and then
@@ -1814,7 +2051,11 @@ CD_TEST_CASE(RulesLinkCondition)
     mesh.ForEachNeighbor(
       a, [&](int32_t b) { CD_CHECK(rules.CheckTopology(mesh, a, b) != CollapseVerdict::Legal); });
   }
+}
 
+/// Locked and removed vertices, and non-neighbours, are not collapsible.
+void CheckNotCollapsible(CollapseRules& rules, HalfEdgeMesh& mesh)
+{
   // Locked and removed vertices, and non-neighbours, are not collapsible.
   const int32_t fin[9] = { 0, 1, 2, 1, 0, 3, 0, 1, 4 };
   const float finPositions[15] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1 };
@@ -1822,6 +2063,24 @@ CD_TEST_CASE(RulesLinkCondition)
   CD_CHECK(rules.Check(mesh, finPositions, 2, 0) == CollapseVerdict::NotCollapsible);
   CD_CHECK(rules.Check(mesh, finPositions, 0, 2) == CollapseVerdict::NotCollapsible);
   CD_CHECK(rules.Check(mesh, finPositions, 2, 3) == CollapseVerdict::NotCollapsible);
+}
+
+CD_TEST_CASE(RulesLinkCondition)
+{
+  // The phases share the rules and rebuild the one mesh, in this order.
+  CollapseRules rules{ CollapseRuleOptions() };
+  HalfEdgeMesh mesh;
+  CheckLinkTetrahedron(rules, mesh);
+  CheckLinkAnnulus(rules, mesh);
+
+  // A single triangle: collapsing an edge would leave it hanging by a vertex.
+  const int32_t one[3] = { 0, 1, 2 };
+  const float onePositions[9] = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+  mesh.Build(3, one, 1);
+  CD_CHECK(rules.Check(mesh, onePositions, 0, 1) == CollapseVerdict::LinkCondition);
+
+  CheckLinkOctahedron(rules, mesh);
+  CheckNotCollapsible(rules, mesh);
 }
 
 /// The pyramid with the apex at height h, as float positions.
