@@ -1099,6 +1099,62 @@ vtkSmartPointer<vtkPolyData> WithColourArray(vtkPolyData* mesh, double offset, d
   return copy;
 }
 
+// A one-component field (a temperature) that is linear on a flat sheet, T = 2x + 3y + 5: the
+// colour quadric of every triangle holds that linear relation exactly, so full collapses place
+// each moved survivor where T is still that function of its new position, for either schedule.
+CD_TEST_CASE(PlacementLinearField)
+{
+  auto sheet = meshes::FlatGrid(40, 40, Pattern::Constant);
+  sheet->GetPointData()->Initialize();
+  vtkNew<vtkFloatArray> field;
+  field->SetName("Temperature");
+  field->SetNumberOfTuples(sheet->GetNumberOfPoints());
+  const auto linear = [](const double p[3]) { return 2.0 * p[0] + 3.0 * p[1] + 5.0; };
+  for (vtkIdType i = 0; i < sheet->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    sheet->GetPoint(i, p);
+    field->SetValue(i, static_cast<float>(linear(p)));
+  }
+  sheet->GetPointData()->SetScalars(field);
+  double range[2];
+  field->GetRange(range);
+  for (const int schedule :
+       { vtkColorHalfEdgeDecimation::Greedy, vtkColorHalfEdgeDecimation::Batched })
+  {
+    const RunResult r = Decimate(sheet, 0.9,
+                                 [schedule](vtkColorHalfEdgeDecimation* f)
+                                 {
+                                   f->SetErrorMetricToColorQuadric();
+                                   f->OptimalPlacementOn();
+                                   f->SetCollapseSchedule(schedule);
+                                 });
+    CD_CHECK(r.Errors == 0 && r.Warnings == 0 && r.Collapses > 0);
+    vtkDataArray* out = r.Output->GetPointData()->GetArray("Temperature");
+    vtkIdTypeArray* ids = OriginalIdArray(r.Output);
+    CD_CHECK(out && ids && out->GetNumberOfComponents() == 1);
+    if (!out || !ids)
+    {
+      return;
+    }
+    long long moved = 0;
+    double worst = 0.0;
+    for (vtkIdType i = 0; i < r.Output->GetNumberOfPoints(); ++i)
+    {
+      double p[3], q[3];
+      r.Output->GetPoint(i, p);
+      sheet->GetPoint(ids->GetValue(i), q);
+      moved += (p[0] != q[0] || p[1] != q[1] || p[2] != q[2]) ? 1 : 0;
+      worst = std::max(worst, std::abs(out->GetComponent(i, 0) - linear(p)));
+    }
+    std::cout << "  schedule " << schedule << ": " << moved << " of "
+              << r.Output->GetNumberOfPoints() << " points moved, largest |T - (2x + 3y + 5)| "
+              << worst << " (range " << range[1] - range[0] << ")" << std::endl;
+    CD_CHECK(moved > 0);
+    CD_CHECK(worst <= 1e-4 * (range[1] - range[0]));
+  }
+}
+
 CD_TEST_CASE(PlacementColorArrays)
 {
   // Sharp regions with pure 0 and 255 channels: the float array spans [0,1] exactly, the

@@ -6,6 +6,9 @@
 //  - vtkColorHalfEdgeDecimation at its defaults and with the paper's method, with Temperature
 //    as the colour array (a grey value, stretched from its range);
 //  - vtkColorHalfEdgeDecimation with the attribute quadric at colour weights 0.1 to 10;
+//  - vtkColorHalfEdgeDecimation with the colour quadric and full collapses (OptimalPlacement,
+//    which moves the survivor and gives it a new field value) at colour weights 1 and 0.1, on
+//    both schedules;
 //  - vtkQuadricDecimation with its attribute error metric on the scalars (QuadricPeer.h);
 //  - vtkQuadricDecimation on geometry alone (each output point then takes the Temperature of
 //    the nearest input point, as color-decimate-run does for colours);
@@ -126,6 +129,30 @@ void AddAttributeQuadricRuns(vtkPolyData* input, double reduction, std::vector<R
   }
 }
 
+/// The colour quadric with full collapses (OptimalPlacement: the survivor moves, and its field
+/// value with it, as vtkQuadricDecimation's do), at two colour weights, on either schedule.
+void AddPlacementRuns(vtkPolyData* input, double reduction, std::vector<Run>& runs)
+{
+  for (const double weight : { 1.0, 0.1 })
+  {
+    for (const bool greedy : { false, true })
+    {
+      auto configure = [weight, greedy](vtkColorHalfEdgeDecimation* filter)
+      {
+        filter->SetErrorMetricToColorQuadric();
+        filter->OptimalPlacementOn();
+        filter->SetColorWeight(weight);
+        filter->SetCollapseSchedule(greedy ? vtkColorHalfEdgeDecimation::Greedy
+                                           : vtkColorHalfEdgeDecimation::Batched);
+      };
+      char name[96];
+      std::snprintf(name, sizeof(name), "colour quadric, OptimalPlacement, ColorWeight %g, %s",
+                    weight, greedy ? "Greedy" : "Batched");
+      runs.push_back({ name, HalfEdge(input, reduction, configure), {} });
+    }
+  }
+}
+
 /// Every run on `input`.
 std::vector<Run> Simplify(vtkPolyData* input, double reduction)
 {
@@ -138,6 +165,7 @@ std::vector<Run> Simplify(vtkPolyData* input, double reduction)
       HalfEdge(input, reduction, [](vtkColorHalfEdgeDecimation* f) { f->SetPaperDefaults(); }),
       {} });
   AddAttributeQuadricRuns(input, reduction, runs);
+  AddPlacementRuns(input, reduction, runs);
   runs.push_back({ "vtkQuadricDecimation, attributes on", Quadric(input, reduction, true), {} });
   runs.push_back({ "vtkQuadricDecimation, attributes off", Quadric(input, reduction, false), {} });
   return runs;
