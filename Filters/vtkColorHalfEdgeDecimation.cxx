@@ -333,7 +333,6 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
 vtkColorHalfEdgeDecimation::~vtkColorHalfEdgeDecimation()
 {
   this->SetOriginalPointIdsArrayName(nullptr);
-  delete this->Phases;
 }
 
 //------------------------------------------------------------------------------

@@ -81,6 +81,8 @@
 #include "vtkColorDecimationModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <memory> // for std::unique_ptr
+
 class vtkTable;
 namespace colordecimation
 {
@@ -522,7 +524,7 @@ protected:
   vtkIdType NumberOfCollapses;
   vtkIdType StateMemory;
   int NumberOfThreadsUsed;
-  colordecimation::PhaseTimes* Phases;
+  std::unique_ptr<colordecimation::PhaseTimes> Phases;
 
 private:
   vtkColorHalfEdgeDecimation(const vtkColorHalfEdgeDecimation&) = delete;

@@ -90,6 +90,8 @@ public:
   }
   T* allocate(size_t n)
   {
+    static_assert(alignof(T) <= __STDCPP_DEFAULT_NEW_ALIGNMENT__,
+                  "small blocks come from the plain operator new: no over-aligned types");
     if (n > static_cast<size_t>(-1) / sizeof(T))
     {
       throw std::bad_array_new_length();
