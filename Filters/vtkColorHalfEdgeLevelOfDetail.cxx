@@ -54,6 +54,39 @@ vtkMTimeType RecordTime(vtkDataObject* record)
   return time;
 }
 
+/// What the cached mesh was read from: the input's points and cell arrays (connectivity and
+/// offsets), each with its MTime. The input's own MTime is no key: ParaView shallow-copies the
+/// data into it at every update, which moves its MTime while these stay the same objects.
+struct GeometryKey
+{
+  std::array<const vtkObject*, 9> Parts{};
+  std::array<vtkMTimeType, 9> Times{};
+
+  explicit GeometryKey(vtkPolyData* input = nullptr)
+  {
+    if (!input)
+    {
+      return;
+    }
+    this->Set(0, input->GetPoints());
+    vtkCellArray* cells[4] = { input->GetVerts(), input->GetLines(), input->GetPolys(),
+                               input->GetStrips() };
+    for (int k = 0; k < 4; ++k)
+    {
+      this->Set(1 + 2 * k, cells[k] ? cells[k]->GetConnectivityArray() : nullptr);
+      this->Set(2 + 2 * k, cells[k] ? cells[k]->GetOffsetsArray() : nullptr);
+    }
+  }
+  void Set(int k, vtkObject* part)
+  {
+    this->Parts[k] = part;
+    this->Times[k] = part ? part->GetMTime() : 0;
+  }
+  bool operator==(const GeometryKey& other) const
+  {
+    return this->Parts == other.Parts && this->Times == other.Times;
+  }
+};
 } // namespace
 
 /// The mesh and the record of the last execution, kept while neither changes.
@@ -62,7 +95,7 @@ struct vtkColorHalfEdgeLevelOfDetail::Cache
   colordecimation::adapter::InputMesh Mesh;
   colordecimation::CollapseRecord Record;
   std::vector<int32_t> Where; ///< each input point's point in the level
-  colordecimation::adapter::GeometryKey Input;
+  GeometryKey Input;
   vtkDataObject* RecordData = nullptr;
   vtkMTimeType RecordTime = 0;
   bool Valid = false;
@@ -119,8 +152,8 @@ int vtkColorHalfEdgeLevelOfDetail::FillInputPortInformation(int port, vtkInforma
 bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObject* record)
 {
   Cache& cache = *this->Cached;
-  if (cache.Valid && cache.Input == colordecimation::adapter::GeometryKey(input) &&
-      cache.RecordData == record && cache.RecordTime == RecordTime(record))
+  if (cache.Valid && cache.Input == GeometryKey(input) && cache.RecordData == record &&
+      cache.RecordTime == RecordTime(record))
   {
     return true;
   }
@@ -133,18 +166,13 @@ bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObjec
     vtkDebugMacro(<< "Empty input: empty output.");
     return false;
   }
-  // A geometry identified before (by the decimation that made the record, typically) was
-  // checked then: its points need not be gathered and hashed again.
-  colordecimation::adapter::MeshIdentity identity;
-  const bool known = colordecimation::adapter::RecallIdentity(input, identity);
-  if (!(known ? colordecimation::adapter::ReadTriangles(this, input, threads, cache.Mesh)
-              : colordecimation::adapter::ReadGeometry(this, input, threads, cache.Mesh)))
+  if (!colordecimation::adapter::ReadGeometry(this, input, threads, cache.Mesh))
   {
     return false;
   }
-  identity = known ? identity : colordecimation::adapter::Identify(input, cache.Mesh);
   std::string why;
-  if (!colordecimation::adapter::ReadRecordTable(vtkTable::SafeDownCast(record), identity,
+  if (!colordecimation::adapter::ReadRecordTable(vtkTable::SafeDownCast(record),
+                                                 colordecimation::adapter::Identify(cache.Mesh),
                                                  cache.Record, why))
   {
     vtkErrorMacro(<< "The collapse record cannot be used: " << why << ". Output is empty.");
@@ -154,7 +182,7 @@ bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObjec
   // as were the fixed flags.
   cache.Mesh.Points = colordecimation::Buffer<double>();
   cache.Mesh.Soup.Fixed = std::vector<uint8_t>();
-  cache.Input = colordecimation::adapter::GeometryKey(input);
+  cache.Input = GeometryKey(input);
   cache.RecordData = record;
   cache.RecordTime = RecordTime(record);
   cache.Valid = true;

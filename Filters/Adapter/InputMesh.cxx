@@ -504,43 +504,16 @@ void WriteColor(vtkDataArray* array, vtkIdType i, const double rgb[3], const dou
   }
 }
 
-GeometryKey::GeometryKey(vtkPolyData* input)
-{
-  if (!input)
-  {
-    return;
-  }
-  const auto set = [this](int k, vtkObject* part)
-  {
-    this->Parts[k] = part;
-    this->Times[k] = part ? part->GetMTime() : 0;
-  };
-  set(0, input->GetPoints());
-  vtkCellArray* cells[4] = { input->GetVerts(), input->GetLines(), input->GetPolys(),
-                             input->GetStrips() };
-  for (int k = 0; k < 4; ++k)
-  {
-    set(1 + 2 * k, cells[k] ? cells[k]->GetConnectivityArray() : nullptr);
-    set(2 + 2 * k, cells[k] ? cells[k]->GetOffsetsArray() : nullptr);
-  }
-}
-
 /// The points and the triangles; false (with an error) where they cannot be decimated.
 bool ReadGeometry(vtkObject* self, vtkPolyData* input, int threads, InputMesh& mesh)
 {
+  const vtkIdType numPoints = input->GetNumberOfPoints();
   if (!GatherPoints(input->GetPoints(), mesh.Points, threads))
   {
     vtkErrorWithObjectMacro(
       self, << "The input has NaN or infinite point coordinates; output is empty.");
     return false;
   }
-  return ReadTriangles(self, input, threads, mesh);
-}
-
-/// The triangles; false (with an error or a warning) where there are none to decimate.
-bool ReadTriangles(vtkObject* self, vtkPolyData* input, int threads, InputMesh& mesh)
-{
-  const vtkIdType numPoints = input->GetNumberOfPoints();
   TriangleSoup& soup = mesh.Soup;
   ExtractTriangles(input, soup, threads);
   if (soup.IdsOutOfRange)

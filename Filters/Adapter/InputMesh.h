@@ -12,7 +12,6 @@
 
 #include "vtkType.h"
 
-#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -71,34 +70,11 @@ struct InputMesh
 };
 
 /**
- * What a mesh was read from: the input's points and cell arrays (connectivity and offsets of
- * its verts, lines, polys and strips), each with its MTime. Two keys are equal while the same
- * arrays, unchanged, make the geometry. The input's own MTime is no part of it: ParaView
- * shallow-copies the data into it at every update, which moves its MTime while these stay the
- * same objects.
- */
-struct GeometryKey
-{
-  std::array<const vtkObject*, 9> Parts{};
-  std::array<vtkMTimeType, 9> Times{};
-
-  explicit GeometryKey(vtkPolyData* input = nullptr);
-  bool operator==(const GeometryKey& other) const
-  {
-    return this->Parts == other.Parts && this->Times == other.Times;
-  }
-};
-
-/**
  * The points and the triangles of `input` into `mesh`; false (with an error or warning on
  * `self`, the output to be left empty) when they cannot be decimated: NaN or infinite
  * coordinates, point ids out of range, too many triangles, or none.
  */
 bool ReadGeometry(vtkObject* self, vtkPolyData* input, int threads, InputMesh& mesh);
-
-/// ReadGeometry without the points (mesh.Points left empty), for a geometry already read and
-/// checked once (its identity recalled, RecordTable.h).
-bool ReadTriangles(vtkObject* self, vtkPolyData* input, int threads, InputMesh& mesh);
 
 /**
  * In RequestUpdateExtent: when the output is one piece of several, ask input 0 for one level

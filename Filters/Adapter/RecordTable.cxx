@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <mutex>
 #include <sstream>
 
 namespace colordecimation
@@ -232,47 +231,6 @@ MeshIdentity Identify(const InputMesh& mesh)
   hex << h;
   identity.Checksum = hex.str();
   return identity;
-}
-
-namespace
-{
-/// The last identity computed from a vtkPolyData, with what it was read from.
-struct RememberedIdentity
-{
-  std::mutex Lock;
-  GeometryKey Key;
-  MeshIdentity Identity;
-  bool Valid = false;
-};
-
-RememberedIdentity& Remembered()
-{
-  static RememberedIdentity remembered;
-  return remembered;
-}
-} // namespace
-
-MeshIdentity Identify(vtkPolyData* input, const InputMesh& mesh)
-{
-  MeshIdentity identity = Identify(mesh);
-  RememberedIdentity& remembered = Remembered();
-  const std::lock_guard<std::mutex> lock(remembered.Lock);
-  remembered.Key = GeometryKey(input);
-  remembered.Identity = identity;
-  remembered.Valid = true;
-  return identity;
-}
-
-bool RecallIdentity(vtkPolyData* input, MeshIdentity& identity)
-{
-  RememberedIdentity& remembered = Remembered();
-  const std::lock_guard<std::mutex> lock(remembered.Lock);
-  if (!remembered.Valid || !(remembered.Key == GeometryKey(input)))
-  {
-    return false;
-  }
-  identity = remembered.Identity;
-  return true;
 }
 
 void WriteRecordTable(const CollapseRecord& record, const MeshIdentity& mesh, const char* schedule,

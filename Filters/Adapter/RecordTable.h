@@ -21,7 +21,6 @@
 #include <cstdint>
 #include <string>
 
-class vtkPolyData;
 class vtkTable;
 
 namespace colordecimation
@@ -40,17 +39,6 @@ struct MeshIdentity
 
 /// The identity of a mesh as the decimation reads it (points, triangulated cells).
 MeshIdentity Identify(const InputMesh& mesh);
-
-/**
- * The identity of `mesh`, read from `input` (with its points): computed, and remembered with
- * the input's GeometryKey. The process keeps the last one, so that a level filter that reads
- * the geometry a decimation has just recorded need not gather and hash it again.
- */
-MeshIdentity Identify(vtkPolyData* input, const InputMesh& mesh);
-
-/// Whether `input`'s geometry is the one last identified (same arrays, unchanged since), and
-/// then its identity.
-bool RecallIdentity(vtkPolyData* input, MeshIdentity& identity);
 
 /// Fill `table` with the record (rows) and the mesh's identity (field data).
 void WriteRecordTable(const CollapseRecord& record, const MeshIdentity& mesh, const char* schedule,

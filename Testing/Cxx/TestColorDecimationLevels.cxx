@@ -406,34 +406,6 @@ CD_TEST_CASE(LevelCacheKeepsShallowCopies)
   colors->Modified();
 }
 
-// A level filter reading the geometry a decimation has just recorded recalls its identity
-// instead of hashing it again, as long as the same arrays are unchanged by their MTimes (the
-// pipeline's own rule): a point moved in place without Modified() goes unseen, as it does for
-// every VTK filter; after Modified(), the mesh is hashed again and the record refused.
-CD_TEST_CASE(LevelRecallsRecordedIdentity)
-{
-  auto mesh = DecoratedSphere(3);
-  const Recorded run = RecordRun(mesh, 1.0, vtkColorHalfEdgeDecimation::Greedy);
-  double p[3];
-  mesh->GetPoints()->GetPoint(5, p);
-  const double x = p[0];
-  p[0] += 0.25;
-  mesh->GetPoints()->GetData()->SetTuple(5, p); // in place: no Modified()
-  Messages unseen;
-  auto level = Extract(
-    mesh, run.Record, [](auto* f) { f->SetTargetReduction(0.5); }, &unseen);
-  CD_CHECK_MSG(!unseen.HasError("belongs to another mesh") && level->GetNumberOfCells() > 0,
-               "the recorded identity was not recalled: " << unseen.ErrorText());
-  mesh->GetPoints()->Modified();
-  ExpectRecordError(mesh, run.Record, "belongs to another mesh");
-  p[0] = x;
-  mesh->GetPoints()->SetPoint(5, p);
-  mesh->GetPoints()->Modified();
-  auto again = Extract(
-    mesh, run.Record, [](auto* f) { f->SetTargetReduction(0.5); }, &unseen);
-  CD_CHECK(again->GetNumberOfCells() == level->GetNumberOfCells());
-}
-
 // Saved with vtkXMLTableWriter and read back, the record gives the same level.
 CD_TEST_CASE(RecordRoundTrip)
 {
