@@ -403,6 +403,41 @@ vtkIdType LockPoints(vtkDataArray* locks, TriangleSoup& soup)
   return locked;
 }
 
+namespace
+{
+/// The smallest and largest finite value of components [0, used) of `array`, by ranges of
+/// tuples on `threads` threads (min and max do not depend on the order).
+void FiniteRange(vtkDataArray* array, int used, int threads, double& lo, double& hi)
+{
+  const size_t n = static_cast<size_t>(array->GetNumberOfTuples());
+  std::vector<double> los(size_t(threads), std::numeric_limits<double>::infinity());
+  std::vector<double> his(size_t(threads), -std::numeric_limits<double>::infinity());
+  double* loOut = los.data();
+  double* hiOut = his.data();
+  ParallelFor(n, threads,
+              [array, used, loOut, hiOut](size_t begin, size_t end, int t)
+              {
+                double l = loOut[t], h = hiOut[t];
+                for (size_t i = begin; i < end; ++i)
+                {
+                  for (int k = 0; k < used; ++k)
+                  {
+                    const double x = array->GetComponent(static_cast<vtkIdType>(i), k);
+                    if (std::isfinite(x))
+                    {
+                      l = std::min(l, x);
+                      h = std::max(h, x);
+                    }
+                  }
+                }
+                loOut[t] = l;
+                hiOut[t] = h;
+              });
+  lo = *std::min_element(los.begin(), los.end());
+  hi = *std::max_element(his.begin(), his.end());
+}
+} // namespace
+
 vtkIdType ConvertColors(vtkDataArray* array, Buffer<float>& rgb, double mapping[2], int threads)
 {
   const size_t n = static_cast<size_t>(array->GetNumberOfTuples());
@@ -433,16 +468,8 @@ vtkIdType ConvertColors(vtkDataArray* array, Buffer<float>& rgb, double mapping[
     return 0;
   }
 
-  // The smallest and largest finite value of the components used (VTK's ranges, each on VTK's
-  // threads; no finite value leaves lo > hi, taken as [0,1] below).
-  double lo = VTK_DOUBLE_MAX, hi = VTK_DOUBLE_MIN;
-  for (int k = 0; k < used; ++k)
-  {
-    double range[2];
-    array->GetFiniteRange(range, k);
-    lo = std::min(lo, range[0]);
-    hi = std::max(hi, range[1]);
-  }
+  double lo = 0.0, hi = 0.0;
+  FiniteRange(array, used, threads, lo, hi);
   const bool unit = lo >= 0.0 && hi <= 1.0;
   const double offset = unit ? 0.0 : lo;
   const double scale = unit ? 1.0 : (hi > lo ? 1.0 / (hi - lo) : 0.0);
