@@ -524,9 +524,10 @@ protected:
   vtkIdType NumberOfCollapses;
   vtkIdType StateMemory;
   int NumberOfThreadsUsed;
-  std::unique_ptr<colordecimation::PhaseTimes> Phases;
 
 private:
+  std::unique_ptr<colordecimation::PhaseTimes> Phases;
+
   vtkColorHalfEdgeDecimation(const vtkColorHalfEdgeDecimation&) = delete;
   void operator=(const vtkColorHalfEdgeDecimation&) = delete;
 };

@@ -406,7 +406,9 @@ vtkIdType LockPoints(vtkDataArray* locks, TriangleSoup& soup)
 namespace
 {
 /// The smallest and largest finite value of components [0, used) of `array`, by ranges of
-/// tuples on `threads` threads (min and max do not depend on the order).
+/// tuples on `threads` threads (min and max do not depend on the order). Not VTK's
+/// GetFiniteRange: that one caches in the array's information, stale when the array is
+/// written in place without its own Modified(), and unlocked when filters share an input.
 void FiniteRange(vtkDataArray* array, int used, int threads, double& lo, double& hi)
 {
   const size_t n = static_cast<size_t>(array->GetNumberOfTuples());

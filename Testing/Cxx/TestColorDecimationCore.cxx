@@ -55,7 +55,6 @@ const float PyramidColors[15] = { 0, 0, 0, 0.6f, 0, 0, 0, 0, 0, 0, 0.8f, 0, 0, 0
 /// One plane through the centre, axis-aligned and oblique: Q(d) = w (n.d)^2 by hand.
 void CheckQuadricOnePlane()
 {
-  // One plane through the centre: Q(d) = w (n.d)^2.
   Quadric q;
   const double nz[3] = { 0, 0, 1 };
   q.AddPlaneThroughCentre(nz, 2.0);
@@ -913,7 +912,6 @@ bool CheckVertexHeapRandomOperations(VertexHeap& heap, std::map<int32_t, double>
 /// Draining the heap gives the keys sorted, as the sorted reference.
 void CheckVertexHeapDrain(VertexHeap& heap, const std::map<int32_t, double>& reference)
 {
-  // Drain: keys come out sorted, as the sorted reference.
   std::vector<double> expected;
   for (const auto& e : reference)
   {
@@ -1303,7 +1301,6 @@ CD_TEST_CASE(HalfEdgeCollapse)
 /// Morton codes by hand: x, y and z take bits 0, 1 and 2 of each group of three.
 void CheckMortonCodes()
 {
-  // Morton codes by hand: x, y and z take bits 0, 1 and 2 of each group of three.
   const double lo[3] = { 0, 0, 0 };
   const double cell = 1.0 / 1024; // box [0,1]^3
   auto code = [&](double x, double y, double z)
@@ -1507,7 +1504,6 @@ void CheckRenumberedBack(const HalfEdgeMesh& before, HalfEdgeMesh& mesh,
 {
   const int32_t n = before.GetNumberOfVertices();
   const int32_t nf = before.GetNumberOfFaceSlots();
-  // And back: the inverse permutations give the very same arrays.
   const std::vector<int32_t> vertexBack = InversePermutation(vertexTo);
   const std::vector<int32_t> faceBack = InversePermutation(faceTo);
   mesh.Renumber(vertexBack.data(), faceBack.data());
@@ -1960,7 +1956,6 @@ CD_TEST_CASE(ReleaseInput)
 /// A tetrahedron: every collapse would make two triangles share all three vertices.
 void CheckLinkTetrahedron(CollapseRules& rules, HalfEdgeMesh& mesh)
 {
-  // A tetrahedron: every collapse would make two triangles share all three vertices.
   const int32_t tetra[12] = { 0, 2, 1, 0, 3, 2, 0, 1, 3, 1, 2, 3 };
   const float tetraPositions[12] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   mesh.Build(4, tetra, 4);
@@ -2056,7 +2051,6 @@ void CheckLinkOctahedron(CollapseRules& rules, HalfEdgeMesh& mesh)
 /// Locked and removed vertices, and non-neighbours, are not collapsible.
 void CheckNotCollapsible(CollapseRules& rules, HalfEdgeMesh& mesh)
 {
-  // Locked and removed vertices, and non-neighbours, are not collapsible.
   const int32_t fin[9] = { 0, 1, 2, 1, 0, 3, 0, 1, 4 };
   const float finPositions[15] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1 };
   mesh.Build(5, fin, 3);
