@@ -10,16 +10,19 @@
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSetGet.h"
+#include "vtkSmartPointer.h"
 #include "vtkType.h"
 
 #include <algorithm>
 #include <atomic>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
@@ -83,13 +86,12 @@ std::vector<vtkIdType> RangeStarts(const std::vector<vtkIdType>& counts)
   return starts;
 }
 
-/// The points the surviving triangles use: input id -> output id (-1 if unused), and the
-/// lists of both for copying the point data.
+/// The points the surviving triangles use: input id -> output id (-1 if unused), and back.
 struct UsedPoints
 {
   Buffer<vtkIdType> NewId;
-  vtkNew<vtkIdList> Source;               ///< output point i is input point Source[i]
-  vtkNew<vtkIdList> Target;               ///< 0, 1, 2, ...
+  Buffer<vtkIdType> Source;               ///< output point i is input point Source[i]
+  vtkIdType Points = 0;                   ///< the used points
   int FaceThreads = 1;                    ///< the ranges of faces, for WriteTriangles
   std::vector<vtkIdType> TrianglesBefore; ///< the surviving triangles before each range
   vtkIdType Triangles = 0;                ///< the surviving triangles
@@ -150,15 +152,14 @@ void FindUsedPoints(const Faces& faces, vtkIdType numPoints, int threads, UsedPo
                 count[t] = marked;
               });
   const std::vector<vtkIdType> starts = RangeStarts(counts);
+  used.Points = starts.back();
   used.NewId.resize(static_cast<size_t>(numPoints));
-  used.Source->SetNumberOfIds(starts.back());
-  used.Target->SetNumberOfIds(starts.back());
+  used.Source.resize(static_cast<size_t>(used.Points));
   vtkIdType* newId = used.NewId.data();
-  vtkIdType* source = used.Source->GetPointer(0);
-  vtkIdType* target = used.Target->GetPointer(0);
+  vtkIdType* source = used.Source.data();
   const vtkIdType* start = starts.data();
   ParallelFor(static_cast<size_t>(numPoints), pointThreads,
-              [mark, start, newId, source, target](size_t begin, size_t end, int t)
+              [mark, start, newId, source](size_t begin, size_t end, int t)
               {
                 vtkIdType next = start[t];
                 for (size_t i = begin; i < end; ++i)
@@ -168,29 +169,110 @@ void FindUsedPoints(const Faces& faces, vtkIdType numPoints, int threads, UsedPo
                   {
                     newId[i] = next;
                     source[next] = static_cast<vtkIdType>(i);
-                    target[next] = next;
                     ++next;
                   }
                 }
               });
 }
 
+/// `values` unwritten values for `array`, on huge pages when large (Core/util/Buffer.h).
+template <typename Array>
+void AllocateValues(Array* array, vtkIdType values)
+{
+  using Value = typename Array::ValueType;
+  void* memory =
+    values > 0 ? AllocateFreeable(static_cast<size_t>(values) * sizeof(Value)) : nullptr;
+  if (!memory)
+  {
+    array->SetNumberOfValues(values);
+    return;
+  }
+  array->SetArray(static_cast<Value*>(memory), values, 0, Array::VTK_DATA_ARRAY_FREE);
+}
+
+/**
+ * The tuples source[0], source[1], ... of `in`, bit for bit, in a new array of its class, with
+ * its name, component names, information and lookup table. Arrays in the standard layout are
+ * copied on `threads` threads into huge pages; the others by VTK.
+ */
+vtkSmartPointer<vtkAbstractArray> Gather(vtkAbstractArray* in, const vtkIdType* source,
+                                         vtkIdType count, int threads)
+{
+  auto out = vtkSmartPointer<vtkAbstractArray>::Take(in->NewInstance());
+  out->SetNumberOfComponents(in->GetNumberOfComponents());
+  out->SetName(in->GetName());
+  out->CopyComponentNames(in);
+  if (in->HasInformation())
+  {
+    out->CopyInformation(in->GetInformation(), 1);
+  }
+  vtkDataArray* data = vtkDataArray::SafeDownCast(in);
+  if (data)
+  {
+    vtkDataArray::SafeDownCast(out)->SetLookupTable(data->GetLookupTable());
+  }
+  const size_t tupleBytes =
+    static_cast<size_t>(in->GetNumberOfComponents()) * static_cast<size_t>(in->GetDataTypeSize());
+  void* memory = data && data->HasStandardMemoryLayout() && count > 0 && tupleBytes > 0
+    ? AllocateFreeable(static_cast<size_t>(count) * tupleBytes)
+    : nullptr;
+  if (!memory)
+  {
+    vtkNew<vtkIdList> ids;
+    ids->SetNumberOfIds(count);
+    std::copy(source, source + count, ids->GetPointer(0));
+    out->SetNumberOfTuples(count);
+    in->GetTuples(ids, out);
+    return out;
+  }
+  out->SetVoidArray(memory, count * in->GetNumberOfComponents(), 0,
+                    vtkAbstractArray::VTK_DATA_ARRAY_FREE);
+  const char* from = static_cast<const char*>(data->GetVoidPointer(0));
+  char* to = static_cast<char*>(memory);
+  ParallelFor(static_cast<size_t>(count), ThreadsFor(static_cast<size_t>(count), threads, 65536),
+              [from, to, source, tupleBytes](size_t begin, size_t end, int)
+              {
+                for (size_t i = begin; i < end; ++i)
+                {
+                  std::memcpy(to + i * tupleBytes,
+                              from + static_cast<size_t>(source[i]) * tupleBytes, tupleBytes);
+                }
+              });
+  return out;
+}
+
+/// Every array of `inPD` gathered at the used points (Gather), with its attribute roles: the
+/// global ids too, which stay unique (each output point is one input point).
+void WritePointData(vtkPointData* inPD, const UsedPoints& used, int threads, vtkPointData* outPD)
+{
+  for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* in = inPD->GetAbstractArray(a);
+    const int index = outPD->AddArray(Gather(in, used.Source.data(), used.Points, threads));
+    for (int role = 0; role < vtkDataSetAttributes::NUM_ATTRIBUTES; ++role)
+    {
+      if (inPD->GetAbstractAttribute(role) == in)
+      {
+        outPD->SetActiveAttribute(index, role);
+      }
+    }
+  }
+}
+
 /// The used points, copied from the input (in its own type), moved ones (with a decimator) at
 /// their new place.
 void WritePoints(vtkPolyData* input, const Decimator* decimator, const UsedPoints& used,
-                 vtkPolyData* output)
+                 int threads, vtkPolyData* output)
 {
-  const vtkIdType numOutPoints = used.Source->GetNumberOfIds();
   vtkNew<vtkPoints> outPoints;
-  outPoints->SetDataType(input->GetPoints()->GetDataType());
-  outPoints->SetNumberOfPoints(numOutPoints);
-  input->GetPoints()->GetData()->GetTuples(used.Source, outPoints->GetData());
+  outPoints->SetData(vtkDataArray::SafeDownCast(
+    Gather(input->GetPoints()->GetData(), used.Source.data(), used.Points, threads)));
   if (decimator && decimator->HasMovedVertices())
   {
     // Full collapses (ColorQuadric with OptimalPlacement) moved some surviving vertices.
-    for (vtkIdType i = 0; i < numOutPoints; ++i)
+    for (vtkIdType i = 0; i < used.Points; ++i)
     {
-      const auto source = static_cast<int32_t>(used.Source->GetId(i));
+      const auto source = static_cast<int32_t>(used.Source[static_cast<size_t>(i)]);
       if (decimator->IsMoved(source))
       {
         double p[3];
@@ -209,8 +291,11 @@ void WriteTriangles(const Faces& faces, const TriangleSoup& soup, const UsedPoin
                     vtkIdList* sourceCells, vtkIdList* targetCells, vtkPolyData* output)
 {
   vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfValues(3 * used.Triangles);
+  vtkNew<vtkIdTypeArray> offsets;
+  AllocateValues(connectivity.Get(), 3 * used.Triangles);
+  AllocateValues(offsets.Get(), used.Triangles + 1);
   vtkIdType* points = connectivity->GetPointer(0);
+  vtkIdType* offset = offsets->GetPointer(0);
   vtkIdType* source = nullptr;
   vtkIdType* target = nullptr;
   if (sourceCells)
@@ -224,31 +309,33 @@ void WriteTriangles(const Faces& faces, const TriangleSoup& soup, const UsedPoin
   const vtkIdType* before = used.TrianglesBefore.data();
   const vtkIdType* cell = soup.SourceCell.empty() ? nullptr : soup.SourceCell.data();
   const vtkIdType firstCell = soup.FirstCell;
-  ParallelFor(
-    static_cast<size_t>(faces.Count()), used.FaceThreads,
-    [faces, points, source, target, newId, before, cell, firstCell](size_t begin, size_t end, int t)
-    {
-      vtkIdType next = before[t];
-      for (size_t f = begin; f < end; ++f)
-      {
-        int32_t tri[3];
-        if (faces.Get(static_cast<int32_t>(f), tri))
-        {
-          for (int k = 0; k < 3; ++k)
-          {
-            points[3 * next + k] = newId[tri[k]];
-          }
-          if (source)
-          {
-            source[next] = cell ? cell[f] : firstCell + static_cast<vtkIdType>(f);
-            target[next] = next;
-          }
-          ++next;
-        }
-      }
-    });
+  ParallelFor(static_cast<size_t>(faces.Count()), used.FaceThreads,
+              [faces, points, offset, source, target, newId, before, cell,
+               firstCell](size_t begin, size_t end, int t)
+              {
+                vtkIdType next = before[t];
+                for (size_t f = begin; f < end; ++f)
+                {
+                  int32_t tri[3];
+                  if (faces.Get(static_cast<int32_t>(f), tri))
+                  {
+                    offset[next] = 3 * next;
+                    for (int k = 0; k < 3; ++k)
+                    {
+                      points[3 * next + k] = newId[tri[k]];
+                    }
+                    if (source)
+                    {
+                      source[next] = cell ? cell[f] : firstCell + static_cast<vtkIdType>(f);
+                      target[next] = next;
+                    }
+                    ++next;
+                  }
+                }
+              });
+  offset[used.Triangles] = 3 * used.Triangles;
   vtkNew<vtkCellArray> polys;
-  polys->SetData(3, connectivity);
+  polys->SetData(offsets, connectivity);
   output->SetPolys(polys);
 }
 
@@ -265,9 +352,9 @@ void WriteMovedColors(const InputMesh& mesh, const Decimator& decimator, const U
   {
     return;
   }
-  for (vtkIdType i = 0; i < used.Source->GetNumberOfIds(); ++i)
+  for (vtkIdType i = 0; i < used.Points; ++i)
   {
-    const auto source = static_cast<int32_t>(used.Source->GetId(i));
+    const auto source = static_cast<int32_t>(used.Source[static_cast<size_t>(i)]);
     if (decimator.IsMoved(source))
     {
       double c[3];
@@ -340,12 +427,12 @@ void WriteOriginalIds(vtkObject* self, vtkPolyData* input, const char* name, con
   vtkDataArray* upstream = UpstreamIds(self, input, name);
   vtkIdTypeArray* upstreamIds = vtkIdTypeArray::SafeDownCast(upstream);
   outPD->RemoveArray(name);
-  const vtkIdType numOutPoints = used.Source->GetNumberOfIds();
+  const vtkIdType numOutPoints = used.Points;
   vtkNew<vtkIdTypeArray> original;
   original->SetName(name);
-  original->SetNumberOfValues(numOutPoints);
+  AllocateValues(original.Get(), numOutPoints);
   vtkIdType* out = original->GetPointer(0);
-  const vtkIdType* source = used.Source->GetPointer(0);
+  const vtkIdType* source = used.Source.data();
   if (upstream && !upstreamIds)
   {
     for (vtkIdType i = 0; i < numOutPoints; ++i) // any array type: one thread
@@ -422,7 +509,7 @@ vtkIdType Write(vtkObject* self, vtkPolyData* input, const InputMesh& mesh, cons
   KeepCarriedArrays(self, input, inPD, inCD);
   UsedPoints used;
   FindUsedPoints(faces, input->GetNumberOfPoints(), threads, used);
-  WritePoints(input, decimator, used, output);
+  WritePoints(input, decimator, used, threads, output);
   // Each output triangle's input cell, when there is cell data to copy.
   const bool cellData = inCD->GetNumberOfArrays() > 0;
   vtkNew<vtkIdList> sourceCells;
@@ -430,8 +517,7 @@ vtkIdType Write(vtkObject* self, vtkPolyData* input, const InputMesh& mesh, cons
   WriteTriangles(faces, mesh.Soup, used, cellData ? sourceCells.Get() : nullptr,
                  cellData ? targetCells.Get() : nullptr, output);
   vtkPointData* outPD = output->GetPointData();
-  outPD->CopyAllocate(inPD, used.Source->GetNumberOfIds());
-  outPD->CopyData(inPD, used.Source, used.Target);
+  WritePointData(inPD, used, threads, outPD);
   if (decimator && decimator->HasMovedVertices() && mesh.ColorArray)
   {
     WriteMovedColors(mesh, *decimator, used, outPD);

@@ -5,7 +5,9 @@
 
 #include "ColorDecimationMeshes.h"
 #include "vtkColorHalfEdgeDecimation.h"
+#include "vtkColorHalfEdgeLevelOfDetail.h"
 
+#include "vtkBitArray.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
@@ -15,6 +17,11 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkSOADataArrayTemplate.h"
+#include "vtkShortArray.h"
+#include "vtkStringArray.h"
+#include "vtkTable.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <chrono>
@@ -190,6 +197,133 @@ vtkSmartPointer<vtkPolyData> Jittered(vtkSmartPointer<vtkPolyData> mesh, double 
     mesh->GetPoints()->SetPoint(i, p[0] + u(rng), p[1] + u(rng), p[2] + u(rng));
   }
   return mesh;
+}
+
+/// Point arrays of every kind, most with an attribute role: the standard layout (RGB scalars,
+/// named components, global ids), another layout (SOA vectors), bits, strings (pedigree ids).
+void AddEveryArrayKind(vtkPolyData* mesh)
+{
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  vtkNew<vtkUnsignedCharArray> rgb;
+  vtkNew<vtkShortArray> pair;
+  vtkNew<vtkIdTypeArray> global;
+  vtkNew<vtkSOADataArrayTemplate<double>> velocity;
+  vtkNew<vtkBitArray> flags;
+  vtkNew<vtkStringArray> names;
+  rgb->SetName("RGB");
+  rgb->SetNumberOfComponents(3);
+  pair->SetName("Pair");
+  pair->SetNumberOfComponents(2);
+  pair->SetComponentName(0, "first");
+  pair->SetComponentName(1, "second");
+  global->SetName("GlobalIds");
+  velocity->SetName("Velocity");
+  velocity->SetNumberOfComponents(3);
+  flags->SetName("Flags");
+  names->SetName("Names");
+  for (vtkDataArray* array :
+       std::initializer_list<vtkDataArray*>{ rgb, pair, global, velocity, flags })
+  {
+    array->SetNumberOfTuples(n);
+  }
+  names->SetNumberOfValues(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    rgb->SetTuple3(i, i % 256, (7 * i) % 256, (13 * i) % 256);
+    pair->SetTuple2(i, static_cast<double>(i % 30000), -static_cast<double>(i % 999));
+    global->SetValue(i, 1000000 + 3 * i);
+    velocity->SetTuple3(i, 0.5 * static_cast<double>(i), 1.0 / (1.0 + static_cast<double>(i)),
+                        -1e-3 * static_cast<double>(i));
+    flags->SetValue(i, (i * 2654435761u) >> 31 & 1);
+    names->SetValue(i, "p" + std::to_string(i));
+  }
+  vtkPointData* pd = mesh->GetPointData();
+  pd->SetScalars(rgb);
+  pd->AddArray(pair);
+  pd->SetGlobalIds(global);
+  pd->SetVectors(velocity);
+  pd->AddArray(flags);
+  pd->SetPedigreeIds(names);
+}
+
+/// Each input point array in `output`: its class, components and their names, each tuple that
+/// of the input point vtkOriginalPointIds names, and its attribute roles.
+void CheckEveryArrayKind(vtkPolyData* input, vtkPolyData* output, const std::string& label)
+{
+  auto* ids = vtkIdTypeArray::SafeDownCast(output->GetPointData()->GetArray("vtkOriginalPointIds"));
+  CD_CHECK_MSG(ids && output->GetNumberOfPoints() > 0, label << ": no original ids");
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  CD_CHECK(outPD->GetNumberOfArrays() == inPD->GetNumberOfArrays() + 1);
+  for (int a = 0; ids && a < inPD->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* in = inPD->GetAbstractArray(a);
+    vtkAbstractArray* out = outPD->GetAbstractArray(in->GetName());
+    CD_CHECK_MSG(out && std::string(out->GetClassName()) == in->GetClassName() &&
+                   out->GetNumberOfComponents() == in->GetNumberOfComponents() &&
+                   out->GetNumberOfTuples() == output->GetNumberOfPoints(),
+                 label << ": array " << in->GetName());
+    if (!out)
+    {
+      continue;
+    }
+    const int comps = in->GetNumberOfComponents();
+    long long differ = 0;
+    for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+    {
+      for (int k = 0; k < comps; ++k)
+      {
+        differ +=
+          in->GetVariantValue(ids->GetValue(i) * comps + k) == out->GetVariantValue(i * comps + k)
+          ? 0
+          : 1;
+      }
+    }
+    CD_CHECK_MSG(differ == 0,
+                 label << ": " << differ << " values of " << in->GetName() << " differ");
+    for (int k = 0; k < comps && in->HasAComponentName(); ++k)
+    {
+      CD_CHECK(out->GetComponentName(k) &&
+               std::string(out->GetComponentName(k)) == in->GetComponentName(k));
+    }
+  }
+  for (int role = 0; role < vtkDataSetAttributes::NUM_ATTRIBUTES; ++role)
+  {
+    vtkAbstractArray* in = inPD->GetAbstractAttribute(role);
+    vtkAbstractArray* out = outPD->GetAbstractAttribute(role);
+    CD_CHECK_MSG((!in && !out) || (in && out && std::string(in->GetName()) == out->GetName()),
+                 label << ": attribute " << vtkDataSetAttributes::GetAttributeTypeAsString(role));
+  }
+}
+
+// Every kind of point array reaches the output as the surviving input points' values, with its
+// roles (the global ids too): by the decimation (both schedules, on a small mesh and on one
+// large enough to be renumbered) and by the level filter.
+CD_TEST_CASE(EveryPointArrayKind)
+{
+  for (int level : { 4, 7 })
+  {
+    auto mesh = meshes::Icosphere(level, Pattern::SharpRegions);
+    AddEveryArrayKind(mesh);
+    for (int schedule : { vtkColorHalfEdgeDecimation::Greedy, vtkColorHalfEdgeDecimation::Batched })
+    {
+      const std::string label =
+        "level " + std::to_string(level) + ", schedule " + std::to_string(schedule);
+      const RunResult run = Decimate(mesh, 0.9,
+                                     [schedule](vtkColorHalfEdgeDecimation* f)
+                                     {
+                                       f->SetCollapseSchedule(schedule);
+                                       f->GenerateCollapseRecordOn();
+                                     });
+      CheckEveryArrayKind(mesh, run.Output, label);
+      vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+      lod->SetInputData(mesh);
+      lod->SetRecordData(run.Filter->GetCollapseRecord());
+      lod->SetTargetReduction(0.5);
+      lod->Update();
+      CheckEveryArrayKind(mesh, lod->GetOutput(), label + ", level filter");
+    }
+  }
 }
 
 CD_TEST_CASE(ScaleTranslationInvariance)

@@ -39,8 +39,12 @@ namespace colordecimation
 /// Allocations from this size on go to huge pages.
 constexpr size_t LargePageBytes = size_t(4) << 20;
 
-/// `bytes` of memory; from LargePageBytes on, aligned to 2 MiB and marked for huge pages.
-inline void* AllocateLarge(size_t bytes)
+/**
+ * `bytes` of memory to be freed with std::free (null if there is none): from LargePageBytes
+ * on, aligned to 2 MiB and marked for huge pages. For arrays handed to other libraries (a VTK
+ * array frees it as VTK_DATA_ARRAY_FREE).
+ */
+inline void* AllocateFreeable(size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   if (bytes >= LargePageBytes)
@@ -50,25 +54,38 @@ inline void* AllocateLarge(size_t bytes)
     void* p = nullptr;
     if (posix_memalign(&p, page, rounded) != 0)
     {
-      throw std::bad_alloc();
+      return nullptr;
     }
     madvise(p, rounded, MADV_HUGEPAGE); // a hint: on failure, ordinary pages
     return p;
   }
 #endif
-  return ::operator new(bytes);
+  return std::malloc(bytes > 0 ? bytes : 1);
+}
+
+/// `bytes` of memory; from LargePageBytes on, as AllocateFreeable's (on huge pages).
+inline void* AllocateLarge(size_t bytes)
+{
+  if (bytes < LargePageBytes)
+  {
+    return ::operator new(bytes);
+  }
+  void* p = AllocateFreeable(bytes);
+  if (!p)
+  {
+    throw std::bad_alloc();
+  }
+  return p;
 }
 
 /// Frees what AllocateLarge(bytes) returned.
 inline void DeallocateLarge(void* p, size_t bytes) noexcept
 {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
   if (bytes >= LargePageBytes)
   {
     std::free(p);
     return;
   }
-#endif
   ::operator delete(p);
 }
 
