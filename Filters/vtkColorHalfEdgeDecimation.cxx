@@ -238,10 +238,10 @@ colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, 
 /// The input's identity for the collapse record, when there will be one (taken before the run,
 /// which frees the copies it is computed from).
 colordecimation::adapter::MeshIdentity RecordIdentity(vtkColorHalfEdgeDecimation* self,
-                                                      const InputMesh& mesh)
+                                                      const InputMesh& mesh, int threads)
 {
   return self->GetGenerateCollapseRecord() && !MovesPoints(self)
-    ? colordecimation::adapter::Identify(mesh)
+    ? colordecimation::adapter::Identify(mesh, threads)
     : colordecimation::adapter::MeshIdentity();
 }
 
@@ -426,7 +426,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
 
   // 3. Decimate to the target, or until MaximumError or no valid collapse stops it.
   const vtkIdType numTriangles = mesh.Soup.Count();
-  const colordecimation::adapter::MeshIdentity identity = RecordIdentity(this, mesh);
+  const colordecimation::adapter::MeshIdentity identity = RecordIdentity(this, mesh, threads);
   const int64_t target = colordecimation::adapter::TargetTriangles(
     this->TargetNumberOfTriangles, this->TargetReduction, numTriangles);
   this->UpdateProgress(0.05);

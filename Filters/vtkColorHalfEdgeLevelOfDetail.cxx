@@ -171,9 +171,9 @@ bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObjec
     return false;
   }
   std::string why;
-  if (!colordecimation::adapter::ReadRecordTable(vtkTable::SafeDownCast(record),
-                                                 colordecimation::adapter::Identify(cache.Mesh),
-                                                 cache.Record, why))
+  if (!colordecimation::adapter::ReadRecordTable(
+        vtkTable::SafeDownCast(record), colordecimation::adapter::Identify(cache.Mesh, threads),
+        cache.Record, why))
   {
     vtkErrorMacro(<< "The collapse record cannot be used: " << why << ". Output is empty.");
     return false;

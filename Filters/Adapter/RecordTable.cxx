@@ -1,6 +1,7 @@
 #include "Adapter/RecordTable.h"
 
 #include "Adapter/InputMesh.h"
+#include "Core/util/Parallel.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <cstring>
 #include <sstream>
+#include <vector>
 
 namespace colordecimation
 {
@@ -39,20 +41,50 @@ uint64_t Mix(uint64_t z)
   return z ^ (z >> 31);
 }
 
-/// A 64-bit hash of `bytes` bytes, 8 at a time: each word mixed fully before it is combined,
-/// so that no change of the input (a sign flipped twice included) cancels out.
-uint64_t HashWords(const void* data, size_t bytes, uint64_t h)
+/// Words in a block of HashWords: the blocks are hashed in parallel, then chained in order.
+constexpr size_t HashBlockWords = size_t(1) << 16;
+constexpr uint64_t HashOffset = 0x9e3779b97f4a7c15ULL;
+
+/// The hash of one block of `words` words: four interleaved lanes (independent chains, whose
+/// multiplications overlap), each word mixed fully before it is combined, so that no change
+/// of the input (a sign flipped twice included) cancels out.
+uint64_t HashBlock(const unsigned char* p, size_t words, uint64_t seed)
 {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (size_t i = 0; i + 8 <= bytes; i += 8)
+  uint64_t lane[4] = { Mix(seed), Mix(seed + 1), Mix(seed + 2), Mix(seed + 3) };
+  for (size_t i = 0; i < words; ++i)
   {
     uint64_t word;
-    std::memcpy(&word, p + i, 8);
-    h = Mix(h ^ Mix(word + 0x9e3779b97f4a7c15ULL));
+    std::memcpy(&word, p + 8 * i, 8);
+    lane[i % 4] = Mix(lane[i % 4] ^ Mix(word + HashOffset));
   }
-  for (size_t i = bytes - bytes % 8; i < bytes; ++i)
+  return Mix(lane[0] ^ Mix(lane[1] ^ Mix(lane[2] ^ Mix(lane[3]))));
+}
+
+/// A 64-bit hash of `bytes` bytes: its blocks hashed on `threads` threads and chained in
+/// order, then the bytes after the last whole word; the same for any number of threads.
+uint64_t HashWords(const void* data, size_t bytes, uint64_t h, int threads)
+{
+  const auto* p = static_cast<const unsigned char*>(data);
+  const size_t words = bytes / 8;
+  const size_t blocks = (words + HashBlockWords - 1) / HashBlockWords;
+  std::vector<uint64_t> hashes(blocks);
+  uint64_t* hash = hashes.data();
+  ParallelFor(blocks, ThreadsFor(blocks, threads, 4),
+              [p, words, hash](size_t begin, size_t end, int)
+              {
+                for (size_t b = begin; b < end; ++b)
+                {
+                  const size_t first = b * HashBlockWords;
+                  hash[b] = HashBlock(p + 8 * first, std::min(HashBlockWords, words - first), b);
+                }
+              });
+  for (const uint64_t blockHash : hashes)
   {
-    h = Mix(h ^ (p[i] + 0x9e3779b97f4a7c15ULL));
+    h = Mix(h ^ blockHash);
+  }
+  for (size_t i = 8 * words; i < bytes; ++i)
+  {
+    h = Mix(h ^ (p[i] + HashOffset));
   }
   return h;
 }
@@ -215,14 +247,15 @@ bool ReadColumns(vtkTable* table, CollapseRecord& record, std::string& why)
 }
 } // namespace
 
-MeshIdentity Identify(const InputMesh& mesh)
+MeshIdentity Identify(const InputMesh& mesh, int threads)
 {
   MeshIdentity identity;
   identity.Points = static_cast<vtkIdType>(mesh.Points.size() / 3);
   identity.Triangles = mesh.Soup.Count();
   uint64_t h = 0xcbf29ce484222325ULL;
-  h = HashWords(mesh.Points.data(), mesh.Points.size() * sizeof(double), h);
-  h = HashWords(mesh.Soup.Triangles.data(), mesh.Soup.Triangles.size() * sizeof(int32_t), h);
+  h = HashWords(mesh.Points.data(), mesh.Points.size() * sizeof(double), h, threads);
+  h =
+    HashWords(mesh.Soup.Triangles.data(), mesh.Soup.Triangles.size() * sizeof(int32_t), h, threads);
   h = Mix(h ^ static_cast<uint64_t>(identity.Points));
   std::ostringstream hex;
   hex << std::hex;

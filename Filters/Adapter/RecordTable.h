@@ -37,8 +37,9 @@ struct MeshIdentity
   std::string Checksum; ///< 16 hex digits
 };
 
-/// The identity of a mesh as the decimation reads it (points, triangulated cells).
-MeshIdentity Identify(const InputMesh& mesh);
+/// The identity of a mesh as the decimation reads it (points, triangulated cells); the
+/// checksum on up to `threads` threads (the same for any number).
+MeshIdentity Identify(const InputMesh& mesh, int threads);
 
 /// Fill `table` with the record (rows) and the mesh's identity (field data).
 void WriteRecordTable(const CollapseRecord& record, const MeshIdentity& mesh, const char* schedule,

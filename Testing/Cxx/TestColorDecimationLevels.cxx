@@ -485,6 +485,40 @@ CD_TEST_CASE(BadRecords)
   expectError(run.Record, mirrored, "belongs to another mesh");
 }
 
+// The checksum of a mesh too large for one block of the hash (163,842 points): the same on one
+// thread and on two, and changed by one point moved in a late block or two points swapped.
+CD_TEST_CASE(ChecksumInBlocks)
+{
+  auto mesh = DecoratedSphere(7);
+  const auto checksum = [](vtkTable* record)
+  {
+    return record->GetFieldData()->GetAbstractArray("InputChecksum")->GetVariantValue(0).ToString();
+  };
+  std::string checksums[2];
+  for (int threads : { 1, 2 })
+  {
+    const Recorded run =
+      RecordRun(mesh, 0.5, vtkColorHalfEdgeDecimation::Batched,
+                [threads](vtkColorHalfEdgeDecimation* f) { f->SetNumberOfThreads(threads); });
+    checksums[threads - 1] = checksum(run.Record);
+    CD_CHECK(checksums[threads - 1].size() == 16);
+  }
+  CD_CHECK_MSG(checksums[0] == checksums[1], checksums[0] << " != " << checksums[1]);
+  const Recorded run = RecordRun(mesh, 0.5, vtkColorHalfEdgeDecimation::Batched);
+  auto moved = Copy(mesh);
+  double p[3], q[3];
+  moved->GetPoint(150000, p);
+  p[2] += 1e-9;
+  moved->GetPoints()->SetPoint(150000, p);
+  ExpectRecordError(moved, run.Record, "belongs to another mesh");
+  auto swapped = Copy(mesh);
+  swapped->GetPoint(100000, p);
+  swapped->GetPoint(100001, q);
+  swapped->GetPoints()->SetPoint(100000, q);
+  swapped->GetPoints()->SetPoint(100001, p);
+  ExpectRecordError(swapped, run.Record, "belongs to another mesh");
+}
+
 // A record file cut short, and no record at all: an error each, and an empty output.
 CD_TEST_CASE(BadRecordFiles)
 {
