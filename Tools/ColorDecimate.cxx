@@ -31,6 +31,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <future>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -952,31 +953,60 @@ int DecimateOrLoad(vtkColorHalfEdgeDecimation* filter, const Options& options,
   return status;
 }
 
-/// One level from the record into `level.Path`; its figures printed unless --quiet.
-int WriteLevel(vtkColorHalfEdgeLevelOfDetail* lod, const Options& options, LevelFigures& level)
+/// One level from the record: its figures into `level` and the level into `mesh` (a copy that
+/// the next level leaves as it is).
+int ExtractLevel(vtkColorHalfEdgeLevelOfDetail* lod, LevelFigures& level,
+                 vtkSmartPointer<vtkPolyData>& mesh)
 {
-  {
-    MessageCatcher::Scope scope;
-    const auto start = std::chrono::steady_clock::now();
-    lod->Update();
-    level.ExtractSeconds = Seconds(start, std::chrono::steady_clock::now());
-    if (!scope.Get()->Errors.empty())
-    {
-      return Fail("level of detail failed: " + MessageCatcher::Clean(scope.Get()->Errors.front()));
-    }
-  }
+  MessageCatcher::Scope scope;
   const auto start = std::chrono::steady_clock::now();
-  std::string error;
-  if (!WriteMesh(lod->GetOutput(), level.Path, options.Array, error))
+  lod->Update();
+  level.ExtractSeconds = Seconds(start, std::chrono::steady_clock::now());
+  if (!scope.Get()->Errors.empty())
   {
-    return Fail(error);
+    return Fail("level of detail failed: " + MessageCatcher::Clean(scope.Get()->Errors.front()));
   }
-  level.WriteSeconds = Seconds(start, std::chrono::steady_clock::now());
-  level.Points = lod->GetOutput()->GetNumberOfPoints();
-  level.Triangles = CountTriangles(lod->GetOutput());
+  mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(lod->GetOutput());
+  level.Points = mesh->GetNumberOfPoints();
+  level.Triangles = CountTriangles(mesh);
   level.Reduction = lod->GetActualReduction();
   level.Error = lod->GetActualError();
   level.Collapses = static_cast<long long>(lod->GetNumberOfCollapses());
+  return Continue;
+}
+
+/// A level's file, written on another thread (while the next level is extracted).
+struct LevelWrite
+{
+  LevelFigures Level;
+  std::future<std::string> Error; ///< empty when written
+};
+
+void StartWrite(LevelWrite& write, vtkSmartPointer<vtkPolyData> mesh, const Options& options)
+{
+  LevelFigures* level = &write.Level;
+  const std::string array = options.Array;
+  write.Error = std::async(std::launch::async,
+                           [level, mesh, array]()
+                           {
+                             const auto start = std::chrono::steady_clock::now();
+                             std::string error;
+                             WriteMesh(mesh, level->Path, array, error);
+                             level->WriteSeconds = Seconds(start, std::chrono::steady_clock::now());
+                             return error;
+                           });
+}
+
+/// Wait for the level's file; its figures printed unless --quiet, and kept in `figures`.
+int FinishWrite(LevelWrite& write, const Options& options, Figures& figures)
+{
+  const std::string error = write.Error.get();
+  if (!error.empty())
+  {
+    return Fail(error);
+  }
+  const LevelFigures& level = write.Level;
   if (!options.Quiet)
   {
     char line[512];
@@ -987,10 +1017,12 @@ int WriteLevel(vtkColorHalfEdgeLevelOfDetail* lod, const Options& options, Level
                   level.Collapses, level.Error, level.ExtractSeconds, level.WriteSeconds);
     std::cout << line << std::flush;
   }
+  figures.Levels.push_back(level);
   return Continue;
 }
 
-/// --lod (each level, from the run's record) or --from-record (OUTPUT, or the --lod levels).
+/// --lod (each level, from the run's record) or --from-record (OUTPUT, or the --lod levels):
+/// each level's file written while the next level is extracted.
 int WriteLevels(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkPolyData* input,
                 vtkTable* record, Figures& figures)
 {
@@ -1010,21 +1042,39 @@ int WriteLevels(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkP
     asked.push_back(filter->GetTargetReduction()); // --from-record alone: the options' level
     lod->SetTargetNumberOfTriangles(filter->GetTargetNumberOfTriangles());
   }
-  for (size_t i = 0; i < asked.size(); ++i)
+  LevelWrite writes[2]; // the level being written, and the next
+  int status = Continue;
+  for (size_t i = 0; i < asked.size() && status == Continue; ++i)
   {
-    LevelFigures level;
-    level.Asked = asked[i];
-    level.Path = options.Levels.empty() ? options.Output : LevelPath(options.Output, int(i) + 1);
+    LevelWrite& write = writes[i % 2];
+    write.Level = LevelFigures();
+    write.Level.Asked = asked[i];
+    write.Level.Path =
+      options.Levels.empty() ? options.Output : LevelPath(options.Output, int(i) + 1);
     lod->SetTargetReduction(asked[i]);
-    const int status = WriteLevel(lod, options, level);
-    if (status != Continue)
+    vtkSmartPointer<vtkPolyData> mesh;
+    status = ExtractLevel(lod, write.Level, mesh);
+    LevelWrite& previous = writes[(i + 1) % 2];
+    if (previous.Error.valid())
     {
-      return status;
+      const int written = FinishWrite(previous, options, figures);
+      status = status == Continue ? written : status;
     }
-    figures.Levels.push_back(level);
+    if (status == Continue)
+    {
+      StartWrite(write, mesh, options);
+    }
+  }
+  for (LevelWrite& write : writes)
+  {
+    if (write.Error.valid())
+    {
+      const int written = FinishWrite(write, options, figures);
+      status = status == Continue ? written : status;
+    }
   }
   figures.PeakRss = PeakRSS();
-  return Continue;
+  return status;
 }
 
 /// Everything after the command line, step by step; the exit status.

@@ -31,6 +31,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 #include <sys/stat.h>
 
@@ -614,6 +615,23 @@ vtkDataArray* FindColorArray(vtkPolyData* mesh, const std::string& name)
 //------------------------------------------------------------------------------
 vtkStandardNewMacro(MessageCatcher);
 
+namespace
+{
+/// The output window while scopes are alive: one catcher that hands each message to the
+/// catcher of its thread's innermost scope (ThreadCatcher), else to the window it replaced.
+std::mutex RouterMutex;
+int RouterScopes = 0;
+MessageCatcher* Router = nullptr;
+vtkOutputWindow* Replaced = nullptr;
+thread_local MessageCatcher* ThreadCatcher = nullptr;
+
+/// Where `self`'s message goes: the thread's catcher; null to pass it to the replaced window.
+MessageCatcher* SinkOf(MessageCatcher* self)
+{
+  return self != Router ? self : ThreadCatcher;
+}
+} // namespace
+
 void MessageCatcher::DisplayText(const char* text)
 {
   // Plain text from VTK objects (PrintSelf and the like): not expected here, kept quiet.
@@ -622,17 +640,35 @@ void MessageCatcher::DisplayText(const char* text)
 
 void MessageCatcher::DisplayErrorText(const char* text)
 {
-  this->Errors.emplace_back(text ? text : "");
+  if (MessageCatcher* sink = SinkOf(this))
+  {
+    sink->Errors.emplace_back(text ? text : "");
+    return;
+  }
+  const std::lock_guard<std::mutex> lock(RouterMutex);
+  if (Replaced)
+  {
+    Replaced->DisplayErrorText(text);
+  }
 }
 
 void MessageCatcher::DisplayWarningText(const char* text)
 {
-  this->Warnings.emplace_back(text ? text : "");
+  if (MessageCatcher* sink = SinkOf(this))
+  {
+    sink->Warnings.emplace_back(text ? text : "");
+    return;
+  }
+  const std::lock_guard<std::mutex> lock(RouterMutex);
+  if (Replaced)
+  {
+    Replaced->DisplayWarningText(text);
+  }
 }
 
 void MessageCatcher::DisplayGenericWarningText(const char* text)
 {
-  this->Warnings.emplace_back(text ? text : "");
+  this->DisplayWarningText(text);
 }
 
 void MessageCatcher::DisplayDebugText(const char* text)
@@ -674,21 +710,38 @@ std::string MessageCatcher::Clean(const std::string& text)
 
 MessageCatcher::Scope::Scope()
   : Catcher(MessageCatcher::New())
-  , Previous(vtkOutputWindow::GetInstance())
+  , Outer(ThreadCatcher)
 {
-  if (this->Previous)
+  ThreadCatcher = this->Catcher;
+  const std::lock_guard<std::mutex> lock(RouterMutex);
+  if (RouterScopes++ == 0)
   {
-    this->Previous->Register(nullptr);
+    Replaced = vtkOutputWindow::GetInstance();
+    if (Replaced)
+    {
+      Replaced->Register(nullptr);
+    }
+    Router = MessageCatcher::New();
+    vtkOutputWindow::SetInstance(Router);
   }
-  vtkOutputWindow::SetInstance(this->Catcher);
 }
 
 MessageCatcher::Scope::~Scope()
 {
-  vtkOutputWindow::SetInstance(this->Previous);
-  if (this->Previous)
+  ThreadCatcher = this->Outer;
   {
-    this->Previous->UnRegister(nullptr);
+    const std::lock_guard<std::mutex> lock(RouterMutex);
+    if (--RouterScopes == 0)
+    {
+      vtkOutputWindow::SetInstance(Replaced);
+      if (Replaced)
+      {
+        Replaced->UnRegister(nullptr);
+      }
+      Replaced = nullptr;
+      Router->Delete();
+      Router = nullptr;
+    }
   }
   this->Catcher->Delete();
 }

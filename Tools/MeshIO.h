@@ -88,8 +88,9 @@ vtkDataArray* FindColorArray(vtkPolyData* mesh, const std::string& name);
 
 /**
  * A vtkOutputWindow that keeps VTK's error and warning messages instead of printing them.
- * Install with a MessageCatcher::Scope; the previous output window comes back when the scope
- * ends.
+ * Install with a MessageCatcher::Scope: it catches the messages of its own thread (scopes on
+ * several threads each keep their own); the previous output window comes back when the last
+ * scope ends, and meanwhile prints the messages of threads that have no scope.
  */
 class MessageCatcher : public vtkOutputWindow
 {
@@ -121,7 +122,7 @@ public:
 
   private:
     MessageCatcher* Catcher;
-    vtkOutputWindow* Previous;
+    MessageCatcher* Outer; ///< this thread's enclosing scope's catcher, if any
   };
 
   /// "ERROR: In file, line N\nvtkClass (0x...): message" -> "message".
