@@ -976,7 +976,7 @@ int ExtractLevel(vtkColorHalfEdgeLevelOfDetail* lod, LevelFigures& level,
   return Continue;
 }
 
-/// A level's file, written on another thread (while the next level is extracted).
+/// A level's file, written on a thread of its own (while the next levels are extracted).
 struct LevelWrite
 {
   LevelFigures Level;
@@ -1022,7 +1022,8 @@ int FinishWrite(LevelWrite& write, const Options& options, Figures& figures)
 }
 
 /// --lod (each level, from the run's record) or --from-record (OUTPUT, or the --lod levels):
-/// each level's file written while the next level is extracted.
+/// each level's file written on a thread of its own as soon as it is extracted; the figures in
+/// the order given.
 int WriteLevels(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkPolyData* input,
                 vtkTable* record, Figures& figures)
 {
@@ -1042,24 +1043,17 @@ int WriteLevels(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkP
     asked.push_back(filter->GetTargetReduction()); // --from-record alone: the options' level
     lod->SetTargetNumberOfTriangles(filter->GetTargetNumberOfTriangles());
   }
-  LevelWrite writes[2]; // the level being written, and the next
+  std::vector<LevelWrite> writes(asked.size());
   int status = Continue;
   for (size_t i = 0; i < asked.size() && status == Continue; ++i)
   {
-    LevelWrite& write = writes[i % 2];
-    write.Level = LevelFigures();
+    LevelWrite& write = writes[i];
     write.Level.Asked = asked[i];
     write.Level.Path =
       options.Levels.empty() ? options.Output : LevelPath(options.Output, int(i) + 1);
     lod->SetTargetReduction(asked[i]);
     vtkSmartPointer<vtkPolyData> mesh;
     status = ExtractLevel(lod, write.Level, mesh);
-    LevelWrite& previous = writes[(i + 1) % 2];
-    if (previous.Error.valid())
-    {
-      const int written = FinishWrite(previous, options, figures);
-      status = status == Continue ? written : status;
-    }
     if (status == Continue)
     {
       StartWrite(write, mesh, options);
