@@ -1,6 +1,7 @@
 #include "Adapter/OutputMesh.h"
 
 #include "Adapter/InputMesh.h"
+#include "Adapter/LargeArrays.h"
 #include "Core/Decimator.h"
 #include "Core/util/Buffer.h"
 #include "Core/util/Parallel.h"
@@ -173,21 +174,6 @@ void FindUsedPoints(const Faces& faces, vtkIdType numPoints, int threads, UsedPo
                   }
                 }
               });
-}
-
-/// `values` unwritten values for `array`, on huge pages when large (Core/util/Buffer.h).
-template <typename Array>
-void AllocateValues(Array* array, vtkIdType values)
-{
-  using Value = typename Array::ValueType;
-  void* memory =
-    values > 0 ? AllocateFreeable(static_cast<size_t>(values) * sizeof(Value)) : nullptr;
-  if (!memory)
-  {
-    array->SetNumberOfValues(values);
-    return;
-  }
-  array->SetArray(static_cast<Value*>(memory), values, 0, Array::VTK_DATA_ARRAY_FREE);
 }
 
 /**

@@ -1,6 +1,7 @@
 #include "Adapter/RecordTable.h"
 
 #include "Adapter/InputMesh.h"
+#include "Adapter/LargeArrays.h"
 #include "Core/util/Parallel.h"
 
 #include "vtkDataArray.h"
@@ -90,11 +91,11 @@ uint64_t HashWords(const void* data, size_t bytes, uint64_t h, int threads)
 }
 
 template <typename Array, typename T>
-void AddColumn(vtkTable* table, const char* name, const std::vector<T>& values)
+void AddColumn(vtkTable* table, const char* name, const Buffer<T>& values)
 {
   vtkNew<Array> column;
   column->SetName(name);
-  column->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  AllocateValues(column.Get(), static_cast<vtkIdType>(values.size()));
   std::copy(values.begin(), values.end(), column->GetPointer(0));
   table->AddColumn(column);
 }
@@ -156,7 +157,7 @@ void ForEachValue(vtkDataArray* column, Function&& f)
 }
 
 /// Integer ids from a column; false if one is not an integer that fits.
-bool ReadIds(vtkDataArray* column, std::vector<int32_t>& ids)
+bool ReadIds(vtkDataArray* column, Buffer<int32_t>& ids)
 {
   ids.resize(static_cast<size_t>(column->GetNumberOfTuples()));
   bool valid = true;
@@ -172,7 +173,7 @@ bool ReadIds(vtkDataArray* column, std::vector<int32_t>& ids)
 /// Values from a column, each of which must pass `valid` (checked before any conversion);
 /// false if one does not.
 template <typename T, typename Valid>
-bool ReadValues(vtkDataArray* column, std::vector<T>& values, Valid&& valid)
+bool ReadValues(vtkDataArray* column, Buffer<T>& values, Valid&& valid)
 {
   values.resize(static_cast<size_t>(column->GetNumberOfTuples()));
   bool all = true;

@@ -2320,8 +2320,8 @@ CD_TEST_CASE(CollapseRecordByHand)
                                          { 1, 7, 2, 0, 0, 0.9, 64.0 } };
   const int32_t toInput[8] = { 0, 1, 2, 3, 4, 5, 6, 7 };
   record.Append(made.data(), made.size(), toInput, scale);
-  CD_CHECK((record.Triangles == std::vector<int64_t>{ 8, 4, 4, 2 }));
-  CD_CHECK((record.Error == std::vector<double>{ 1.0, 3.0, 3.0, 4.0 }));
+  CD_CHECK((record.Triangles == Buffer<int64_t>{ 8, 4, 4, 2 }));
+  CD_CHECK((record.Error == Buffer<double>{ 1.0, 3.0, 3.0, 4.0 }));
   std::string why;
   CD_CHECK_MSG(IsConsistent(record, why), why);
   // Target 6: the first collapse leaves 8 > 6, the pair 4: both go in, then stop.

@@ -12,6 +12,7 @@
 #ifndef colordecimation_CollapseRecord_h
 #define colordecimation_CollapseRecord_h
 
+#include "util/Buffer.h"
 #include "vtkColorDecimationModule.h" // for export macro
 
 #include <cstddef>
@@ -43,11 +44,12 @@ struct RecordedCollapse
  */
 struct VTKCOLORDECIMATION_EXPORT CollapseRecord
 {
-  std::vector<int32_t> Removed;   ///< v0: the vertex collapsed away
-  std::vector<int32_t> Survivor;  ///< v1: the vertex it collapsed into (its parent)
-  std::vector<double> Cost;       ///< the cost the schedule ordered it by
-  std::vector<double> Error;      ///< its geometric error (rules/ErrorBound.h), input units
-  std::vector<int64_t> Triangles; ///< triangles left after it
+  // Buffers (util/Buffer.h): on huge pages, grown without zeroing; every element is written.
+  Buffer<int32_t> Removed;   ///< v0: the vertex collapsed away
+  Buffer<int32_t> Survivor;  ///< v1: the vertex it collapsed into (its parent)
+  Buffer<double> Cost;       ///< the cost the schedule ordered it by
+  Buffer<double> Error;      ///< its geometric error (rules/ErrorBound.h), input units
+  Buffer<int64_t> Triangles; ///< triangles left after it
   int32_t InputPoints = 0;
   int64_t InputTriangles = 0;
 
