@@ -76,8 +76,11 @@ print("\n(the first level's extraction also reads the mesh and checks the record
 PY
 
 # The slider: the level filter updated for each level in one process (first update excluded).
-if [ "${mesh##*.}" = ply ] && [ -d "$build/lib/python3/dist-packages/colordecimation" ]; then
-  PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" /usr/bin/python3 - "$mesh" "$levels" <<'PY'
+# The wrapping is where the flavour installs it: python3/dist-packages (VTK 9.1) or
+# python3.X/site-packages (ParaView 5.11's VTK 9.2).
+site=$(ls -d "$build"/lib/python3*/*-packages 2>/dev/null | head -1)
+if [ "${mesh##*.}" = ply ] && [ -n "$site" ] && [ -d "$site/colordecimation" ]; then
+  PYTHONPATH="$site${PYTHONPATH:+:$PYTHONPATH}" /usr/bin/python3 - "$mesh" "$levels" <<'PY'
 import statistics, sys, time
 from vtkmodules.vtkIOPLY import vtkPLYReader
 from colordecimation import vtkColorHalfEdgeDecimation, vtkColorHalfEdgeLevelOfDetail
