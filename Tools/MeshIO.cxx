@@ -625,10 +625,21 @@ MessageCatcher* Router = nullptr;
 vtkOutputWindow* Replaced = nullptr;
 thread_local MessageCatcher* ThreadCatcher = nullptr;
 
-/// Where `self`'s message goes: the thread's catcher; null to pass it to the replaced window.
-MessageCatcher* SinkOf(MessageCatcher* self)
+/// `self`'s message into `list` of the thread's catcher (of `self` itself if it is not the
+/// router), or with no catcher on this thread to the replaced window's `display`.
+void Route(MessageCatcher* self, const char* text, std::vector<std::string> MessageCatcher::*list,
+           void (vtkOutputWindow::*display)(const char*))
 {
-  return self != Router ? self : ThreadCatcher;
+  if (MessageCatcher* sink = self != Router ? self : ThreadCatcher)
+  {
+    (sink->*list).emplace_back(text ? text : "");
+    return;
+  }
+  const std::lock_guard<std::mutex> lock(RouterMutex);
+  if (Replaced)
+  {
+    (Replaced->*display)(text);
+  }
 }
 } // namespace
 
@@ -640,30 +651,12 @@ void MessageCatcher::DisplayText(const char* text)
 
 void MessageCatcher::DisplayErrorText(const char* text)
 {
-  if (MessageCatcher* sink = SinkOf(this))
-  {
-    sink->Errors.emplace_back(text ? text : "");
-    return;
-  }
-  const std::lock_guard<std::mutex> lock(RouterMutex);
-  if (Replaced)
-  {
-    Replaced->DisplayErrorText(text);
-  }
+  Route(this, text, &MessageCatcher::Errors, &vtkOutputWindow::DisplayErrorText);
 }
 
 void MessageCatcher::DisplayWarningText(const char* text)
 {
-  if (MessageCatcher* sink = SinkOf(this))
-  {
-    sink->Warnings.emplace_back(text ? text : "");
-    return;
-  }
-  const std::lock_guard<std::mutex> lock(RouterMutex);
-  if (Replaced)
-  {
-    Replaced->DisplayWarningText(text);
-  }
+  Route(this, text, &MessageCatcher::Warnings, &vtkOutputWindow::DisplayWarningText);
 }
 
 void MessageCatcher::DisplayGenericWarningText(const char* text)
