@@ -20,6 +20,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
@@ -968,6 +969,10 @@ int ExtractLevel(vtkColorHalfEdgeLevelOfDetail* lod, LevelFigures& level,
   }
   mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->ShallowCopy(lod->GetOutput());
+  // Its own field data: a writer may store ranges in the arrays, which the input shares.
+  vtkNew<vtkFieldData> field;
+  field->DeepCopy(lod->GetOutput()->GetFieldData());
+  mesh->SetFieldData(field);
   level.Points = mesh->GetNumberOfPoints();
   level.Triangles = CountTriangles(mesh);
   level.Reduction = lod->GetActualReduction();
@@ -976,20 +981,27 @@ int ExtractLevel(vtkColorHalfEdgeLevelOfDetail* lod, LevelFigures& level,
   return Continue;
 }
 
-/// A level's file, written on a thread of its own (while the next levels are extracted).
+/// A level's file, written on another thread while the next levels are extracted.
 struct LevelWrite
 {
   LevelFigures Level;
-  std::future<std::string> Error; ///< empty when written
+  std::shared_future<std::string> Error; ///< empty when written
 };
 
-void StartWrite(LevelWrite& write, vtkSmartPointer<vtkPolyData> mesh, const Options& options)
+/// Write the level once `before` (the previous level's file, if valid) is written: one file at
+/// a time, since VTK's PLY writer keeps process-wide state.
+void StartWrite(LevelWrite& write, vtkSmartPointer<vtkPolyData> mesh, const Options& options,
+                std::shared_future<std::string> before)
 {
   LevelFigures* level = &write.Level;
   const std::string array = options.Array;
   write.Error = std::async(std::launch::async,
-                           [level, mesh, array]()
+                           [level, mesh, array, before]()
                            {
+                             if (before.valid())
+                             {
+                               before.wait();
+                             }
                              const auto start = std::chrono::steady_clock::now();
                              std::string error;
                              WriteMesh(mesh, level->Path, array, error);
@@ -1001,7 +1013,7 @@ void StartWrite(LevelWrite& write, vtkSmartPointer<vtkPolyData> mesh, const Opti
 /// Wait for the level's file; its figures printed unless --quiet, and kept in `figures`.
 int FinishWrite(LevelWrite& write, const Options& options, Figures& figures)
 {
-  const std::string error = write.Error.get();
+  const std::string& error = write.Error.get();
   if (!error.empty())
   {
     return Fail(error);
@@ -1022,8 +1034,8 @@ int FinishWrite(LevelWrite& write, const Options& options, Figures& figures)
 }
 
 /// --lod (each level, from the run's record) or --from-record (OUTPUT, or the --lod levels):
-/// each level's file written on a thread of its own as soon as it is extracted; the figures in
-/// the order given.
+/// the levels' files written one after the other on other threads while the next levels are
+/// extracted; the figures in the order given.
 int WriteLevels(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkPolyData* input,
                 vtkTable* record, Figures& figures)
 {
@@ -1056,7 +1068,8 @@ int WriteLevels(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkP
     status = ExtractLevel(lod, write.Level, mesh);
     if (status == Continue)
     {
-      StartWrite(write, mesh, options);
+      StartWrite(write, mesh, options,
+                 i > 0 ? writes[i - 1].Error : std::shared_future<std::string>());
     }
   }
   for (LevelWrite& write : writes)

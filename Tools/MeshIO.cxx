@@ -31,9 +31,11 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iostream>
 #include <mutex>
 #include <sstream>
 #include <sys/stat.h>
+#include <thread>
 
 namespace colordecimation
 {
@@ -617,28 +619,46 @@ vtkStandardNewMacro(MessageCatcher);
 
 namespace
 {
-/// The output window while scopes are alive: one catcher that hands each message to the
-/// catcher of its thread's innermost scope (ThreadCatcher), else to the window it replaced.
-std::mutex RouterMutex;
-int RouterScopes = 0;
-MessageCatcher* Router = nullptr;
-vtkOutputWindow* Replaced = nullptr;
+/// Guards the main thread's scopes and every catcher's lists.
+std::mutex CatcherMutex;
+/// The thread that made the first scope (the program's main thread), and its scopes alive.
+std::thread::id MainThread;
+std::vector<MessageCatcher*> MainScopes;
+/// The catcher of this thread's innermost scope, if any.
 thread_local MessageCatcher* ThreadCatcher = nullptr;
 
-/// `self`'s message into `list` of the thread's catcher (of `self` itself if it is not the
-/// router), or with no catcher on this thread to the replaced window's `display`.
-void Route(MessageCatcher* self, const char* text, std::vector<std::string> MessageCatcher::*list,
-           void (vtkOutputWindow::*display)(const char*))
+/// The output window from the first scope on: one catcher that hands each message on (Route).
+/// Made once and kept (VTK deletes it at exit), so that no thread can call a deleted window.
+MessageCatcher* Router()
 {
-  if (MessageCatcher* sink = self != Router ? self : ThreadCatcher)
+  static MessageCatcher* const router = []
+  {
+    MainThread = std::this_thread::get_id();
+    MessageCatcher* made = MessageCatcher::New();
+    vtkOutputWindow::SetInstance(made);
+    made->Delete(); // held by VTK
+    return made;
+  }();
+  return router;
+}
+
+/// A message of the router to the catcher of the thread's innermost scope; from a thread with
+/// none (a worker of a parallel loop), to the main thread's innermost scope's; with neither, to
+/// stderr as VTK's own window would. Into `list`.
+void Route(MessageCatcher* self, const char* text, std::vector<std::string> MessageCatcher::*list)
+{
+  const std::lock_guard<std::mutex> lock(CatcherMutex);
+  MessageCatcher* sink = self != Router() ? self
+    : ThreadCatcher                       ? ThreadCatcher
+    : MainScopes.empty()                  ? nullptr
+                                          : MainScopes.back();
+  if (sink)
   {
     (sink->*list).emplace_back(text ? text : "");
-    return;
   }
-  const std::lock_guard<std::mutex> lock(RouterMutex);
-  if (Replaced)
+  else
   {
-    (Replaced->*display)(text);
+    std::cerr << (text ? text : "") << std::endl;
   }
 }
 } // namespace
@@ -651,12 +671,12 @@ void MessageCatcher::DisplayText(const char* text)
 
 void MessageCatcher::DisplayErrorText(const char* text)
 {
-  Route(this, text, &MessageCatcher::Errors, &vtkOutputWindow::DisplayErrorText);
+  Route(this, text, &MessageCatcher::Errors);
 }
 
 void MessageCatcher::DisplayWarningText(const char* text)
 {
-  Route(this, text, &MessageCatcher::Warnings, &vtkOutputWindow::DisplayWarningText);
+  Route(this, text, &MessageCatcher::Warnings);
 }
 
 void MessageCatcher::DisplayGenericWarningText(const char* text)
@@ -705,36 +725,22 @@ MessageCatcher::Scope::Scope()
   : Catcher(MessageCatcher::New())
   , Outer(ThreadCatcher)
 {
+  Router();
   ThreadCatcher = this->Catcher;
-  const std::lock_guard<std::mutex> lock(RouterMutex);
-  if (RouterScopes++ == 0)
+  if (std::this_thread::get_id() == MainThread)
   {
-    Replaced = vtkOutputWindow::GetInstance();
-    if (Replaced)
-    {
-      Replaced->Register(nullptr);
-    }
-    Router = MessageCatcher::New();
-    vtkOutputWindow::SetInstance(Router);
+    const std::lock_guard<std::mutex> lock(CatcherMutex);
+    MainScopes.push_back(this->Catcher);
   }
 }
 
 MessageCatcher::Scope::~Scope()
 {
   ThreadCatcher = this->Outer;
+  if (std::this_thread::get_id() == MainThread)
   {
-    const std::lock_guard<std::mutex> lock(RouterMutex);
-    if (--RouterScopes == 0)
-    {
-      vtkOutputWindow::SetInstance(Replaced);
-      if (Replaced)
-      {
-        Replaced->UnRegister(nullptr);
-      }
-      Replaced = nullptr;
-      Router->Delete();
-      Router = nullptr;
-    }
+    const std::lock_guard<std::mutex> lock(CatcherMutex);
+    MainScopes.pop_back();
   }
   this->Catcher->Delete();
 }

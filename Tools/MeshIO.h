@@ -89,8 +89,10 @@ vtkDataArray* FindColorArray(vtkPolyData* mesh, const std::string& name);
 /**
  * A vtkOutputWindow that keeps VTK's error and warning messages instead of printing them.
  * Install with a MessageCatcher::Scope: it catches the messages of its own thread (scopes on
- * several threads each keep their own); the previous output window comes back when the last
- * scope ends, and meanwhile prints the messages of threads that have no scope.
+ * several threads each keep their own); the innermost scope of the main thread (the first to
+ * make one) also catches those of threads without a scope (workers of parallel loops); with
+ * no scope, messages go to stderr. Read a scope's lists (Get()) on its own thread, once the
+ * work it watched is done.
  */
 class MessageCatcher : public vtkOutputWindow
 {

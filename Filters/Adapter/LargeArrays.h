@@ -8,14 +8,29 @@
 
 #include "Core/util/Buffer.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkType.h"
 
 #include <cstddef>
+#include <cstdlib>
 
 namespace colordecimation
 {
 namespace adapter
 {
+
+/// Frees what AllocateFreeable returned, with this module's own runtime (handed to a VTK array
+/// as its free function: VTK's own `free` may belong to another runtime on Windows).
+inline void FreeLarge(void* memory)
+{
+  std::free(memory);
+}
+
+/// Whether `array` keeps its values in one contiguous block that SetVoidArray can take.
+inline bool IsContiguous(vtkAbstractArray* array)
+{
+  return array->GetArrayType() == vtkAbstractArray::AoSDataArrayTemplate;
+}
 
 /// `values` unwritten values for `array` (a vtkAOSDataArrayTemplate), on huge pages when large.
 template <typename Array>
@@ -29,7 +44,8 @@ void AllocateValues(Array* array, vtkIdType values)
     array->SetNumberOfValues(values);
     return;
   }
-  array->SetArray(static_cast<Value*>(memory), values, 0, Array::VTK_DATA_ARRAY_FREE);
+  array->SetArray(static_cast<Value*>(memory), values, 0, Array::VTK_DATA_ARRAY_USER_DEFINED);
+  array->SetArrayFreeFunction(FreeLarge);
 }
 
 } // namespace adapter

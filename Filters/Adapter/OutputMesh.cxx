@@ -176,10 +176,19 @@ void FindUsedPoints(const Faces& faces, vtkIdType numPoints, int threads, UsedPo
               });
 }
 
+/// The ids as a vtkIdList.
+vtkSmartPointer<vtkIdList> IdList(const vtkIdType* ids, vtkIdType count)
+{
+  auto list = vtkSmartPointer<vtkIdList>::New();
+  list->SetNumberOfIds(count);
+  std::copy(ids, ids + count, list->GetPointer(0));
+  return list;
+}
+
 /**
  * The tuples source[0], source[1], ... of `in`, bit for bit, in a new array of its class, with
- * its name, component names, information and lookup table. Arrays in the standard layout are
- * copied on `threads` threads into huge pages; the others by VTK.
+ * its name, component names, information and lookup table. Contiguous arrays are copied on
+ * `threads` threads (into huge pages when large); the others by VTK.
  */
 vtkSmartPointer<vtkAbstractArray> Gather(vtkAbstractArray* in, const vtkIdType* source,
                                          vtkIdType count, int threads)
@@ -199,20 +208,18 @@ vtkSmartPointer<vtkAbstractArray> Gather(vtkAbstractArray* in, const vtkIdType* 
   }
   const size_t tupleBytes =
     static_cast<size_t>(in->GetNumberOfComponents()) * static_cast<size_t>(in->GetDataTypeSize());
-  void* memory = data && data->HasStandardMemoryLayout() && count > 0 && tupleBytes > 0
+  void* memory = data && IsContiguous(in) && IsContiguous(out) && count > 0 && tupleBytes > 0
     ? AllocateFreeable(static_cast<size_t>(count) * tupleBytes)
     : nullptr;
   if (!memory)
   {
-    vtkNew<vtkIdList> ids;
-    ids->SetNumberOfIds(count);
-    std::copy(source, source + count, ids->GetPointer(0));
     out->SetNumberOfTuples(count);
-    in->GetTuples(ids, out);
+    in->GetTuples(IdList(source, count), out);
     return out;
   }
   out->SetVoidArray(memory, count * in->GetNumberOfComponents(), 0,
-                    vtkAbstractArray::VTK_DATA_ARRAY_FREE);
+                    vtkAbstractArray::VTK_DATA_ARRAY_USER_DEFINED);
+  out->SetArrayFreeFunction(FreeLarge);
   const char* from = static_cast<const char*>(data->GetVoidPointer(0));
   char* to = static_cast<char*>(memory);
   ParallelFor(static_cast<size_t>(count), ThreadsFor(static_cast<size_t>(count), threads, 65536),
@@ -251,8 +258,19 @@ void WritePoints(vtkPolyData* input, const Decimator* decimator, const UsedPoint
                  int threads, vtkPolyData* output)
 {
   vtkNew<vtkPoints> outPoints;
-  outPoints->SetData(vtkDataArray::SafeDownCast(
-    Gather(input->GetPoints()->GetData(), used.Source.data(), used.Points, threads)));
+  vtkDataArray* in = input->GetPoints()->GetData();
+  if (IsContiguous(in))
+  {
+    outPoints->SetData(
+      vtkDataArray::SafeDownCast(Gather(in, used.Source.data(), used.Points, threads)));
+  }
+  else
+  {
+    // Another layout (mapped, SOA): into a plain array of its type, as vtkPoints makes one.
+    outPoints->SetDataType(in->GetDataType());
+    outPoints->SetNumberOfPoints(used.Points);
+    in->GetTuples(IdList(used.Source.data(), used.Points), outPoints->GetData());
+  }
   if (decimator && decimator->HasMovedVertices())
   {
     // Full collapses (ColorQuadric with OptimalPlacement) moved some surviving vertices.

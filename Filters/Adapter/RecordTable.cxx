@@ -32,6 +32,9 @@ const char* const TrianglesColumn = "NumberOfTriangles";
 const char* const PointsField = "InputNumberOfPoints";
 const char* const TrianglesField = "InputNumberOfTriangles";
 const char* const ChecksumField = "InputChecksum";
+/// How the checksum is computed: 2 since the hash went by blocks (absent: 1, one chain).
+const char* const ChecksumVersionField = "InputChecksumVersion";
+constexpr vtkIdType ChecksumVersion = 2;
 const char* const ScheduleField = "CollapseSchedule";
 
 /// Every bit of a word spread over all 64 (splitmix64's finaliser).
@@ -212,6 +215,10 @@ bool ReadIdentity(vtkTable* table, MeshIdentity& identity)
   identity.Points = static_cast<vtkIdType>(numPoints);
   identity.Triangles = static_cast<vtkIdType>(numTriangles);
   identity.Checksum = checksum->GetValue(0);
+  auto* version = vtkDataArray::SafeDownCast(field->GetAbstractArray(ChecksumVersionField));
+  identity.ChecksumVersion = version && version->GetNumberOfTuples() == 1
+    ? static_cast<vtkIdType>(version->GetComponent(0, 0))
+    : 1;
   return true;
 }
 
@@ -280,6 +287,7 @@ void WriteRecordTable(const CollapseRecord& record, const MeshIdentity& mesh, co
   AddField(field, PointsField, mesh.Points);
   AddField(field, TrianglesField, mesh.Triangles);
   AddField(field, ChecksumField, mesh.Checksum);
+  AddField(field, ChecksumVersionField, ChecksumVersion);
   AddField(field, ScheduleField, std::string(schedule));
 }
 
@@ -292,6 +300,15 @@ bool ReadRecordTable(vtkTable* table, const MeshIdentity& mesh, CollapseRecord& 
   {
     why = std::string("it is not a collapse record (no ") + PointsField + ", " + TrianglesField +
       " and " + ChecksumField + " in its field data)";
+    return false;
+  }
+  if (recorded.Points == mesh.Points && recorded.Triangles == mesh.Triangles &&
+      recorded.ChecksumVersion != ChecksumVersion)
+  {
+    why = "it was saved by an earlier version of this module, whose checksum of the mesh is "
+          "computed otherwise (" +
+      std::string(ChecksumVersionField) + " " + std::to_string(recorded.ChecksumVersion) +
+      ", now " + std::to_string(ChecksumVersion) + "): make the record again";
     return false;
   }
   if (recorded.Points != mesh.Points || recorded.Triangles != mesh.Triangles ||

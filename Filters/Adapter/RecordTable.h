@@ -9,7 +9,7 @@
  * units) and NumberOfTriangles (vtkIdType: the triangles left after it). Field data:
  * InputNumberOfPoints, InputNumberOfTriangles (the triangles after polygons and strips are
  * triangulated), InputChecksum (a 64-bit hash of the points and those triangles, as 16 hex
- * digits) and CollapseSchedule.
+ * digits), InputChecksumVersion (how that hash is computed: 2) and CollapseSchedule.
  */
 #ifndef colordecimation_RecordTable_h
 #define colordecimation_RecordTable_h
@@ -34,7 +34,8 @@ struct MeshIdentity
 {
   vtkIdType Points = 0;
   vtkIdType Triangles = 0;
-  std::string Checksum; ///< 16 hex digits
+  std::string Checksum;          ///< 16 hex digits
+  vtkIdType ChecksumVersion = 2; ///< how it was computed (a record's InputChecksumVersion)
 };
 
 /// The identity of a mesh as the decimation reads it (points, triangulated cells); the

@@ -517,6 +517,11 @@ CD_TEST_CASE(ChecksumInBlocks)
   swapped->GetPoints()->SetPoint(100000, q);
   swapped->GetPoints()->SetPoint(100001, p);
   ExpectRecordError(swapped, run.Record, "belongs to another mesh");
+  // A record of the same mesh saved before the checksum went by blocks (no version field).
+  auto older = vtkSmartPointer<vtkTable>::New();
+  older->DeepCopy(run.Record);
+  older->GetFieldData()->RemoveArray("InputChecksumVersion");
+  ExpectRecordError(mesh, older, "saved by an earlier version");
 }
 
 // A record file cut short, and no record at all: an error each, and an empty output.
