@@ -64,18 +64,22 @@ void EngineBase::SetUp(const DecimatorInput& input, bool useColor, DecimatorStat
                                          this->ReferenceNormals,
                                          this->ThreadCount(size_t(input.NumberOfTriangles)));
   stats.Phases.Lap("reference normals");
-  // A record measures every collapse's error: an infinite bound, if none is given.
-  const double bound = this->Options.MaximumError > 0 ? this->Options.MaximumError
-    : this->Options.RecordCollapses                   ? std::numeric_limits<double>::infinity()
-                                                      : 0.0;
-  this->Errors.Initialize(this->Mesh, this->Positions(), HotStride, bound * this->Geometry.Scale,
-                          this->ThreadCount(size_t(n)));
-  stats.Phases.Lap("error planes");
   this->Record.Clear();
   this->Record.InputPoints = n;
   this->Record.InputTriangles = input.NumberOfTriangles;
   this->Recorded.clear();
   this->ThreadsUsed = 1;
+}
+
+void EngineBase::InitializeErrors(DecimatorStatistics& stats)
+{
+  // A record measures every collapse's error: an infinite bound, if none is given.
+  const double bound = this->Options.MaximumError > 0 ? this->Options.MaximumError
+    : this->Options.RecordCollapses                   ? std::numeric_limits<double>::infinity()
+                                                      : 0.0;
+  this->Errors.Initialize(this->Mesh, this->Positions(), HotStride, bound * this->Geometry.Scale,
+                          this->ThreadCount(size_t(this->Mesh.GetNumberOfVertices())));
+  stats.Phases.Lap("error planes");
 }
 
 void EngineBase::ComputeOrder(const DecimatorInput& input)

@@ -71,6 +71,8 @@ public:
   /// After the schedule: free what the output does not need and map the mesh back to the
   /// input's ids (keepHot: the hot records are kept, e.g. for moved vertices).
   void Finish(bool keepHot);
+  /// The plane sums of the errors (rules/ErrorBound.h), under MaximumError or for a record.
+  void InitializeErrors(DecimatorStatistics& stats);
 
   /// Threads worth starting for this many items of work: NumberOfThreads at most,
   /// MinimumThreadWork items per thread.
@@ -211,7 +213,7 @@ public:
   {
   }
 
-  /// Set-up (EngineBase::SetUp), then the metric's initial state.
+  /// Set-up (EngineBase::SetUp), then the metric's initial state, then the error planes.
   void Start(const DecimatorInput& input, DecimatorStatistics& stats)
   {
     this->SetUp(input, Metric::ReadsColor && input.Colors, stats);
@@ -219,6 +221,7 @@ public:
                                this->ThreadCount(3 * size_t(input.NumberOfTriangles)));
     this->Main.Rules.SetReferenceNormals(this->ReferenceNormals.data());
     stats.Phases.Lap("metric state");
+    this->InitializeErrors(stats); // after the metric's: its pages come first (docs/BENCHMARK.md)
   }
   /// After the schedule: the workers and input normals freed, the order restored.
   void Stop()
