@@ -644,7 +644,7 @@ MessageCatcher* Router()
 
 /// A message of the router to the catcher of the thread's innermost scope; from a thread with
 /// none (a worker of a parallel loop), to the main thread's innermost scope's; with neither, to
-/// stderr as VTK's own window would. Into `list`.
+/// stderr as VTK's own window would. Into `list` (null: a catcher drops it).
 void Route(MessageCatcher* self, const char* text, std::vector<std::string> MessageCatcher::*list)
 {
   const std::lock_guard<std::mutex> lock(CatcherMutex);
@@ -652,13 +652,13 @@ void Route(MessageCatcher* self, const char* text, std::vector<std::string> Mess
     : ThreadCatcher                       ? ThreadCatcher
     : MainScopes.empty()                  ? nullptr
                                           : MainScopes.back();
-  if (sink)
-  {
-    (sink->*list).emplace_back(text ? text : "");
-  }
-  else
+  if (!sink)
   {
     std::cerr << (text ? text : "") << std::endl;
+  }
+  else if (list)
+  {
+    (sink->*list).emplace_back(text ? text : "");
   }
 }
 } // namespace
@@ -666,7 +666,7 @@ void Route(MessageCatcher* self, const char* text, std::vector<std::string> Mess
 void MessageCatcher::DisplayText(const char* text)
 {
   // Plain text from VTK objects (PrintSelf and the like): not expected here, kept quiet.
-  (void)text;
+  Route(this, text, nullptr);
 }
 
 void MessageCatcher::DisplayErrorText(const char* text)
@@ -686,7 +686,7 @@ void MessageCatcher::DisplayGenericWarningText(const char* text)
 
 void MessageCatcher::DisplayDebugText(const char* text)
 {
-  (void)text;
+  Route(this, text, nullptr);
 }
 
 std::string MessageCatcher::FirstError() const

@@ -216,9 +216,10 @@ bool ReadIdentity(vtkTable* table, MeshIdentity& identity)
   identity.Triangles = static_cast<vtkIdType>(numTriangles);
   identity.Checksum = checksum->GetValue(0);
   auto* version = vtkDataArray::SafeDownCast(field->GetAbstractArray(ChecksumVersionField));
-  identity.ChecksumVersion = version && version->GetNumberOfTuples() == 1
-    ? static_cast<vtkIdType>(version->GetComponent(0, 0))
-    : 1;
+  const double number = version && version->GetNumberOfTuples() == 1
+    ? version->GetComponent(0, 0)
+    : 1.0; // absent: the first version
+  identity.ChecksumVersion = IsCount(number) ? static_cast<vtkIdType>(number) : -1;
   return true;
 }
 
@@ -305,7 +306,7 @@ bool ReadRecordTable(vtkTable* table, const MeshIdentity& mesh, CollapseRecord& 
   if (recorded.Points == mesh.Points && recorded.Triangles == mesh.Triangles &&
       recorded.ChecksumVersion != ChecksumVersion)
   {
-    why = "it was saved by an earlier version of this module, whose checksum of the mesh is "
+    why = "it was saved by another version of this module, whose checksum of the mesh is "
           "computed otherwise (" +
       std::string(ChecksumVersionField) + " " + std::to_string(recorded.ChecksumVersion) +
       ", now " + std::to_string(ChecksumVersion) + "): make the record again";

@@ -521,7 +521,7 @@ CD_TEST_CASE(ChecksumInBlocks)
   auto older = vtkSmartPointer<vtkTable>::New();
   older->DeepCopy(run.Record);
   older->GetFieldData()->RemoveArray("InputChecksumVersion");
-  ExpectRecordError(mesh, older, "saved by an earlier version");
+  ExpectRecordError(mesh, older, "saved by another version");
 }
 
 // A record file cut short, and no record at all: an error each, and an empty output.
