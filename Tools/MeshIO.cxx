@@ -665,7 +665,8 @@ void Route(MessageCatcher* self, const char* text, std::vector<std::string> Mess
 
 void MessageCatcher::DisplayText(const char* text)
 {
-  // Plain text from VTK objects (PrintSelf and the like): not expected here, kept quiet.
+  // Plain text from VTK objects (PrintSelf and the like): not expected here; dropped inside a
+  // scope, printed outside one.
   Route(this, text, nullptr);
 }
 

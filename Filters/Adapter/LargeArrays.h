@@ -32,20 +32,30 @@ inline bool IsContiguous(vtkAbstractArray* array)
   return array->GetArrayType() == vtkAbstractArray::AoSDataArrayTemplate;
 }
 
+/**
+ * `values` unwritten values of `valueBytes` each for the contiguous `array`, on huge pages when
+ * large, freed by the array with FreeLarge; returns them, or null (nothing allocated, the array
+ * untouched) when there are none or no memory.
+ */
+inline void* AdoptFreeable(vtkAbstractArray* array, vtkIdType values, size_t valueBytes)
+{
+  void* memory = values > 0 ? AllocateFreeable(static_cast<size_t>(values) * valueBytes) : nullptr;
+  if (memory)
+  {
+    array->SetVoidArray(memory, values, 0, vtkAbstractArray::VTK_DATA_ARRAY_USER_DEFINED);
+    array->SetArrayFreeFunction(FreeLarge);
+  }
+  return memory;
+}
+
 /// `values` unwritten values for `array` (a vtkAOSDataArrayTemplate), on huge pages when large.
 template <typename Array>
 void AllocateValues(Array* array, vtkIdType values)
 {
-  using Value = typename Array::ValueType;
-  void* memory =
-    values > 0 ? AllocateFreeable(static_cast<size_t>(values) * sizeof(Value)) : nullptr;
-  if (!memory)
+  if (!AdoptFreeable(array, values, sizeof(typename Array::ValueType)))
   {
     array->SetNumberOfValues(values);
-    return;
   }
-  array->SetArray(static_cast<Value*>(memory), values, 0, Array::VTK_DATA_ARRAY_USER_DEFINED);
-  array->SetArrayFreeFunction(FreeLarge);
 }
 
 } // namespace adapter

@@ -206,10 +206,11 @@ vtkSmartPointer<vtkAbstractArray> Gather(vtkAbstractArray* in, const vtkIdType* 
   {
     vtkDataArray::SafeDownCast(out)->SetLookupTable(data->GetLookupTable());
   }
-  const size_t tupleBytes =
-    static_cast<size_t>(in->GetNumberOfComponents()) * static_cast<size_t>(in->GetDataTypeSize());
-  void* memory = data && IsContiguous(in) && IsContiguous(out) && count > 0 && tupleBytes > 0
-    ? AllocateFreeable(static_cast<size_t>(count) * tupleBytes)
+  const size_t valueBytes = static_cast<size_t>(in->GetDataTypeSize());
+  const size_t tupleBytes = static_cast<size_t>(in->GetNumberOfComponents()) * valueBytes;
+  // `out` is of the class of `in`: contiguous too when `in` is.
+  void* memory = data && IsContiguous(in) && valueBytes > 0
+    ? AdoptFreeable(out, count * in->GetNumberOfComponents(), valueBytes)
     : nullptr;
   if (!memory)
   {
@@ -217,9 +218,6 @@ vtkSmartPointer<vtkAbstractArray> Gather(vtkAbstractArray* in, const vtkIdType* 
     in->GetTuples(IdList(source, count), out);
     return out;
   }
-  out->SetVoidArray(memory, count * in->GetNumberOfComponents(), 0,
-                    vtkAbstractArray::VTK_DATA_ARRAY_USER_DEFINED);
-  out->SetArrayFreeFunction(FreeLarge);
   const char* from = static_cast<const char*>(data->GetVoidPointer(0));
   char* to = static_cast<char*>(memory);
   ParallelFor(static_cast<size_t>(count), ThreadsFor(static_cast<size_t>(count), threads, 65536),

@@ -41,8 +41,8 @@ constexpr size_t LargePageBytes = size_t(4) << 20;
 
 /**
  * `bytes` of memory to be freed with std::free (null if there is none): from LargePageBytes
- * on, aligned to 2 MiB and marked for huge pages. For arrays handed to other libraries (a VTK
- * array frees it as VTK_DATA_ARRAY_FREE).
+ * on, aligned to 2 MiB and marked for huge pages. For arrays handed to other libraries, which
+ * free them with a function of this module (Adapter/LargeArrays.h).
  */
 inline void* AllocateFreeable(size_t bytes)
 {
