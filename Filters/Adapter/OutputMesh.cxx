@@ -185,16 +185,10 @@ vtkSmartPointer<vtkIdList> IdList(const vtkIdType* ids, vtkIdType count)
   return list;
 }
 
-/**
- * The tuples source[0], source[1], ... of `in`, bit for bit, in a new array of its class, with
- * its name, component names, information and lookup table. Contiguous arrays are copied on
- * `threads` threads (into huge pages when large); the others by VTK.
- */
-vtkSmartPointer<vtkAbstractArray> Gather(vtkAbstractArray* in, const vtkIdType* source,
-                                         vtkIdType count, int threads)
+/// What describes `in` besides its values, given to `out`: name, component names, information
+/// and lookup table.
+void CopyDescription(vtkAbstractArray* in, vtkAbstractArray* out)
 {
-  auto out = vtkSmartPointer<vtkAbstractArray>::Take(in->NewInstance());
-  out->SetNumberOfComponents(in->GetNumberOfComponents());
   out->SetName(in->GetName());
   out->CopyComponentNames(in);
   if (in->HasInformation())
@@ -202,10 +196,25 @@ vtkSmartPointer<vtkAbstractArray> Gather(vtkAbstractArray* in, const vtkIdType* 
     out->CopyInformation(in->GetInformation(), 1);
   }
   vtkDataArray* data = vtkDataArray::SafeDownCast(in);
-  if (data)
+  vtkDataArray* outData = vtkDataArray::SafeDownCast(out);
+  if (data && outData)
   {
-    vtkDataArray::SafeDownCast(out)->SetLookupTable(data->GetLookupTable());
+    outData->SetLookupTable(data->GetLookupTable());
   }
+}
+
+/**
+ * The tuples source[0], source[1], ... of `in`, bit for bit, in a new array of its class, with
+ * its description (CopyDescription). Contiguous arrays are copied on `threads` threads (into
+ * huge pages when large); the others by VTK.
+ */
+vtkSmartPointer<vtkAbstractArray> Gather(vtkAbstractArray* in, const vtkIdType* source,
+                                         vtkIdType count, int threads)
+{
+  auto out = vtkSmartPointer<vtkAbstractArray>::Take(in->NewInstance());
+  out->SetNumberOfComponents(in->GetNumberOfComponents());
+  CopyDescription(in, out);
+  vtkDataArray* data = vtkDataArray::SafeDownCast(in);
   const size_t valueBytes = static_cast<size_t>(in->GetDataTypeSize());
   const size_t tupleBytes = static_cast<size_t>(in->GetNumberOfComponents()) * valueBytes;
   // `out` is of the class of `in`: contiguous too when `in` is.
@@ -264,10 +273,12 @@ void WritePoints(vtkPolyData* input, const Decimator* decimator, const UsedPoint
   }
   else
   {
-    // Another layout (mapped, SOA): into a plain array of its type, as vtkPoints makes one.
+    // Another layout (mapped, SOA): into a plain array of its type, as vtkPoints makes one,
+    // described as the input's.
     outPoints->SetDataType(in->GetDataType());
     outPoints->SetNumberOfPoints(used.Points);
     in->GetTuples(IdList(used.Source.data(), used.Points), outPoints->GetData());
+    CopyDescription(in, outPoints->GetData());
   }
   if (decimator && decimator->HasMovedVertices())
   {

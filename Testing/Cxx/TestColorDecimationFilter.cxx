@@ -15,6 +15,8 @@
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -357,6 +359,75 @@ CD_TEST_CASE(EveryPointArrayKind)
                             label + ", level filter at " + std::to_string(reduction));
       }
     }
+  }
+}
+
+/// The output's points hold the input points named by vtkOriginalPointIds, bit for bit, in an
+/// array named and described as `in`'s.
+void CheckPointsDescribed(vtkDataArray* in, vtkPolyData* output, const std::string& label)
+{
+  auto* ids = vtkIdTypeArray::SafeDownCast(output->GetPointData()->GetArray("vtkOriginalPointIds"));
+  vtkDataArray* out = output->GetPoints() ? output->GetPoints()->GetData() : nullptr;
+  CD_CHECK_MSG(ids && out && output->GetNumberOfPoints() > 0, label << ": no points or ids");
+  if (!ids || !out)
+  {
+    return;
+  }
+  CD_CHECK_MSG(out->GetName() && std::string(out->GetName()) == in->GetName(),
+               label << ": the points' array is named '" << (out->GetName() ? out->GetName() : "")
+                     << "'");
+  CD_CHECK_MSG(out->GetComponentName(0) && std::string(out->GetComponentName(0)) == "east",
+               label << ": component name lost");
+  CD_CHECK_MSG(out->HasInformation() && out->GetInformation()->Has(vtkAbstractArray::GUI_HIDE()) &&
+                 out->GetInformation()->Get(vtkAbstractArray::GUI_HIDE()) == 1,
+               label << ": information lost");
+  long long differ = 0;
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      differ += in->GetComponent(ids->GetValue(i), k) == out->GetComponent(i, k) ? 0 : 1;
+    }
+  }
+  CD_CHECK_MSG(differ == 0, label << ": " << differ << " coordinates differ");
+}
+
+// Points in another layout than a plain array (here struct-of-arrays) reach the output as a
+// plain array of their type that keeps their name, component names and information.
+CD_TEST_CASE(PointsOfAnotherLayout)
+{
+  auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  vtkNew<vtkSOADataArrayTemplate<double>> soa;
+  soa->SetNumberOfComponents(3);
+  soa->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    soa->SetTuple(i, mesh->GetPoint(i));
+  }
+  soa->SetName("Coordinates");
+  soa->SetComponentName(0, "east");
+  soa->GetInformation()->Set(vtkAbstractArray::GUI_HIDE(), 1);
+  vtkNew<vtkPoints> points;
+  points->SetData(soa);
+  mesh->SetPoints(points);
+  for (int schedule : { vtkColorHalfEdgeDecimation::Greedy, vtkColorHalfEdgeDecimation::Batched })
+  {
+    const std::string label = "schedule " + std::to_string(schedule);
+    const RunResult run = Decimate(mesh, 0.9,
+                                   [schedule](vtkColorHalfEdgeDecimation* f)
+                                   {
+                                     f->SetCollapseSchedule(schedule);
+                                     f->GenerateCollapseRecordOn();
+                                   });
+    CD_CHECK_MSG(run.Errors == 0 && run.Warnings == 0, label << ": messages");
+    CheckPointsDescribed(soa, run.Output, label);
+    vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+    lod->SetInputData(mesh);
+    lod->SetRecordData(run.Filter->GetCollapseRecord());
+    lod->SetTargetReduction(0.5);
+    lod->Update();
+    CheckPointsDescribed(soa, lod->GetOutput(), label + ", level filter at 0.5");
   }
 }
 
