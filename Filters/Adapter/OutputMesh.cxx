@@ -508,6 +508,25 @@ void KeepCarriedArrays(vtkObject* self, vtkPolyData* input, vtkPointData* inPD, 
   }
 }
 
+/// Every data array of `output` marked modified once its values are final: the range caches
+/// its information may hold from the input (CopyInformation keeps the finite magnitude range)
+/// are then dropped, so that ranges are the output's own.
+void MarkArraysModified(vtkPolyData* output)
+{
+  if (output->GetPoints())
+  {
+    output->GetPoints()->GetData()->Modified();
+  }
+  for (vtkDataSetAttributes* data : { static_cast<vtkDataSetAttributes*>(output->GetPointData()),
+                                      static_cast<vtkDataSetAttributes*>(output->GetCellData()) })
+  {
+    for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+    {
+      data->GetAbstractArray(a)->Modified();
+    }
+  }
+}
+
 /**
  * The output of `faces` (DecimatedFaces or LevelFaces): points, triangles, point data (moved
  * points with their new colour, with a decimator), the original ids, cell data.
@@ -545,6 +564,7 @@ vtkIdType Write(vtkObject* self, vtkPolyData* input, const InputMesh& mesh, cons
     outCD->CopyAllocate(inCD, used.Triangles);
     outCD->CopyData(inCD, sourceCells, targetCells);
   }
+  MarkArraysModified(output);
   return used.Triangles;
 }
 

@@ -10,6 +10,7 @@
 #include "vtkBitArray.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -362,8 +363,8 @@ CD_TEST_CASE(EveryPointArrayKind)
   }
 }
 
-/// The output's points hold the input points named by vtkOriginalPointIds, bit for bit, in an
-/// array named and described as `in`'s.
+/// The output's points hold the input points named by vtkOriginalPointIds, bit for bit, in a
+/// plain array of their type named and described as `in`'s.
 void CheckPointsDescribed(vtkDataArray* in, vtkPolyData* output, const std::string& label)
 {
   auto* ids = vtkIdTypeArray::SafeDownCast(output->GetPointData()->GetArray("vtkOriginalPointIds"));
@@ -373,6 +374,9 @@ void CheckPointsDescribed(vtkDataArray* in, vtkPolyData* output, const std::stri
   {
     return;
   }
+  CD_CHECK_MSG(out->GetArrayType() == vtkAbstractArray::AoSDataArrayTemplate &&
+                 out->GetDataType() == in->GetDataType(),
+               label << ": the points are not a plain array of the input's type");
   CD_CHECK_MSG(out->GetName() && std::string(out->GetName()) == in->GetName(),
                label << ": the points' array is named '" << (out->GetName() ? out->GetName() : "")
                      << "'");
@@ -429,6 +433,92 @@ CD_TEST_CASE(PointsOfAnotherLayout)
     lod->Update();
     CheckPointsDescribed(soa, lod->GetOutput(), label + ", level filter at 0.5");
   }
+}
+
+/// The smallest and largest magnitude of `array`'s tuples, by hand.
+std::pair<double, double> MagnitudeRange(vtkDataArray* array)
+{
+  double low = VTK_DOUBLE_MAX, high = VTK_DOUBLE_MIN;
+  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+  {
+    double squared = 0;
+    for (int k = 0; k < array->GetNumberOfComponents(); ++k)
+    {
+      squared += array->GetComponent(i, k) * array->GetComponent(i, k);
+    }
+    low = std::min(low, std::sqrt(squared));
+    high = std::max(high, std::sqrt(squared));
+  }
+  return { low, high };
+}
+
+/// The magnitude range `output` reports for its points and for each named array is that of its
+/// own tuples.
+void CheckOwnRanges(vtkPolyData* output, const std::string& label)
+{
+  std::vector<std::pair<std::string, vtkDataArray*>> arrays = {
+    { "points", output->GetPoints()->GetData() },
+    { "Velocity", output->GetPointData()->GetArray("Velocity") },
+    { "CellVector", output->GetCellData()->GetArray("CellVector") }
+  };
+  for (const auto& named : arrays)
+  {
+    CD_CHECK_MSG(named.second, label << ": no " << named.first);
+    if (!named.second)
+    {
+      continue;
+    }
+    double reported[2];
+    named.second->GetFiniteRange(reported, -1);
+    const std::pair<double, double> own = MagnitudeRange(named.second);
+    const double tolerance = 1e-12 * std::max(1.0, own.second);
+    CD_CHECK_MSG(std::abs(reported[0] - own.first) <= tolerance &&
+                   std::abs(reported[1] - own.second) <= tolerance,
+                 label << ": " << named.first << " reports the magnitude range [" << reported[0]
+                       << ", " << reported[1] << "], its tuples span [" << own.first << ", "
+                       << own.second << "]");
+  }
+}
+
+// Ranges cached on the input's arrays (ParaView asks every array for its magnitude range) are
+// not carried to the output, whose arrays hold other tuples.
+CD_TEST_CASE(OutputRangesAreItsOwn)
+{
+  auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  vtkNew<vtkDoubleArray> velocity;
+  velocity->SetName("Velocity");
+  velocity->SetNumberOfComponents(3);
+  velocity->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    velocity->SetTuple3(i, 0.001 * static_cast<double>(i), 1.0, -0.5);
+  }
+  mesh->GetPointData()->AddArray(velocity);
+  vtkNew<vtkFloatArray> cellVector;
+  cellVector->SetName("CellVector");
+  cellVector->SetNumberOfComponents(3);
+  cellVector->SetNumberOfTuples(mesh->GetNumberOfCells());
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    cellVector->SetTuple3(c, 2.0 * static_cast<double>(c % 1000), 0.0, 1.0);
+  }
+  mesh->GetCellData()->AddArray(cellVector);
+  for (vtkDataArray* array : { mesh->GetPoints()->GetData(), static_cast<vtkDataArray*>(velocity),
+                               static_cast<vtkDataArray*>(cellVector) })
+  {
+    double range[2];
+    array->GetFiniteRange(range, -1); // cached in the array's information
+  }
+  const RunResult run =
+    Decimate(mesh, 0.9, [](vtkColorHalfEdgeDecimation* f) { f->GenerateCollapseRecordOn(); });
+  CheckOwnRanges(run.Output, "decimation");
+  vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+  lod->SetInputData(mesh);
+  lod->SetRecordData(run.Filter->GetCollapseRecord());
+  lod->SetTargetReduction(0.5);
+  lod->Update();
+  CheckOwnRanges(lod->GetOutput(), "level filter at 0.5");
 }
 
 CD_TEST_CASE(ScaleTranslationInvariance)
