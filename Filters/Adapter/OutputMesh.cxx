@@ -508,6 +508,45 @@ void KeepCarriedArrays(vtkObject* self, vtkPolyData* input, vtkPointData* inPD, 
   }
 }
 
+/// Whether no id of `ids` (each in [0, count)) appears twice.
+bool AreDistinct(vtkIdList* ids, vtkIdType count)
+{
+  std::vector<bool> seen(static_cast<size_t>(count), false);
+  for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+  {
+    const auto id = static_cast<size_t>(ids->GetId(i));
+    if (seen[id])
+    {
+      return false;
+    }
+    seen[id] = true;
+  }
+  return true;
+}
+
+/**
+ * Each output triangle's input cell values, by VTK's CopyData, the global cell ids included
+ * (VTK leaves them out): as global ids when no two triangles come from one cell, so that they
+ * stay unique; otherwise (a polygon's triangles share its cell) as an ordinary array.
+ */
+void WriteCellData(vtkCellData* inCD, vtkIdList* sourceCells, vtkIdList* targetCells,
+                   vtkIdType numCells, vtkCellData* outCD)
+{
+  if (inCD->GetGlobalIds())
+  {
+    if (AreDistinct(sourceCells, numCells))
+    {
+      outCD->CopyGlobalIdsOn();
+    }
+    else
+    {
+      inCD->SetActiveAttribute(-1, vtkDataSetAttributes::GLOBALIDS);
+    }
+  }
+  outCD->CopyAllocate(inCD, sourceCells->GetNumberOfIds());
+  outCD->CopyData(inCD, sourceCells, targetCells);
+}
+
 /// Every data array of `output` marked modified once its values are final: the range caches
 /// its information may hold from the input (CopyInformation keeps the finite magnitude range)
 /// are then dropped, so that ranges are the output's own.
@@ -560,9 +599,7 @@ vtkIdType Write(vtkObject* self, vtkPolyData* input, const InputMesh& mesh, cons
   }
   if (cellData)
   {
-    vtkCellData* outCD = output->GetCellData();
-    outCD->CopyAllocate(inCD, used.Triangles);
-    outCD->CopyData(inCD, sourceCells, targetCells);
+    WriteCellData(inCD, sourceCells, targetCells, input->GetNumberOfCells(), output->GetCellData());
   }
   MarkArraysModified(output);
   return used.Triangles;

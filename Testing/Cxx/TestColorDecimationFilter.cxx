@@ -19,6 +19,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkNew.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSOADataArrayTemplate.h"
@@ -519,6 +520,76 @@ CD_TEST_CASE(OutputRangesAreItsOwn)
   lod->SetTargetReduction(0.5);
   lod->Update();
   CheckOwnRanges(lod->GetOutput(), "level filter at 0.5");
+}
+
+/// Cell global ids 1000 + 7 c on every cell of `mesh`.
+void AddCellGlobalIds(vtkPolyData* mesh)
+{
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName("CellGid");
+  ids->SetNumberOfTuples(mesh->GetNumberOfCells());
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    ids->SetValue(c, 1000 + 7 * c);
+  }
+  mesh->GetCellData()->SetGlobalIds(ids);
+}
+
+/// `output`'s "CellGid" cell array: one value a triangle, each an input cell's; distinct and
+/// the active global ids when `asGlobalIds`, an ordinary array otherwise.
+void CheckCellGlobalIds(vtkPolyData* input, vtkPolyData* output, bool asGlobalIds,
+                        const std::string& label)
+{
+  auto* ids = vtkIdTypeArray::SafeDownCast(output->GetCellData()->GetArray("CellGid"));
+  CD_CHECK_MSG(ids && ids->GetNumberOfTuples() == output->GetNumberOfCells() &&
+                 output->GetNumberOfCells() > 0,
+               label << ": the cell global ids are not in the output");
+  if (!ids)
+  {
+    return;
+  }
+  CD_CHECK_MSG((output->GetCellData()->GetGlobalIds() == ids) == asGlobalIds,
+               label << ": the array is " << (asGlobalIds ? "not " : "") << "the global ids");
+  std::vector<vtkIdType> values(ids->GetPointer(0), ids->GetPointer(0) + ids->GetNumberOfTuples());
+  long long foreign = 0;
+  for (const vtkIdType v : values)
+  {
+    foreign +=
+      (v >= 1000 && (v - 1000) % 7 == 0 && (v - 1000) / 7 < input->GetNumberOfCells()) ? 0 : 1;
+  }
+  CD_CHECK_MSG(foreign == 0, label << ": " << foreign << " ids are no input cell's");
+  std::sort(values.begin(), values.end());
+  const bool distinct = std::adjacent_find(values.begin(), values.end()) == values.end();
+  CD_CHECK_MSG(!asGlobalIds || distinct, label << ": global ids repeat");
+}
+
+// Cell global ids, which VTK's copy rules leave out, reach the output: as global ids from
+// triangles (each output triangle is one input cell's), as an ordinary array from quads (the
+// two triangles of a quad share its id); quietly, by both filters.
+CD_TEST_CASE(CellGlobalIdsKept)
+{
+  auto triangles = meshes::Icosphere(3, Pattern::SharpRegions);
+  AddCellGlobalIds(triangles);
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(30, 20);
+  plane->Update();
+  vtkSmartPointer<vtkPolyData> quads = plane->GetOutput();
+  AddCellGlobalIds(quads);
+  for (const auto& mesh : { triangles, quads })
+  {
+    const bool fromTriangles = mesh == triangles;
+    const std::string label = fromTriangles ? "triangles" : "quads";
+    const RunResult run =
+      Decimate(mesh, 0.5, [](vtkColorHalfEdgeDecimation* f) { f->GenerateCollapseRecordOn(); });
+    CD_CHECK_MSG(run.Errors == 0 && run.Warnings == 0, label << ": messages");
+    CheckCellGlobalIds(mesh, run.Output, fromTriangles, label);
+    vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+    lod->SetInputData(mesh);
+    lod->SetRecordData(run.Filter->GetCollapseRecord());
+    lod->SetTargetReduction(0.3);
+    lod->Update();
+    CheckCellGlobalIds(mesh, lod->GetOutput(), fromTriangles, label + ", level filter at 0.3");
+  }
 }
 
 CD_TEST_CASE(ScaleTranslationInvariance)
