@@ -508,43 +508,45 @@ void KeepCarriedArrays(vtkObject* self, vtkPolyData* input, vtkPointData* inPD, 
   }
 }
 
-/// Whether no id of `ids` (each in [0, count)) appears twice.
-bool AreDistinct(vtkIdList* ids, vtkIdType count)
+/// The array of `data` named as `like` and of its type and components (unnamed: the first
+/// such unnamed one), or -1.
+int IndexLike(vtkDataSetAttributes* data, vtkAbstractArray* like)
 {
-  std::vector<bool> seen(static_cast<size_t>(count), false);
-  for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+  const std::string name = like->GetName() ? like->GetName() : "";
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
   {
-    const auto id = static_cast<size_t>(ids->GetId(i));
-    if (seen[id])
+    vtkAbstractArray* array = data->GetAbstractArray(a);
+    if (array && (array->GetName() ? array->GetName() : "") == name &&
+        array->GetDataType() == like->GetDataType() &&
+        array->GetNumberOfComponents() == like->GetNumberOfComponents())
     {
-      return false;
+      return a;
     }
-    seen[id] = true;
   }
-  return true;
+  return -1;
 }
 
 /**
  * Each output triangle's input cell values, by VTK's CopyData, the global cell ids included
- * (VTK leaves them out): as global ids when no two triangles come from one cell, so that they
- * stay unique; otherwise (a polygon's triangles share its cell) as an ordinary array.
+ * (VTK leaves them out): as the output's global ids when the input's cells were all triangles
+ * (one output triangle a cell: the ids stay unique), otherwise (a polygon's triangles share its
+ * cell) as an ordinary array. The role follows the input, not the level, and no copy flag is
+ * left on the output.
  */
 void WriteCellData(vtkCellData* inCD, vtkIdList* sourceCells, vtkIdList* targetCells,
-                   vtkIdType numCells, vtkCellData* outCD)
+                   bool oneTrianglePerCell, vtkCellData* outCD)
 {
-  if (inCD->GetGlobalIds())
+  vtkDataArray* globalIds = inCD->GetGlobalIds();
+  if (globalIds)
   {
-    if (AreDistinct(sourceCells, numCells))
-    {
-      outCD->CopyGlobalIdsOn();
-    }
-    else
-    {
-      inCD->SetActiveAttribute(-1, vtkDataSetAttributes::GLOBALIDS);
-    }
+    inCD->SetActiveAttribute(-1, vtkDataSetAttributes::GLOBALIDS); // copied as any array
   }
   outCD->CopyAllocate(inCD, sourceCells->GetNumberOfIds());
   outCD->CopyData(inCD, sourceCells, targetCells);
+  if (globalIds && oneTrianglePerCell)
+  {
+    outCD->SetActiveAttribute(IndexLike(outCD, globalIds), vtkDataSetAttributes::GLOBALIDS);
+  }
 }
 
 /// Every data array of `output` marked modified once its values are final: the range caches
@@ -599,7 +601,8 @@ vtkIdType Write(vtkObject* self, vtkPolyData* input, const InputMesh& mesh, cons
   }
   if (cellData)
   {
-    WriteCellData(inCD, sourceCells, targetCells, input->GetNumberOfCells(), output->GetCellData());
+    WriteCellData(inCD, sourceCells, targetCells, mesh.Soup.Polygons == 0 && mesh.Soup.Strips == 0,
+                  output->GetCellData());
   }
   MarkArraysModified(output);
   return used.Triangles;
