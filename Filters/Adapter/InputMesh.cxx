@@ -76,6 +76,21 @@ DecimatorInput InputMesh::CoreInput()
 
 namespace
 {
+/// The input's cell ghost array when it holds one value for each cell; otherwise null, and the
+/// soup notes that it was ignored.
+vtkUnsignedCharArray* CellGhosts(vtkPolyData* input, TriangleSoup& soup)
+{
+  vtkUnsignedCharArray* ghosts = input->GetCellGhostArray();
+  if (ghosts &&
+      (ghosts->GetNumberOfComponents() != 1 ||
+       ghosts->GetNumberOfTuples() != input->GetNumberOfCells()))
+  {
+    soup.IgnoredGhostArray = true;
+    return nullptr;
+  }
+  return ghosts;
+}
+
 /**
  * Ghost cells belong to a neighbouring piece (distributed data): they are left out, and the
  * points they share with this piece are fixed, as are ghost (duplicate) points, so that the
@@ -149,12 +164,18 @@ bool CopyPlainTriangles(const Id* connectivity, vtkIdType numTriangles, vtkIdTyp
 void FixGhostPoints(vtkPolyData* input, TriangleSoup& soup)
 {
   vtkUnsignedCharArray* pointGhosts = input->GetPointGhostArray();
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  if (pointGhosts &&
+      (pointGhosts->GetNumberOfComponents() != 1 || pointGhosts->GetNumberOfTuples() != numPoints))
+  {
+    soup.IgnoredGhostArray = true;
+    return;
+  }
   if (!pointGhosts)
   {
     return;
   }
-  const vtkIdType numPoints = input->GetNumberOfPoints();
-  for (vtkIdType i = 0; i < numPoints && i < pointGhosts->GetNumberOfValues(); ++i)
+  for (vtkIdType i = 0; i < numPoints; ++i)
   {
     if (pointGhosts->GetValue(i) & vtkDataSetAttributes::DUPLICATEPOINT)
     {
@@ -221,7 +242,7 @@ void AddPolygon(vtkPolyData* input, vtkIdType cell, vtkIdType npts, const vtkIdT
 void AddPolygons(vtkPolyData* input, vtkIdType firstCell, TriangleSoup& soup)
 {
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  vtkUnsignedCharArray* cellGhosts = input->GetCellGhostArray();
+  vtkUnsignedCharArray* cellGhosts = CellGhosts(input, soup);
   vtkNew<vtkPolygon> polygon;
   vtkNew<vtkIdList> local;
   auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
@@ -254,7 +275,7 @@ void AddPolygons(vtkPolyData* input, vtkIdType firstCell, TriangleSoup& soup)
 void AddStrips(vtkPolyData* input, vtkIdType firstCell, TriangleSoup& soup)
 {
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  vtkUnsignedCharArray* cellGhosts = input->GetCellGhostArray();
+  vtkUnsignedCharArray* cellGhosts = CellGhosts(input, soup);
   vtkNew<vtkCellArray> stripTriangles;
   auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
   vtkIdType cell = firstCell;
@@ -556,6 +577,13 @@ bool ReadGeometry(vtkObject* self, vtkPolyData* input, int threads, InputMesh& m
     // Legitimate input: the output is triangles whatever the input's cells.
     vtkDebugWithObjectMacro(self, << "Triangulated " << soup.Polygons << " polygons and "
                                   << soup.Strips << " triangle strips.");
+  }
+  if (soup.IgnoredGhostArray)
+  {
+    vtkWarningWithObjectMacro(self, << "The input's ghost array ("
+                                    << vtkDataSetAttributes::GhostArrayName()
+                                    << ") does not hold one value for each point or cell; it is "
+                                       "ignored: no point or cell is taken for a ghost.");
   }
   if (soup.Degenerate > 0 || soup.BadCells > 0)
   {

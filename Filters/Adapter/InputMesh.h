@@ -41,6 +41,7 @@ struct TriangleSoup
   vtkIdType GhostCells = 0;  ///< ghost cells (another piece's), left out
   vtkIdType GhostPoints = 0; ///< ghost (duplicate) points, fixed
   bool IdsOutOfRange = false;
+  bool IgnoredGhostArray = false; ///< a ghost array of the wrong size, ignored
   /// Per point: non-zero if it must not collapse (used by a ghost cell, or a ghost point).
   std::vector<uint8_t> Fixed;
   bool HasFixed = false;

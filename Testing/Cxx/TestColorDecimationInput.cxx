@@ -419,6 +419,34 @@ CD_TEST_CASE(Quads)
   CheckDecimatedMesh(quads, r.Output, Expectation{ false, 1, 1, UpNormal, true }, "quads, 0.9");
 }
 
+// Ghost arrays that do not hold one value a cell or a point (here one short, one too long)
+// are ignored with a warning, never read past their end: every cell is decimated.
+CD_TEST_CASE(GhostArraysOfTheWrongSize)
+{
+  auto mesh = meshes::Icosphere(3, Pattern::SharpRegions);
+  vtkNew<vtkUnsignedCharArray> cellGhosts;
+  cellGhosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  cellGhosts->SetNumberOfValues(mesh->GetNumberOfCells() / 2);
+  cellGhosts->FillValue(vtkDataSetAttributes::DUPLICATECELL);
+  mesh->GetCellData()->AddArray(cellGhosts);
+  vtkNew<vtkUnsignedCharArray> pointGhosts;
+  pointGhosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  pointGhosts->SetNumberOfValues(mesh->GetNumberOfPoints() + 5);
+  pointGhosts->FillValue(vtkDataSetAttributes::DUPLICATEPOINT);
+  mesh->GetPointData()->AddArray(pointGhosts);
+  for (double reduction : { 0.0, 0.5 })
+  {
+    const RunResult r = Decimate(mesh, reduction);
+    CD_CHECK(r.Errors == 0 && r.Warnings >= 1);
+    CD_CHECK_MSG(r.WarningText().find("ghost array") != std::string::npos, r.WarningText());
+    // No cell taken for a ghost, no point fixed: the whole mesh, then half of it.
+    const double expected =
+      reduction == 0.0 ? mesh->GetNumberOfCells() : std::floor(0.5 * mesh->GetNumberOfCells());
+    CD_CHECK_MSG(std::abs(r.Output->GetNumberOfPolys() - expected) <= 0.01 * expected,
+                 r.Output->GetNumberOfPolys() << " triangles, expected " << expected);
+  }
+}
+
 CD_TEST_CASE(TriangleStrips)
 {
   auto mesh = meshes::Icosphere(4, Pattern::SharpRegions);
