@@ -39,54 +39,69 @@ namespace
 /// The progress text while the mesh and the record are read (not when they are kept).
 const char* const ReadingText = "Reading the mesh and checking the collapse record";
 
-/// The latest change of a record: a vtkTable's own MTime does not follow its columns.
-vtkMTimeType RecordTime(vtkDataObject* record)
+/// Objects and their MTimes: what a cached mesh or record was read from.
+struct PartsKey
 {
-  vtkMTimeType time = record->GetMTime();
-  if (auto* table = vtkTable::SafeDownCast(record))
-  {
-    time = std::max({ time, table->GetRowData()->GetMTime(), table->GetFieldData()->GetMTime() });
-    for (vtkIdType c = 0; c < table->GetNumberOfColumns(); ++c)
-    {
-      time = std::max(time, table->GetColumn(c)->GetMTime());
-    }
-  }
-  return time;
-}
+  std::vector<const vtkObject*> Parts;
+  std::vector<vtkMTimeType> Times;
 
-/// What the cached mesh was read from: the input's points and cell arrays (connectivity and
-/// offsets), each with its MTime. The input's own MTime is no key: ParaView shallow-copies the
-/// data into it at every update, which moves its MTime while these stay the same objects.
-struct GeometryKey
-{
-  std::array<const vtkObject*, 9> Parts{};
-  std::array<vtkMTimeType, 9> Times{};
-
-  explicit GeometryKey(vtkPolyData* input = nullptr)
+  void Add(vtkObject* part)
   {
-    if (!input)
-    {
-      return;
-    }
-    this->Set(0, input->GetPoints());
-    vtkCellArray* cells[4] = { input->GetVerts(), input->GetLines(), input->GetPolys(),
-                               input->GetStrips() };
-    for (int k = 0; k < 4; ++k)
-    {
-      this->Set(1 + 2 * k, cells[k] ? cells[k]->GetConnectivityArray() : nullptr);
-      this->Set(2 + 2 * k, cells[k] ? cells[k]->GetOffsetsArray() : nullptr);
-    }
+    this->Parts.push_back(part);
+    this->Times.push_back(part ? part->GetMTime() : 0);
   }
-  void Set(int k, vtkObject* part)
+  vtkMTimeType Latest() const
   {
-    this->Parts[k] = part;
-    this->Times[k] = part ? part->GetMTime() : 0;
+    return this->Times.empty() ? 0 : *std::max_element(this->Times.begin(), this->Times.end());
   }
-  bool operator==(const GeometryKey& other) const
+  bool operator==(const PartsKey& other) const
   {
     return this->Parts == other.Parts && this->Times == other.Times;
   }
 };
+
+/**
+ * What the cached mesh is read from: the input's points, its ghost arrays, and its cell arrays
+ * with their connectivity and offsets. The input's own MTime is no key: ParaView shallow-copies
+ * the data into it at every update, which moves its MTime while these stay the same objects.
+ */
+PartsKey GeometryKey(vtkPolyData* input)
+{
+  PartsKey key;
+  key.Add(input->GetPoints());
+  key.Add(input->GetPointGhostArray());
+  key.Add(input->GetCellGhostArray());
+  for (vtkCellArray* cells :
+       { input->GetVerts(), input->GetLines(), input->GetPolys(), input->GetStrips() })
+  {
+    key.Add(cells);
+    key.Add(cells ? cells->GetConnectivityArray() : nullptr);
+    key.Add(cells ? cells->GetOffsetsArray() : nullptr);
+  }
+  return key;
+}
+
+/// What the cached record is read from: the table, its columns and field data arrays (a
+/// vtkTable's own MTime does not follow them, and removing one changes no MTime).
+PartsKey RecordKey(vtkDataObject* record)
+{
+  PartsKey key;
+  key.Add(record);
+  if (auto* table = vtkTable::SafeDownCast(record))
+  {
+    key.Add(table->GetRowData());
+    key.Add(table->GetFieldData());
+    for (vtkIdType c = 0; c < table->GetNumberOfColumns(); ++c)
+    {
+      key.Add(table->GetColumn(c));
+    }
+    for (int a = 0; a < table->GetFieldData()->GetNumberOfArrays(); ++a)
+    {
+      key.Add(table->GetFieldData()->GetAbstractArray(a));
+    }
+  }
+  return key;
+}
 } // namespace
 
 /// The mesh and the record of the last execution, kept while neither changes.
@@ -95,9 +110,8 @@ struct vtkColorHalfEdgeLevelOfDetail::Cache
   colordecimation::adapter::InputMesh Mesh;
   colordecimation::CollapseRecord Record;
   std::vector<int32_t> Where; ///< each input point's point in the level
-  GeometryKey Input;
-  vtkDataObject* RecordData = nullptr;
-  vtkMTimeType RecordTime = 0;
+  PartsKey MeshSource;        ///< what Mesh was read from
+  PartsKey RecordSource;      ///< what Record was read from
   bool Valid = false;
 };
 
@@ -122,6 +136,15 @@ vtkColorHalfEdgeLevelOfDetail::vtkColorHalfEdgeLevelOfDetail()
 vtkColorHalfEdgeLevelOfDetail::~vtkColorHalfEdgeLevelOfDetail()
 {
   this->SetOriginalPointIdsArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkColorHalfEdgeLevelOfDetail::GetMTime()
+{
+  // A record given as data changes through its columns, which its own MTime does not follow.
+  vtkDataObject* record =
+    this->GetNumberOfInputConnections(1) > 0 ? this->GetInputDataObject(1, 0) : nullptr;
+  return std::max(this->Superclass::GetMTime(), record ? RecordKey(record).Latest() : 0);
 }
 
 //------------------------------------------------------------------------------
@@ -152,8 +175,8 @@ int vtkColorHalfEdgeLevelOfDetail::FillInputPortInformation(int port, vtkInforma
 bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObject* record)
 {
   Cache& cache = *this->Cached;
-  if (cache.Valid && cache.Input == GeometryKey(input) && cache.RecordData == record &&
-      cache.RecordTime == RecordTime(record))
+  if (cache.Valid && cache.MeshSource == GeometryKey(input) &&
+      cache.RecordSource == RecordKey(record))
   {
     return true;
   }
@@ -182,9 +205,8 @@ bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObjec
   // as were the fixed flags.
   cache.Mesh.Points = colordecimation::Buffer<double>();
   cache.Mesh.Soup.Fixed = std::vector<uint8_t>();
-  cache.Input = GeometryKey(input);
-  cache.RecordData = record;
-  cache.RecordTime = RecordTime(record);
+  cache.MeshSource = GeometryKey(input);
+  cache.RecordSource = RecordKey(record);
   cache.Valid = true;
   return true;
 }
@@ -207,9 +229,11 @@ int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(reques
 
   // 1. The mesh and the record, checked against each other (kept from the last execution
   // while neither changed).
-  if (!std::isfinite(this->MaximumError))
+  if (!std::isfinite(this->MaximumError) || std::isnan(this->TargetReduction))
   {
-    vtkErrorMacro(<< "MaximumError is NaN or infinite; output is empty.");
+    vtkErrorMacro(<< (std::isnan(this->TargetReduction) ? "TargetReduction is NaN"
+                                                        : "MaximumError is NaN or infinite")
+                  << "; output is empty.");
     return 1;
   }
   if (!record)

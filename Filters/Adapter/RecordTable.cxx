@@ -159,6 +159,12 @@ void ForEachValue(vtkDataArray* column, Function&& f)
   }
 }
 
+/// Whether the column holds single-precision floats (exact integers only up to 2^24).
+bool IsSinglePrecision(vtkDataArray* column)
+{
+  return column->GetDataType() == VTK_FLOAT;
+}
+
 /// Integer ids from a column; false if one is not an integer that fits.
 bool ReadIds(vtkDataArray* column, Buffer<int32_t>& ids)
 {
@@ -239,17 +245,23 @@ bool ReadColumns(vtkTable* table, CollapseRecord& record, std::string& why)
       " (numeric, one component, one value per row)";
     return false;
   }
+  if (IsSinglePrecision(removed) || IsSinglePrecision(survivor) || IsSinglePrecision(triangles))
+  {
+    why = "its point ids or triangle counts are single-precision floats, which cannot hold every "
+          "id above 2^24 (integers or doubles are needed)";
+    return false;
+  }
   if (!ReadIds(removed, record.Removed) || !ReadIds(survivor, record.Survivor))
   {
     why = "its point ids are not all integers";
     return false;
   }
-  if (!ReadValues(cost, record.Cost, [](double v) { return std::isfinite(v); }) ||
+  // The costs are the schedule's, kept for the user (the levels do not read them): any value.
+  if (!ReadValues(cost, record.Cost, [](double) { return true; }) ||
       !ReadValues(error, record.Error, [](double v) { return v >= 0.0 && std::isfinite(v); }) ||
       !ReadValues(triangles, record.Triangles, IsCount))
   {
-    why = "its costs, errors or triangle counts are not all finite (errors >= 0, counts whole "
-          "and >= 0)";
+    why = "its errors or triangle counts are not all finite (errors >= 0, counts whole and >= 0)";
     return false;
   }
   return true;

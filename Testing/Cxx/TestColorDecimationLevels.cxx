@@ -9,10 +9,12 @@
 #include "vtkColorHalfEdgeLevelOfDetail.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -332,10 +334,20 @@ CD_TEST_CASE(LevelCacheFollowsInputs)
   // A column changed in place (a survivor out of range): read again, and refused.
   auto column = vtkDataArray::SafeDownCast(run.Record->GetColumnByName("SurvivingPointId"));
   column->SetComponent(0, 0, double(mesh->GetNumberOfPoints()));
-  column->Modified();
-  lod->Modified();
+  column->Modified(); // the level filter's MTime follows the record's columns
   lod->Update();
   CD_CHECK(messages.HasError("out of range"));
+  // A column removed (which changes no MTime), the table then marked modified: read again.
+  messages.Clear();
+  auto copy = vtkSmartPointer<vtkTable>::New();
+  copy->DeepCopy(run.Record);
+  column->SetComponent(0, 0, ColumnValues(copy, "SurvivingPointId")[1]); // in range again
+  lod->SetRecordData(copy);
+  lod->Update();
+  copy->RemoveColumnByName("Error");
+  copy->Modified();
+  lod->Update();
+  CD_CHECK(messages.HasError("lacks one of the columns"));
   // An input with no points: an empty output.
   vtkNew<vtkPolyData> empty;
   lod->SetInputData(empty);
@@ -395,13 +407,33 @@ CD_TEST_CASE(LevelCacheKeepsShallowCopies)
   // A point moved in place: read again, and the record no longer belongs to the mesh.
   EventRecorder messages;
   messages.Watch(lod);
-  double p[3];
+  double p[3], original[3];
   input->GetPoints()->GetPoint(0, p);
+  std::copy(p, p + 3, original);
   p[0] += 0.5;
   input->GetPoints()->SetPoint(0, p);
   input->GetPoints()->Modified();
   lod->Update();
   CD_CHECK(reads == 2 && messages.HasError("belongs to another mesh"));
+  input->GetPoints()->SetPoint(0, original); // mesh shares them
+  input->GetPoints()->Modified();
+  lod->Update();
+  CD_CHECK(reads == 3 && lod->GetOutput()->GetNumberOfCells() > 0);
+  // A triangle's corners turned in place, the cell array marked modified (its connectivity
+  // array's MTime does not move): read again, and the record is another mesh's.
+  messages.Clear();
+  vtkCellArray* polys = input->GetPolys();
+  vtkIdType npts;
+  const vtkIdType* pts;
+  polys->GetCellAtId(0, npts, pts);
+  const vtkIdType corners[3] = { pts[0], pts[1], pts[2] };
+  const vtkIdType turned[3] = { corners[1], corners[2], corners[0] };
+  polys->ReplaceCellAtId(0, 3, turned);
+  polys->Modified();
+  lod->Update();
+  CD_CHECK(reads == 4 && messages.HasError("belongs to another mesh"));
+  polys->ReplaceCellAtId(0, 3, corners); // mesh shares them
+  polys->Modified();
   colors->SetComponent(kept, 0, 255 - colors->GetComponent(kept, 0)); // mesh shares it
   colors->Modified();
 }
@@ -472,7 +504,27 @@ CD_TEST_CASE(BadRecords)
   expectError(tampered("NumberOfTriangles", 2, 1e300), nullptr, "not all finite");
   expectError(tampered("Error", 1, std::nan("")), nullptr, "not all finite");
   expectError(tampered("Error", 1, -1.0), nullptr, "not all finite");
-  expectError(tampered("Cost", 1, HUGE_VAL), nullptr, "not all finite");
+  // Single-precision ids (exact only up to 2^24).
+  auto floatIds = vtkSmartPointer<vtkTable>::New();
+  floatIds->DeepCopy(run.Record);
+  vtkNew<vtkFloatArray> survivors;
+  survivors->DeepCopy(floatIds->GetColumnByName("SurvivingPointId"));
+  survivors->SetName("SurvivingPointId");
+  floatIds->RemoveColumnByName("SurvivingPointId");
+  floatIds->AddColumn(survivors);
+  expectError(floatIds, nullptr, "single-precision");
+  // Costs are not read: an infinite one is accepted (the schedule may record one).
+  EventRecorder quiet;
+  vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+  quiet.Watch(lod);
+  lod->SetInputData(mesh);
+  lod->SetRecordData(tampered("Cost", 1, HUGE_VAL));
+  lod->Update();
+  CD_CHECK(quiet.Errors == 0 && lod->GetOutput()->GetNumberOfCells() > 0);
+  // A NaN reduction: an error, not the coarsest level.
+  lod->SetTargetReduction(std::nan(""));
+  lod->Update();
+  CD_CHECK(quiet.HasError("TargetReduction is NaN") && lod->GetOutput()->GetNumberOfCells() == 0);
   // The mesh mirrored (every x negated: the sign bits flipped in pairs) is another mesh.
   auto mirrored = Copy(mesh);
   for (vtkIdType i = 0; i < mirrored->GetNumberOfPoints(); ++i)
