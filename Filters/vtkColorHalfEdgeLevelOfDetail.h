@@ -35,14 +35,14 @@
  * The record is checked against input 0 (point and triangle counts and a checksum of points
  * and triangles) and for consistency (ids in range, no point removed twice, triangle counts
  * decreasing, errors finite and >= 0; ids and counts of an integer type or double, not float);
- * a record that fails is an error and the output is empty. Its costs are not read. Distributed data
- * works piece by piece: each piece is extracted with the record made of that piece (this
- * filter asks for the ghost level the decimation asks for, so the pieces are the same). The mesh
- * and the record are read once and kept while neither changes (the input's points, ghost
- * arrays and cell arrays, and the record's table, columns and field data, are the same objects,
- * not modified), so that moving TargetReduction (a
- * ParaView slider) only redoes the linear extraction; the progress text "Reading the mesh and
- * checking the collapse record" says when they are read. What is kept: the triangles (12
+ * a record that fails is an error and the output is empty. Its costs are not read.
+ * Distributed data works piece by piece: each piece is extracted with the record made of that
+ * piece (this filter asks for the ghost level the decimation asks for, so the pieces are the
+ * same). The mesh and the record are read once and kept while neither changes (the input's
+ * points, ghost arrays and cell arrays, and the record's table, columns and field data, are the
+ * same objects, not modified), so that moving TargetReduction (a ParaView slider) only redoes
+ * the linear extraction; the progress text "Reading the mesh and checking the collapse record"
+ * says when they are read. What is kept: the triangles (12
  * bytes each; 8 more with their cell ids when the cells are not all triangles), the record
  * (32 bytes a collapse) and the level's point map (4 bytes a point).
  *
