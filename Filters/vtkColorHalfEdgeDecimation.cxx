@@ -177,9 +177,30 @@ bool ReadLocks(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int associ
   return true;
 }
 
-/// Distributed data: a piece of several that came without ghosts keeps its open boundary,
-/// where it meets the others.
-void FixSharedPoints(vtkColorHalfEdgeDecimation* self, vtkInformation* outInfo, InputMesh& mesh)
+/// The number of pieces the pipeline asks for, on whichever output port (a Level Of Detail
+/// filter may be the only consumer, through the record's port) or on the input.
+int NumberOfPieces(vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  int pieces = 1;
+  const auto consider = [&pieces](vtkInformation* info)
+  {
+    if (info && info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
+    {
+      pieces =
+        std::max(pieces, info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
+    }
+  };
+  consider(inputVector[0]->GetInformationObject(0));
+  for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port)
+  {
+    consider(outputVector->GetInformationObject(port));
+  }
+  return pieces;
+}
+
+/// Distributed data: a piece of several that came without ghost cells keeps its open
+/// boundary, where it meets the others (ghost points alone do not mark the points it owns).
+void FixSharedPoints(vtkColorHalfEdgeDecimation* self, int numPieces, InputMesh& mesh)
 {
   colordecimation::adapter::TriangleSoup& soup = mesh.Soup;
   if (soup.GhostCells > 0)
@@ -187,10 +208,7 @@ void FixSharedPoints(vtkColorHalfEdgeDecimation* self, vtkInformation* outInfo, 
     vtkDebugWithObjectMacro(self, << "Left out " << soup.GhostCells
                                   << " ghost cells; their points are fixed.");
   }
-  const int numPieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-    : 1;
-  if (numPieces > 1 && soup.GhostCells == 0 && soup.GhostPoints == 0)
+  if (numPieces > 1 && soup.GhostCells == 0)
   {
     const vtkIdType fixed = colordecimation::adapter::FixOpenBoundary(soup);
     vtkDebugWithObjectMacro(self, << "Piece of " << numPieces << " without ghost cells: " << fixed
@@ -421,7 +439,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   {
     return 1;
   }
-  FixSharedPoints(this, outputVector->GetInformationObject(0), mesh);
+  FixSharedPoints(this, NumberOfPieces(inputVector, outputVector), mesh);
   this->Phases->Lap("input");
 
   // 3. Decimate to the target, or until MaximumError or no valid collapse stops it.

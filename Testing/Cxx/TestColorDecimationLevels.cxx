@@ -20,6 +20,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkTable.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkXMLTableReader.h"
 #include "vtkXMLTableWriter.h"
 
@@ -304,6 +305,79 @@ CD_TEST_CASE(BatchedLevelsNestedAndValid)
       first = false;
     }
   }
+}
+
+// A piece of several asked for through the record's port alone (a Level Of Detail filter as
+// the decimation's only consumer) is decimated as one asked for on the mesh's port: its open
+// boundary, where it would meet the other pieces, is kept.
+CD_TEST_CASE(PieceBoundaries)
+{
+  auto sheet = meshes::Grid(30, 20, Pattern::SharpRegions);
+  vtkNew<vtkColorHalfEdgeDecimation> direct;
+  direct->SetInputData(sheet);
+  direct->GenerateCollapseRecordOn();
+  direct->SetTargetReduction(0.9);
+  direct->UpdatePiece(0, 2, 0);
+  const vtkIdType expected = direct->GetCollapseRecord()->GetNumberOfRows();
+  vtkNew<vtkColorHalfEdgeDecimation> decimate;
+  decimate->SetInputData(sheet);
+  decimate->GenerateCollapseRecordOn();
+  decimate->SetTargetReduction(0.9);
+  vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+  lod->SetInputData(sheet);
+  lod->SetRecordConnection(decimate->GetOutputPort(1));
+  lod->SetTargetReduction(0.9);
+  lod->UpdatePiece(0, 2, 0);
+  const vtkIdType recorded = decimate->GetCollapseRecord()->GetNumberOfRows();
+  // Without the piece count the open boundary collapses too: more collapses are recorded.
+  vtkNew<vtkColorHalfEdgeDecimation> whole;
+  whole->SetInputData(sheet);
+  whole->GenerateCollapseRecordOn();
+  whole->SetTargetReduction(0.9);
+  whole->Update();
+  CD_CHECK(whole->GetCollapseRecord()->GetNumberOfRows() != expected);
+  CD_CHECK_MSG(recorded == expected,
+               recorded << " collapses recorded, " << expected
+                        << " when the mesh's port asks for the piece");
+  CD_CHECK(lod->GetOutput()->GetNumberOfCells() > 0);
+  // A piece with ghost points but no ghost cell keeps its whole open boundary as well: the
+  // ghost points mark only the shared points another piece owns.
+  auto marked = Copy(sheet);
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  ghosts->SetNumberOfValues(marked->GetNumberOfPoints());
+  ghosts->FillValue(0);
+  ghosts->SetValue(0, vtkDataSetAttributes::DUPLICATEPOINT);
+  marked->GetPointData()->AddArray(ghosts);
+  vtkNew<vtkColorHalfEdgeDecimation> piece;
+  piece->SetInputData(marked);
+  piece->SetTargetReduction(0.9);
+  piece->UpdatePiece(0, 2, 0);
+  std::set<vtkIdType> kept;
+  auto* ids = vtkIdTypeArray::SafeDownCast(
+    piece->GetOutput()->GetPointData()->GetArray("vtkOriginalPointIds"));
+  for (vtkIdType i = 0; ids && i < ids->GetNumberOfValues(); ++i)
+  {
+    kept.insert(ids->GetValue(i));
+  }
+  std::map<std::pair<vtkIdType, vtkIdType>, int> edgeUses;
+  for (vtkIdType c = 0; c < marked->GetNumberOfCells(); ++c)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    marked->GetPolys()->GetCellAtId(c, npts, pts);
+    for (vtkIdType k = 0; k < npts; ++k)
+    {
+      const vtkIdType a = pts[k], b = pts[(k + 1) % npts];
+      ++edgeUses[{ std::min(a, b), std::max(a, b) }];
+    }
+  }
+  long long lost = 0;
+  for (const auto& edge : edgeUses)
+  {
+    lost += edge.second == 1 ? !kept.count(edge.first.first) + !kept.count(edge.first.second) : 0;
+  }
+  CD_CHECK_MSG(lost == 0, lost << " ends of open-boundary edges collapsed away");
 }
 
 // The level filter keeps the mesh and the record between updates, and reads them again when
