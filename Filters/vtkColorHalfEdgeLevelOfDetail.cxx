@@ -27,7 +27,6 @@
 #include "vtkTable.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
