@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkColorHalfEdgeLevelOfDetail);
@@ -174,8 +175,9 @@ int vtkColorHalfEdgeLevelOfDetail::FillInputPortInformation(int port, vtkInforma
 bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObject* record)
 {
   Cache& cache = *this->Cached;
-  if (cache.Valid && cache.MeshSource == GeometryKey(input) &&
-      cache.RecordSource == RecordKey(record))
+  PartsKey meshSource = GeometryKey(input);
+  PartsKey recordSource = RecordKey(record);
+  if (cache.Valid && cache.MeshSource == meshSource && cache.RecordSource == recordSource)
   {
     return true;
   }
@@ -204,8 +206,8 @@ bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObjec
   // as were the fixed flags.
   cache.Mesh.Points = colordecimation::Buffer<double>();
   cache.Mesh.Soup.Fixed = std::vector<uint8_t>();
-  cache.MeshSource = GeometryKey(input);
-  cache.RecordSource = RecordKey(record);
+  cache.MeshSource = std::move(meshSource);
+  cache.RecordSource = std::move(recordSource);
   cache.Valid = true;
   return true;
 }

@@ -76,19 +76,23 @@ DecimatorInput InputMesh::CoreInput()
 
 namespace
 {
-/// The input's cell ghost array when it holds one value for each cell; otherwise null, and the
-/// soup notes that it was ignored.
-vtkUnsignedCharArray* CellGhosts(vtkPolyData* input, TriangleSoup& soup)
+/// `ghosts` when it holds one value for each of `count` points or cells; otherwise null, and
+/// the soup notes that it was ignored.
+vtkUnsignedCharArray* CheckedGhosts(vtkUnsignedCharArray* ghosts, vtkIdType count,
+                                    TriangleSoup& soup)
 {
-  vtkUnsignedCharArray* ghosts = input->GetCellGhostArray();
-  if (ghosts &&
-      (ghosts->GetNumberOfComponents() != 1 ||
-       ghosts->GetNumberOfTuples() != input->GetNumberOfCells()))
+  if (ghosts && (ghosts->GetNumberOfComponents() != 1 || ghosts->GetNumberOfTuples() != count))
   {
     soup.IgnoredGhostArray = true;
     return nullptr;
   }
   return ghosts;
+}
+
+/// The input's cell ghost array, if it is usable (CheckedGhosts).
+vtkUnsignedCharArray* CellGhosts(vtkPolyData* input, TriangleSoup& soup)
+{
+  return CheckedGhosts(input->GetCellGhostArray(), input->GetNumberOfCells(), soup);
 }
 
 /**
@@ -163,14 +167,8 @@ bool CopyPlainTriangles(const Id* connectivity, vtkIdType numTriangles, vtkIdTyp
 /// Ghost (duplicate) points are fixed.
 void FixGhostPoints(vtkPolyData* input, TriangleSoup& soup)
 {
-  vtkUnsignedCharArray* pointGhosts = input->GetPointGhostArray();
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  if (pointGhosts &&
-      (pointGhosts->GetNumberOfComponents() != 1 || pointGhosts->GetNumberOfTuples() != numPoints))
-  {
-    soup.IgnoredGhostArray = true;
-    return;
-  }
+  vtkUnsignedCharArray* pointGhosts = CheckedGhosts(input->GetPointGhostArray(), numPoints, soup);
   if (!pointGhosts)
   {
     return;
@@ -187,11 +185,11 @@ void FixGhostPoints(vtkPolyData* input, TriangleSoup& soup)
 }
 
 /// The bulk path of CopyPlainTriangles, when the polygons are all triangles and there are no
-/// strips nor ghost cells; false when it does not apply.
+/// strips nor (usable) ghost cells; false when it does not apply.
 bool TryPlainTriangles(vtkPolyData* input, vtkIdType firstCell, int threads, TriangleSoup& soup)
 {
   vtkCellArray* polyCells = input->GetPolys();
-  if (input->GetCellGhostArray() || input->GetNumberOfStrips() != 0 ||
+  if (CellGhosts(input, soup) || input->GetNumberOfStrips() != 0 ||
       polyCells->GetNumberOfCells() == 0 || polyCells->IsHomogeneous() != 3)
   {
     return false;
