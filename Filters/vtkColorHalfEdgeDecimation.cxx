@@ -110,7 +110,8 @@ bool IsPointArray(vtkColorHalfEdgeDecimation* self, const char* role, const char
 
 /// The colour array (of the given association), converted to RGB in [0,1]; false (with an
 /// error) for a bad one. Without one, the decimation goes by geometry alone: quietly for a mesh
-/// without point scalars, with a warning when an array selected by name is not there.
+/// without point scalars or an empty name (ParaView's choice when the input has no point
+/// array), with a warning when an array selected by name is not there.
 bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int association,
                 vtkIdType numPoints, int threads, InputMesh& mesh)
 {
@@ -118,7 +119,8 @@ bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int assoc
   if (!array)
   {
     vtkInformation* selection = self->GetInputArrayInformation(0);
-    if (selection && selection->Has(vtkDataObject::FIELD_NAME()))
+    if (selection && selection->Has(vtkDataObject::FIELD_NAME()) &&
+        *selection->Get(vtkDataObject::FIELD_NAME()))
     {
       vtkWarningWithObjectMacro(self, << "No colour array named '"
                                       << selection->Get(vtkDataObject::FIELD_NAME())

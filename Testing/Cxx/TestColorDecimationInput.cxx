@@ -378,6 +378,15 @@ CD_TEST_CASE(ColorArrayByName)
   CD_CHECK(missing.Warnings == 1 && missing.Errors == 0);
   CD_CHECK(missing.WarningText().find("No colour array named 'Nope'") != std::string::npos);
   CD_CHECK(std::abs(missing.ActualReduction - 0.9) <= 0.01);
+
+  // An empty name (ParaView's Colors when the input has no point array) selects none: geometry
+  // alone, quietly, as with no selection.
+  const RunResult unnamed =
+    Decimate(mesh, 0.9,
+             [](vtkColorHalfEdgeDecimation* f)
+             { f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, ""); });
+  CD_CHECK(unnamed.Warnings == 0 && unnamed.Errors == 0);
+  CD_CHECK(Result(unnamed) == Result(missing));
 }
 
 //------------------------------------------------------------------------------
