@@ -15,6 +15,8 @@
 
 #include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
@@ -24,10 +26,15 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <iterator>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -104,7 +111,7 @@ PartsKey RecordKey(vtkDataObject* record)
 }
 } // namespace
 
-/// The mesh and the record of the last execution, kept while neither changes.
+/// A mesh and its record as last read, kept while neither changes.
 struct vtkColorHalfEdgeLevelOfDetail::Cache
 {
   colordecimation::adapter::InputMesh Mesh;
@@ -113,6 +120,15 @@ struct vtkColorHalfEdgeLevelOfDetail::Cache
   PartsKey MeshSource;        ///< what Mesh was read from
   PartsKey RecordSource;      ///< what Record was read from
   bool Valid = false;
+};
+
+/// One cache for each mesh of the input: a single mesh at 0, a composite input's leaves by
+/// their flat index; and the sums over them that the statistics report.
+struct vtkColorHalfEdgeLevelOfDetail::Caches
+{
+  std::map<unsigned int, Cache> ByBlock;
+  int64_t InputTriangles = 0;
+  int64_t OutputTriangles = 0;
 };
 
 //------------------------------------------------------------------------------
@@ -126,7 +142,7 @@ vtkColorHalfEdgeLevelOfDetail::vtkColorHalfEdgeLevelOfDetail()
   , ActualError(0.0)
   , NumberOfCollapses(0)
   , NumberOfRecordedCollapses(0)
-  , Cached(new Cache)
+  , Cached(new Caches)
 {
   this->SetNumberOfInputPorts(2);
   this->SetOriginalPointIdsArrayName("vtkOriginalPointIds");
@@ -162,19 +178,59 @@ void vtkColorHalfEdgeLevelOfDetail::SetRecordData(vtkDataObject* record)
 //------------------------------------------------------------------------------
 int vtkColorHalfEdgeLevelOfDetail::FillInputPortInformation(int port, vtkInformation* info)
 {
+  // A composite input is read here, leaf by leaf, each with the record at its place in a
+  // composite record of the same structure (vtkColorHalfEdgeDecimation's, run on it).
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 1 ? "vtkTable" : "vtkPolyData");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   if (port == 1)
   {
-    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkTable");
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1); // so that its absence gets our own error
-    return 1;
   }
-  return this->Superclass::FillInputPortInformation(port, info);
+  return 1;
 }
 
 //------------------------------------------------------------------------------
-bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObject* record)
+int vtkColorHalfEdgeLevelOfDetail::FillOutputPortInformation(int, vtkInformation* info)
 {
-  Cache& cache = *this->Cached;
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkDataObject"); // RequestDataObject says which
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkColorHalfEdgeLevelOfDetail::ProcessRequest(vtkInformation* request,
+                                                          vtkInformationVector** inputVector,
+                                                          vtkInformationVector* outputVector)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  {
+    return this->RequestDataObject(request, inputVector, outputVector);
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+int vtkColorHalfEdgeLevelOfDetail::RequestDataObject(vtkInformation*,
+                                                     vtkInformationVector** inputVector,
+                                                     vtkInformationVector* outputVector)
+{
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkDataObject* output = vtkDataObject::GetData(outInfo);
+  vtkDataObject* kind = vtkCompositeDataSet::SafeDownCast(input);
+  if (kind ? !output || std::strcmp(output->GetClassName(), kind->GetClassName()) != 0
+           : !vtkPolyData::SafeDownCast(output))
+  {
+    vtkSmartPointer<vtkDataObject> made;
+    made.TakeReference(kind ? kind->NewInstance() : vtkPolyData::New());
+    outInfo->Set(vtkDataObject::DATA_OBJECT(), made);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObject* record,
+                                                Cache& cache)
+{
   PartsKey meshSource = GeometryKey(input);
   PartsKey recordSource = RecordKey(record);
   if (cache.Valid && cache.MeshSource == meshSource && cache.RecordSource == recordSource)
@@ -213,23 +269,122 @@ bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObjec
 }
 
 //------------------------------------------------------------------------------
+bool vtkColorHalfEdgeLevelOfDetail::ExtractLevel(vtkPolyData* input, vtkDataObject* record,
+                                                 Cache& cache, vtkPolyData* output)
+{
+  // 1. The mesh and the record, checked against each other (kept while neither changes).
+  const bool cached = this->UpdateCache(input, record, cache);
+  this->SetProgressText(nullptr);
+  if (!cached)
+  {
+    return false;
+  }
+
+  // 2. The level: the prefix a run to the target stops at, and each point's survivor in it.
+  const colordecimation::CollapseRecord& collapses = cache.Record;
+  const int64_t target = colordecimation::adapter::TargetTriangles(
+    this->TargetNumberOfTriangles, this->TargetReduction, collapses.InputTriangles);
+  const size_t count = colordecimation::LevelLength(collapses, target, this->MaximumError);
+  colordecimation::ResolveSurvivors(collapses, count, cache.Where);
+  this->UpdateProgress(0.5);
+
+  // 3. The output, as the decimation writes it; the statistics summed over the meshes.
+  const vtkIdType triangles = colordecimation::adapter::WriteLevel(
+    this, input, cache.Mesh, cache.Where,
+    this->GenerateOriginalPointIds ? this->OriginalPointIdsArrayName : nullptr,
+    std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads()), output);
+  this->Cached->InputTriangles += collapses.InputTriangles;
+  this->Cached->OutputTriangles += triangles;
+  this->NumberOfCollapses += static_cast<vtkIdType>(count);
+  this->NumberOfRecordedCollapses += static_cast<vtkIdType>(collapses.Size());
+  if (count > 0)
+  {
+    this->ActualError =
+      std::max(this->ActualError,
+               *std::max_element(collapses.Error.begin(), collapses.Error.begin() + count));
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkColorHalfEdgeLevelOfDetail::ExtractBlocks(vtkCompositeDataSet* input,
+                                                  vtkDataObject* records,
+                                                  vtkCompositeDataSet* output)
+{
+  output->CopyStructure(input);
+  output->GetFieldData()->PassData(input->GetFieldData());
+  // The record of each leaf: at the same flat index of a composite record; a single table
+  // serves an input of one leaf.
+  std::map<unsigned int, vtkDataObject*> recordAt;
+  auto* composite = vtkCompositeDataSet::SafeDownCast(records);
+  vtkSmartPointer<vtkCompositeDataIterator> it;
+  if (composite)
+  {
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      recordAt[it->GetCurrentFlatIndex()] = it->GetCurrentDataObject();
+    }
+  }
+  it.TakeReference(input->NewIterator());
+  size_t leaves = 0;
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    ++leaves;
+  }
+  std::map<unsigned int, Cache> kept;
+  bool complete = true;
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    const unsigned int index = it->GetCurrentFlatIndex();
+    auto* mesh = vtkPolyData::SafeDownCast(it->GetCurrentDataObject());
+    vtkNew<vtkPolyData> level;
+    output->SetDataSet(it, level);
+    if (!mesh)
+    {
+      vtkWarningMacro(<< "The block at flat index " << index << " is a "
+                      << it->GetCurrentDataObject()->GetClassName()
+                      << ", not a vtkPolyData: its level is empty.");
+      continue;
+    }
+    auto found = recordAt.find(index);
+    vtkDataObject* record = composite ? (found != recordAt.end() ? found->second : nullptr)
+                                      : (leaves == 1 ? records : nullptr);
+    if (!record)
+    {
+      vtkErrorMacro(<< "No collapse record for the mesh at flat index " << index
+                    << " (the record's blocks must be those of the input); its level is empty.");
+      complete = false;
+      continue;
+    }
+    Cache& cache = kept[index];
+    auto previous = this->Cached->ByBlock.find(index);
+    if (previous != this->Cached->ByBlock.end())
+    {
+      cache = std::move(previous->second);
+    }
+    complete = this->ExtractLevel(mesh, record, cache, level) && complete;
+  }
+  this->Cached->ByBlock = std::move(kept); // meshes no longer in the input are let go
+  return complete;
+}
+
+//------------------------------------------------------------------------------
 int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(request),
                                                vtkInformationVector** inputVector,
                                                vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkDataObject* record = vtkDataObject::GetData(inputVector[1], 0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
   this->ActualReduction = this->ActualError = 0.0;
   this->NumberOfCollapses = this->NumberOfRecordedCollapses = 0;
+  this->Cached->InputTriangles = this->Cached->OutputTriangles = 0;
   if (!input || !output)
   {
     return 0;
   }
   output->GetFieldData()->PassData(input->GetFieldData());
-
-  // 1. The mesh and the record, checked against each other (kept from the last execution
-  // while neither changed).
   if (!std::isfinite(this->MaximumError) || std::isnan(this->TargetReduction))
   {
     vtkErrorMacro(<< (std::isnan(this->TargetReduction) ? "TargetReduction is NaN"
@@ -242,34 +397,28 @@ int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(reques
     vtkErrorMacro(<< "No collapse record on input port 1 (SetRecordConnection); output is empty.");
     return 1;
   }
-  const bool cached = this->UpdateCache(input, record);
-  this->SetProgressText(nullptr);
-  if (!cached)
+  auto* composite = vtkCompositeDataSet::SafeDownCast(input);
+  auto* compositeOutput = vtkCompositeDataSet::SafeDownCast(output);
+  auto* mesh = vtkPolyData::SafeDownCast(input);
+  auto* level = vtkPolyData::SafeDownCast(output);
+  if (composite && compositeOutput)
   {
-    return 1;
+    this->ExtractBlocks(composite, record, compositeOutput);
   }
-  Cache& cache = *this->Cached;
-
-  // 2. The level: the prefix a run to the target stops at, and each point's survivor in it.
-  const colordecimation::CollapseRecord& collapses = cache.Record;
-  const int64_t target = colordecimation::adapter::TargetTriangles(
-    this->TargetNumberOfTriangles, this->TargetReduction, collapses.InputTriangles);
-  const size_t count = colordecimation::LevelLength(collapses, target, this->MaximumError);
-  colordecimation::ResolveSurvivors(collapses, count, cache.Where);
-  this->UpdateProgress(0.5);
-
-  // 3. The output, as the decimation writes it.
-  const vtkIdType triangles = colordecimation::adapter::WriteLevel(
-    this, input, cache.Mesh, cache.Where,
-    this->GenerateOriginalPointIds ? this->OriginalPointIdsArrayName : nullptr,
-    std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads()), output);
-  this->NumberOfCollapses = static_cast<vtkIdType>(count);
-  this->NumberOfRecordedCollapses = static_cast<vtkIdType>(collapses.Size());
-  this->ActualReduction = collapses.InputTriangles > 0
-    ? 1.0 - static_cast<double>(triangles) / static_cast<double>(collapses.InputTriangles)
+  else if (mesh && level)
+  {
+    // A single mesh has the cache at 0, the flat index of a composite's root, never a leaf's.
+    std::map<unsigned int, Cache>& blocks = this->Cached->ByBlock;
+    for (auto it = blocks.begin(); it != blocks.end();)
+    {
+      it = it->first == 0 ? std::next(it) : blocks.erase(it);
+    }
+    this->ExtractLevel(mesh, record, blocks[0], level);
+  }
+  const Caches& sums = *this->Cached;
+  this->ActualReduction = sums.InputTriangles > 0
+    ? 1.0 - static_cast<double>(sums.OutputTriangles) / static_cast<double>(sums.InputTriangles)
     : 0.0;
-  this->ActualError =
-    count > 0 ? *std::max_element(collapses.Error.begin(), collapses.Error.begin() + count) : 0.0;
   return 1;
 }
 

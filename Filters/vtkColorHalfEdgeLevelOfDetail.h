@@ -36,6 +36,12 @@
  * and triangles) and for consistency (ids in range, no point removed twice, triangle counts
  * decreasing, errors finite and >= 0; ids and counts of an integer type or double, not float);
  * a record that fails is an error and the output is empty. Its costs are not read.
+ * A composite input (a vtkMultiBlockDataSet or vtkPartitionedDataSetCollection of meshes, on
+ * which vtkColorHalfEdgeDecimation makes a record for each mesh, in a composite of the same
+ * structure) gives a composite output of the same structure: each mesh's level from the record
+ * at its place (a single vtkTable serves an input of one mesh); a block that is not a
+ * vtkPolyData or has no record gets an empty level (a warning, an error). The statistics
+ * (ActualReduction, ActualError, the collapse counts) are then over all the meshes.
  * Distributed data works piece by piece: each piece is extracted with the record made of that
  * piece (this filter asks for the ghost level the decimation asks for, so the pieces are the
  * same). The mesh and the record are read once and kept while neither changes (the input's
@@ -56,6 +62,8 @@
 #include "vtkPolyDataAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
+
+class vtkCompositeDataSet;
 
 class VTKCOLORDECIMATION_EXPORT vtkColorHalfEdgeLevelOfDetail : public vtkPolyDataAlgorithm
 {
@@ -78,6 +86,10 @@ public:
    * its columns, so a column edited (and marked modified) or replaced updates the level.
    */
   vtkMTimeType GetMTime() override;
+
+  /// Handles REQUEST_DATA_OBJECT (RequestDataObject), then as vtkPolyDataAlgorithm.
+  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
+                             vtkInformationVector* outputVector) override;
 
   ///@{
   /**
@@ -119,13 +131,14 @@ public:
   vtkGetStringMacro(OriginalPointIdsArrayName);
   ///@}
 
-  /// The reduction of the last level extracted: 1 - its triangles / the input's.
+  /// The reduction of the last level extracted: 1 - its triangles / the input's (all meshes).
   vtkGetMacro(ActualReduction, double);
   /// The largest geometric error of the last level's collapses (input units).
   vtkGetMacro(ActualError, double);
-  /// The number of collapses of the last level (the prefix of the record it takes).
+  /// The number of collapses of the last level (the prefix of the record it takes; summed
+  /// over the meshes of a composite input).
   vtkGetMacro(NumberOfCollapses, vtkIdType);
-  /// The number of collapses in the record (the finest-to-coarsest range of levels).
+  /// The number of collapses in the record (the finest-to-coarsest range of levels; summed).
   vtkGetMacro(NumberOfRecordedCollapses, vtkIdType);
 
 protected:
@@ -133,14 +146,23 @@ protected:
   ~vtkColorHalfEdgeLevelOfDetail() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  /// A composite input (its leaves meshes) gives a composite output of the same structure.
+  virtual int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   /// Distributed data: one level of ghost cells, as vtkColorHalfEdgeDecimation asks for, so
   /// that each piece is the piece its record was made of.
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  /// Read the mesh and the record, unless they are those of the last execution; false (with
-  /// an error) if they cannot be used.
-  bool UpdateCache(vtkPolyData* input, vtkDataObject* record);
+  struct Cache;
+  /// Read the mesh and the record into `cache`, unless they are those it was read from; false
+  /// (with an error) if they cannot be used.
+  bool UpdateCache(vtkPolyData* input, vtkDataObject* record, Cache& cache);
+  /// The level of one mesh from its record, into `output`; false (with an error) if none.
+  bool ExtractLevel(vtkPolyData* input, vtkDataObject* record, Cache& cache, vtkPolyData* output);
+  /// Each leaf mesh of a composite input from the record at the same place in `records`.
+  bool ExtractBlocks(vtkCompositeDataSet* input, vtkDataObject* records,
+                     vtkCompositeDataSet* output);
 
   double TargetReduction;
   vtkIdType TargetNumberOfTriangles;
@@ -156,8 +178,8 @@ private:
   vtkColorHalfEdgeLevelOfDetail(const vtkColorHalfEdgeLevelOfDetail&) = delete;
   void operator=(const vtkColorHalfEdgeLevelOfDetail&) = delete;
 
-  struct Cache;
-  std::unique_ptr<Cache> Cached;
+  struct Caches;
+  std::unique_ptr<Caches> Cached;
 };
 
 #endif

@@ -12,15 +12,21 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
+#include "vtkPartitionedDataSet.h"
+#include "vtkPartitionedDataSetCollection.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtkXMLTableReader.h"
 #include "vtkXMLTableWriter.h"
 
@@ -427,6 +433,120 @@ CD_TEST_CASE(LevelCacheFollowsInputs)
   lod->SetInputData(empty);
   lod->Update();
   CD_CHECK(lod->GetOutput()->GetNumberOfCells() == 0);
+}
+
+/// The leaves of a composite dataset by flat index.
+std::map<unsigned int, vtkDataObject*> Leaves(vtkDataObject* data)
+{
+  std::map<unsigned int, vtkDataObject*> leaves;
+  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
+  vtkSmartPointer<vtkCompositeDataIterator> it;
+  it.TakeReference(composite ? composite->NewIterator() : nullptr);
+  for (it ? it->InitTraversal() : void(); it && !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    leaves[it->GetCurrentFlatIndex()] = it->GetCurrentDataObject();
+  }
+  return leaves;
+}
+
+// A composite input (multiblock, nested; partitioned collection): the decimation makes a record
+// for each mesh in a composite of the same structure, and the level filter gives a composite
+// output of that type whose each mesh is the level extracted from that mesh's own record; the
+// statistics are over all meshes; a mesh without a record, a block that is no mesh, are said.
+CD_TEST_CASE(CompositeInput)
+{
+  vtkNew<vtkMultiBlockDataSet> nested;
+  nested->SetBlock(0, DecoratedSphere(2));
+  vtkNew<vtkMultiBlockDataSet> group;
+  group->SetBlock(0, DecoratedSphere(3));
+  group->SetBlock(1, nested);
+  vtkNew<vtkColorHalfEdgeDecimation> run;
+  run->SetInputData(group);
+  run->SetCollapseScheduleToGreedy();
+  run->GenerateCollapseRecordOn();
+  run->SetTargetReduction(0.99);
+  run->Update();
+  const auto meshes = Leaves(group);
+  vtkSmartPointer<vtkDataObject> recorded;
+  recorded.TakeReference(run->GetOutputDataObject(1)->NewInstance());
+  recorded->DeepCopy(run->GetOutputDataObject(1)); // the run is made again below
+  const auto records = Leaves(recorded);
+  CD_CHECK(meshes.size() == 2 && records.size() == 2);
+
+  vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+  EventRecorder messages;
+  messages.Watch(lod);
+  lod->SetInputData(group);
+  lod->SetRecordConnection(run->GetOutputPort(1));
+  for (const double reduction : { 0.5, 0.9 }) // the second reuses each mesh's cache
+  {
+    lod->SetTargetReduction(reduction);
+    lod->Update();
+    CD_CHECK(vtkMultiBlockDataSet::SafeDownCast(lod->GetOutputDataObject(0)) != nullptr);
+    const auto levels = Leaves(lod->GetOutputDataObject(0));
+    CD_CHECK(levels.size() == meshes.size() && messages.Errors == 0 && messages.Warnings == 0);
+    vtkIdType in = 0, out = 0;
+    for (const auto& [index, mesh] : meshes)
+    {
+      auto* table = vtkTable::SafeDownCast(records.at(index));
+      auto* level = vtkPolyData::SafeDownCast(levels.count(index) ? levels.at(index) : nullptr);
+      auto alone = Extract(vtkPolyData::SafeDownCast(mesh), table,
+                           [reduction](auto* f) { f->SetTargetReduction(reduction); });
+      std::string why;
+      CD_CHECK_MSG(level && SameMesh(level, alone, why), "mesh " << index << ": " << why);
+      in += vtkPolyData::SafeDownCast(mesh)->GetNumberOfCells();
+      out += level ? level->GetNumberOfCells() : 0;
+    }
+    CD_CHECK(std::abs(lod->GetActualReduction() - (1.0 - double(out) / double(in))) < 1e-12);
+  }
+
+  // The same meshes as a partitioned dataset collection: that type out.
+  vtkNew<vtkPartitionedDataSetCollection> collection;
+  vtkNew<vtkPartitionedDataSet> partitions;
+  partitions->SetPartition(0, DecoratedSphere(2));
+  partitions->SetPartition(1, DecoratedSphere(1));
+  collection->SetPartitionedDataSet(0, partitions);
+  run->SetInputData(collection);
+  lod->SetInputData(collection);
+  lod->Update();
+  CD_CHECK(vtkPartitionedDataSetCollection::SafeDownCast(lod->GetOutputDataObject(0)));
+  CD_CHECK(Leaves(lod->GetOutputDataObject(0)).size() == 2 && messages.Errors == 0);
+
+  // A mesh added that has no record: an error for it, an empty level, the others as before; a
+  // block that is no mesh: a warning, an empty level.
+  vtkNew<vtkMultiBlockDataSet> more;
+  more->ShallowCopy(group);
+  more->SetBlock(2, DecoratedSphere(1));
+  more->SetBlock(3, vtkNew<vtkUnstructuredGrid>());
+  run->SetInputData(group);
+  lod->SetInputData(more);
+  lod->Update();
+  const auto levels = Leaves(lod->GetOutputDataObject(0));
+  CD_CHECK(messages.HasError("No collapse record for the mesh at flat index"));
+  CD_CHECK(messages.HasWarning("is a vtkUnstructuredGrid, not a vtkPolyData"));
+  CD_CHECK(levels.size() == 4);
+  vtkIdType kept = 0;
+  for (const auto& [index, level] : levels)
+  {
+    kept += vtkPolyData::SafeDownCast(level)->GetNumberOfCells();
+    CD_CHECK((meshes.count(index) > 0) ==
+             (vtkPolyData::SafeDownCast(level)->GetNumberOfCells() > 0));
+  }
+  CD_CHECK(kept > 0);
+
+  // A single record serves a composite of one mesh, not one of several.
+  vtkNew<vtkMultiBlockDataSet> one;
+  one->SetBlock(0, meshes.begin()->second);
+  messages.Clear();
+  lod->SetInputData(one);
+  lod->SetRecordData(records.begin()->second);
+  lod->Update();
+  CD_CHECK(messages.Errors == 0 && Leaves(lod->GetOutputDataObject(0)).size() == 1);
+  CD_CHECK(vtkPolyData::SafeDownCast(Leaves(lod->GetOutputDataObject(0)).begin()->second)
+             ->GetNumberOfCells() > 0);
+  lod->SetInputData(group);
+  lod->Update();
+  CD_CHECK(messages.HasError("No collapse record"));
 }
 
 // The mesh is read again only when its points or cells change: not when the input is a new

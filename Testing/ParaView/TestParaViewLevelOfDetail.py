@@ -8,7 +8,8 @@ Collapse Record to 0.99 feeds "Color Half-Edge Level Of Detail"; each level (the
 to 0.5, 0.9, 0.97) has the triangles and points of a direct Greedy decimation to that target.
 Under MPI each process decimates its piece and extracts the level of that piece from its own
 record, so the totals agree too. The time of each slider move (the level filter's update) is
-printed.
+printed. Then the same on two meshes grouped in a multiblock: a record for each, and each
+mesh's level from its own.
 """
 import argparse
 import sys
@@ -89,6 +90,32 @@ if servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions(
     check(ids_a is not None and ids_b is not None and
           all(ids_a.GetValue(i) == ids_b.GetValue(i) for i in range(a.GetNumberOfPoints())),
           "the level keeps other points than the direct run")
+
+# A multiblock input (two meshes grouped): the decimation makes a record for each, in a
+# multiblock of tables, and the level filter takes each mesh's level from its own record.
+small = Sphere(ThetaResolution=resolution // 2, PhiResolution=resolution // 2, Center=[3, 0, 0])
+group = GroupDatasets(Input=[colors, small])
+group_run = ColorHalfEdgeDecimation(Input=group)
+group_run.CollapseSchedule = "Greedy"
+group_run.GenerateCollapseRecord = 1
+group_run.TargetReduction = 0.99
+group_lod = ColorHalfEdgeLevelOfDetail(Input=group, Record=OutputPort(group_run, 1))
+group_direct = ColorHalfEdgeDecimation(Input=group)
+group_direct.CollapseSchedule = "Greedy"
+for reduction in (0.5, 0.9):
+    group_lod.TargetReduction = group_direct.TargetReduction = reduction
+    group_lod.UpdatePipeline()
+    group_direct.UpdatePipeline()
+    level = group_lod.GetDataInformation()
+    run = group_direct.GetDataInformation()
+    print("grouped level %.2f: %s of %d triangles (direct run: %d)"
+          % (reduction, level.GetDataSetTypeAsString(), level.GetNumberOfCells(),
+             run.GetNumberOfCells()))
+    check(level.GetDataSetTypeAsString() == run.GetDataSetTypeAsString(),
+          "the grouped level is a %s, not a %s" % (level.GetDataSetTypeAsString(),
+                                                   run.GetDataSetTypeAsString()))
+    check(level.GetNumberOfCells() == run.GetNumberOfCells() and level.GetNumberOfCells() > 0,
+          "grouped level %.2f differs from the direct run" % reduction)
 
 if failures:
     print("%d check(s) failed" % len(failures))
