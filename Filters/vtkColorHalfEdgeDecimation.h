@@ -45,11 +45,13 @@
  * active point scalars): unsigned char RGB/RGBA (/255), float or double RGB (used as they are
  * in [0,1], otherwise scaled by the array's range), other numeric types (scaled by their
  * range), or a one-component grey value. Alpha is carried through but not measured. Without
- * a colour array the filter decimates by geometry alone and says so with a warning.
+ * a colour array the filter decimates by geometry alone (a warning only when an array
+ * selected by name is not there).
  *
  * Collapses keep the surface a 2-manifold where it was one (link condition), never flip a
  * triangle normal by more than MaximumNormalAngle, never create a degenerate triangle, and
- * keep the Euler characteristic of closed manifold input. Triangles wound both ways are
+ * keep the Euler characteristic of closed manifold input (unless PruneComponents removes a
+ * whole piece). Triangles wound both ways are
  * decimated as their piece wound one way (see ConsistentOrientation). Vertices on non-manifold
  * edges, bow-tie vertices and the vertices of non-orientable places are kept, together with
  * their triangles. Attribute seams (open boundaries whose points have, bit for bit, the
@@ -294,7 +296,8 @@ public:
    * Set/Get the largest geometric error a collapse may have, as a distance in the input's
    * units: the run stops before the first collapse whose error exceeds it (with the Batched
    * schedule: the pass that meets such a collapse is finished without it, and without any
-   * other collapse beyond the bound, then the run stops). 0 or negative (default): no bound.
+   * other collapse beyond the bound, then the run stops). 0 or negative (default): no bound;
+   * NaN or infinite: an error (empty output).
    *
    * The geometric error of a collapse of v0 into v1 is the area-weighted root-mean-square
    * distance from v1's position (its new one under OptimalPlacement) to the planes of the

@@ -113,7 +113,7 @@ public:
   /**
    * Set/Get the largest geometric error (vtkColorHalfEdgeDecimation::MaximumError, in the
    * input's units) of the level's collapses: the level ends before the first collapse beyond
-   * it. 0 or negative (default): no bound.
+   * it. 0 or negative (default): no bound; NaN or infinite: an error (empty output).
    */
   vtkSetMacro(MaximumError, double);
   vtkGetMacro(MaximumError, double);

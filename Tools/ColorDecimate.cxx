@@ -1132,9 +1132,10 @@ int main(int argc, char* argv[])
   // VTK's messages are caught and reported in one line (MessageCatcher); its logger would
   // print them to stderr a second time, with timestamps.
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  CLI::App app("Decimates a triangle mesh with vertex colours by half-edge collapses ordered by "
-               "the\ncolour-aware cost of Kim, Choi and Lee (vtkColorHalfEdgeDecimation). "
-               "Surviving\nvertices keep their position and colour exactly.",
+  CLI::App app("Decimates a triangle mesh with vertex colours by half-edge collapses\n"
+               "(vtkColorHalfEdgeDecimation), ordered by a colour-aware cost (--metric; --paper\n"
+               "for Kim, Choi and Lee's). Surviving vertices keep their position and point data\n"
+               "exactly (unless --placement moves them).",
                Program);
   SetUpCommandLine(app,
                    "Usage: color-decimate INPUT OUTPUT [options]\n"

@@ -59,6 +59,7 @@ check(menu is not None and menu.GetAttribute("category"), "no ShowInMenu categor
 names = ["SelectInputScalars", "TargetReduction", "ErrorMetric", "PreserveBoundary",
          "MaximumNormalAngle", "GeometryWeight", "GenerateOriginalPointIds",
          "OriginalPointIdsArrayName", "TargetNumberOfTriangles", "MaximumError", "ActualError",
+         "ActualReduction", "NumberOfCollapses", "StateMemory", "NumberOfThreadsUsed",
          "SelectLockArray"]
 for name in names + ["Input"]:
     prop = sm.GetProperty(name)
@@ -219,6 +220,14 @@ print("lock: %d output triangles, %d locked points lost, ActualError %g"
 check(not lost, "%d locked points were removed" % len(lost))
 check(3999 <= lock_out.GetNumberOfPolys() <= 4000, "TargetNumberOfTriangles 4000 not met")
 check(locked.GetProperty("ActualError").GetElement(0) > 0, "ActualError not reported")
+# The run's other figures, as the filter reports them.
+reduction = locked.GetProperty("ActualReduction").GetElement(0)
+expected = 1.0 - lock_out.GetNumberOfPolys() / float(lock_in.GetNumberOfPolys())
+check(abs(reduction - expected) < 1e-9, "ActualReduction %g, not %g" % (reduction, expected))
+check(locked.GetProperty("NumberOfCollapses").GetElement(0) > 0, "NumberOfCollapses not reported")
+check(locked.GetProperty("StateMemory").GetElement(0) > 0, "StateMemory not reported")
+check(locked.GetProperty("NumberOfThreadsUsed").GetElement(0) >= 1,
+      "NumberOfThreadsUsed not reported")
 Delete(locked)
 Delete(with_lock)
 
