@@ -31,6 +31,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <future>
 #include <iostream>
@@ -66,6 +67,9 @@ struct Options
   std::vector<double> Levels; ///< --lod: the reductions, in the order given
   std::string SaveRecord;
   std::string FromRecord;
+  /// Set once the input is read: its colour array's mapping to bytes, for every PLY file
+  /// written (each file's own range would give the same point other bytes in each).
+  ColorMapping PlyColors;
 };
 
 const char* MetricName(int metric)
@@ -466,6 +470,63 @@ std::string Footer()
 }
 
 /// INPUT and OUTPUT after the parse; "" when they are right, otherwise what is wrong.
+/// Whether two paths name the same file: the same file on disk (through links) or, for a file
+/// not there yet, the same canonical path.
+bool SameFile(const std::string& a, const std::string& b)
+{
+  namespace fs = std::filesystem;
+  std::error_code ea, eb;
+  if (fs::exists(a, ea) && fs::exists(b, eb))
+  {
+    return fs::equivalent(a, b, ea) && !ea;
+  }
+  const fs::path ca = fs::weakly_canonical(a, ea);
+  const fs::path cb = fs::weakly_canonical(b, eb);
+  return ea || eb ? a == b : ca == cb;
+}
+
+/// No file the run writes is a file it reads, nor another file it writes.
+std::string CheckCollisions(const Options& options)
+{
+  using Named = std::pair<std::string, std::string>; // what it is, its path
+  std::vector<Named> read, written;
+  if (!IsDemoSpec(options.Input))
+  {
+    read.emplace_back("INPUT", options.Input);
+  }
+  read.emplace_back("--from-record file", options.FromRecord);
+  for (size_t i = 0; i < options.Levels.size(); ++i)
+  {
+    written.emplace_back("level " + std::to_string(i + 1) + " file",
+                         LevelPath(options.Output, int(i) + 1));
+  }
+  written.emplace_back("OUTPUT", options.Levels.empty() ? options.Output : std::string());
+  written.emplace_back("--stats file", options.Stats);
+  written.emplace_back("--snapshot file", options.Snapshot);
+  written.emplace_back("--write-demo file", options.WriteInput);
+  written.emplace_back("--save-record file", options.SaveRecord);
+  for (size_t i = 0; i < written.size(); ++i)
+  {
+    const auto& [what, path] = written[i];
+    for (const auto& [source, from] : read)
+    {
+      if (!path.empty() && !from.empty() && SameFile(path, from))
+      {
+        return "the " + what + " '" + path + "' is the " + source + ": it would be overwritten";
+      }
+    }
+    for (size_t j = i + 1; j < written.size(); ++j)
+    {
+      if (!path.empty() && !written[j].second.empty() && SameFile(path, written[j].second))
+      {
+        return "the " + what + " and the " + written[j].first + " are the same file ('" + path +
+          "')";
+      }
+    }
+  }
+  return "";
+}
+
 std::string CheckFiles(Options& options)
 {
   std::vector<std::string> positional;
@@ -503,9 +564,9 @@ std::string CheckFiles(Options& options)
         "' for '" + *path + "' (expected .ply, .vtp or .vtk)";
     }
   }
-  if (!options.Stats.empty() && options.Stats == options.Output)
+  if (!options.Snapshot.empty() && Extension(options.Snapshot) != ".png")
   {
-    return "--stats file and OUTPUT are the same file";
+    return "the --snapshot file '" + options.Snapshot + "' must be a .png file";
   }
   for (const std::string* record : { &options.SaveRecord, &options.FromRecord })
   {
@@ -526,7 +587,17 @@ std::string CheckFiles(Options& options)
   {
     return "missing OUTPUT (the levels' files are named after it)";
   }
-  return "";
+  for (const auto& [given, name] : { std::make_pair(&options.Stats, "--stats"),
+                                     std::make_pair(&options.SaveRecord, "--save-record"),
+                                     std::make_pair(&options.Snapshot, "--snapshot") })
+  {
+    if (!given->empty() && options.Output.empty())
+    {
+      return std::string("missing OUTPUT: ") + name +
+        " reports a decimation, and --write-demo alone makes none";
+    }
+  }
+  return CheckCollisions(options);
 }
 
 std::string Mib(long long bytes)
@@ -665,6 +736,12 @@ int ReadInput(const Options& options, Input& input)
   {
     std::cout << "input   " << input.Name << ": " << description << "\n";
   }
+  if (!FindColorArray(input.Mesh, options.Array) && FindFaceColorArray(input.Mesh, options.Array))
+  {
+    std::cerr << Program
+              << ": warning: the colours are per face (cell data), which the filter does "
+                 "not measure: decimating by geometry alone; each kept face keeps its colour\n";
+  }
   return Continue;
 }
 
@@ -672,7 +749,7 @@ int ReadInput(const Options& options, Input& input)
 int WriteInputCopy(const Options& options, vtkPolyData* input)
 {
   std::string error;
-  if (!WriteMesh(input, options.WriteInput, options.Array, error))
+  if (!WriteMesh(input, options.WriteInput, options.Array, error, &options.PlyColors))
   {
     return Fail(error);
   }
@@ -747,7 +824,7 @@ int WriteOutput(vtkColorHalfEdgeDecimation* filter, const Options& options, Figu
 {
   const auto start = std::chrono::steady_clock::now();
   std::string error;
-  if (!WriteMesh(filter->GetOutput(), options.Output, options.Array, error))
+  if (!WriteMesh(filter->GetOutput(), options.Output, options.Array, error, &options.PlyColors))
   {
     return Fail(error);
   }
@@ -924,11 +1001,39 @@ int PrepareRecordRun(vtkColorHalfEdgeDecimation* filter, const Options& options)
   return Continue;
 }
 
+/// Levels come from the record, which holds neither the pieces PruneComponents removes after
+/// the collapses nor ConsistentOrientation's winding: those options would be ignored.
+int CheckLevelOptions(vtkColorHalfEdgeDecimation* filter, const Options& options)
+{
+  if (options.Levels.empty() && options.FromRecord.empty())
+  {
+    return Continue;
+  }
+  for (const auto& [on, name] :
+       { std::make_pair(filter->GetPruneComponents() != 0, "--prune-components"),
+         std::make_pair(filter->GetConsistentOrientation() != 0, "--consistent-orientation") })
+  {
+    if (on)
+    {
+      return Fail(std::string("levels from a collapse record (--lod, --from-record) hold only "
+                              "its collapses: not with ") +
+                    name,
+                  2);
+    }
+  }
+  return Continue;
+}
+
 /// The decimation (OUTPUT written unless --lod), or with --from-record the record read.
 int DecimateOrLoad(vtkColorHalfEdgeDecimation* filter, const Options& options,
                    vtkSmartPointer<vtkTable>& record, Figures& figures)
 {
   std::string error;
+  const int checked = CheckLevelOptions(filter, options);
+  if (checked != Continue)
+  {
+    return checked;
+  }
   if (!options.FromRecord.empty())
   {
     record = ReadRecord(options.FromRecord, error);
@@ -995,8 +1100,9 @@ void StartWrite(LevelWrite& write, vtkSmartPointer<vtkPolyData> mesh, const Opti
 {
   LevelFigures* level = &write.Level;
   const std::string array = options.Array;
+  const ColorMapping colors = options.PlyColors;
   write.Error = std::async(std::launch::async,
-                           [level, mesh, array, before]()
+                           [level, mesh, array, colors, before]()
                            {
                              if (before.valid())
                              {
@@ -1004,7 +1110,7 @@ void StartWrite(LevelWrite& write, vtkSmartPointer<vtkPolyData> mesh, const Opti
                              }
                              const auto start = std::chrono::steady_clock::now();
                              std::string error;
-                             WriteMesh(mesh, level->Path, array, error);
+                             WriteMesh(mesh, level->Path, array, error, &colors);
                              level->WriteSeconds = Seconds(start, std::chrono::steady_clock::now());
                              return error;
                            });
@@ -1085,10 +1191,13 @@ int WriteLevels(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkP
 }
 
 /// Everything after the command line, step by step; the exit status.
-int Run(const Options& options)
+int Run(const Options& given)
 {
+  Options options = given;
   Input input;
   int status = ReadInput(options, input);
+  options.PlyColors =
+    ColorMapping::Of(input.Mesh ? FindColorArray(input.Mesh, options.Array) : nullptr);
   if (status == Continue && !options.WriteInput.empty())
   {
     status = WriteInputCopy(options, input.Mesh);

@@ -27,12 +27,18 @@ unsigned char Byte(double unit)
   return static_cast<unsigned char>(std::lround(255.0 * Clamp01(unit)));
 }
 
-/// Alpha is carried, not measured: unsigned char as it is, other types in [0,1].
+/// Alpha (the last of 2 or 4 components) is carried, not measured: unsigned char as it is,
+/// other integer types from 0 to their largest value, floating-point types in [0,1].
 unsigned char AlphaByte(vtkDataArray* colors, vtkIdType i)
 {
-  const double alpha = colors->GetComponent(i, 3);
-  return colors->GetDataType() == VTK_UNSIGNED_CHAR ? static_cast<unsigned char>(alpha)
-                                                    : Byte(alpha);
+  const double alpha = colors->GetComponent(i, colors->GetNumberOfComponents() - 1);
+  const int type = colors->GetDataType();
+  if (type == VTK_UNSIGNED_CHAR)
+  {
+    return static_cast<unsigned char>(alpha);
+  }
+  const bool real = type == VTK_FLOAT || type == VTK_DOUBLE;
+  return Byte(real ? alpha : alpha / colors->GetDataTypeMax());
 }
 } // namespace
 
@@ -70,7 +76,8 @@ void ColorMapping::ToRGB(vtkDataArray* colors, vtkIdType i, double rgb[3]) const
 vtkSmartPointer<vtkUnsignedCharArray> ToUnsignedChar(vtkDataArray* colors,
                                                      const ColorMapping& mapping, bool keepAlpha)
 {
-  const int components = keepAlpha && colors->GetNumberOfComponents() == 4 ? 4 : 3;
+  const int given = colors->GetNumberOfComponents();
+  const int components = keepAlpha && (given == 4 || given == 2) ? 4 : 3; // RGBA, grey + alpha
   auto bytes = vtkSmartPointer<vtkUnsignedCharArray>::New();
   bytes->SetName(components == 4 ? "RGBA" : "RGB");
   bytes->SetNumberOfComponents(components);

@@ -41,8 +41,9 @@ struct ColorMapping
 
 /**
  * `colors` mapped by `mapping` to unsigned char RGB (each value times 255, rounded), or
- * RGBA when `keepAlpha` and `colors` has 4 components (alpha is not mapped: unsigned char as
- * it is, other types in [0,1] times 255). Named "RGB" or "RGBA".
+ * RGBA when `keepAlpha` and `colors` has 4 components or 2 (grey and alpha). Alpha is not
+ * mapped: unsigned char as it is, other integer types divided by their largest value,
+ * floating-point types in [0,1], then times 255. Named "RGB" or "RGBA".
  */
 vtkSmartPointer<vtkUnsignedCharArray> ToUnsignedChar(vtkDataArray* colors,
                                                      const ColorMapping& mapping, bool keepAlpha);

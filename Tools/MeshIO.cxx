@@ -2,9 +2,11 @@
 
 #include "ColorDecimationMeshes.h"
 #include "MeshColors.h"
+#include "PlyHeader.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkGenericDataObjectReader.h"
@@ -349,6 +351,37 @@ bool CheckReadable(const std::string& path, std::string& error)
   return true;
 }
 
+/// What VTK's PLY reader would get wrong, checked first: a truncated binary body (it reads past
+/// its end) and colours wider than a byte (it converts them to bytes: 16-bit values wrap, float
+/// values in [0, 1] become 0 or 1). False with `error`.
+bool CheckPly(const std::string& path, std::string& error)
+{
+  PlyHeader header;
+  std::string why;
+  if (!ReadPlyHeader(path, header, why) || !CheckPlyBody(path, header, why))
+  {
+    error = "'" + path + "' cannot be read: " + why;
+    return false;
+  }
+  for (const PlyElement& element : header.Elements)
+  {
+    for (const PlyProperty& p : element.Properties)
+    {
+      const bool color = p.Name == "red" || p.Name == "green" || p.Name == "blue" ||
+        p.Name == "alpha" || p.Name == "diffuse_red" || p.Name == "diffuse_green" ||
+        p.Name == "diffuse_blue";
+      if (color && p.CountSize == 0 && p.Size > 1)
+      {
+        error = "'" + path + "' has colours of type " + p.Type + " ('" + element.Name +
+          "' property " + p.Name + "), which VTK's PLY reader converts to bytes, losing them: " +
+          "convert the file to 8-bit colours (uchar) or to .vtp first";
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 // The mesh read by the reader of the file's extension, or null with error (the file is
 // not of its type) or problem (the reader gave no polygonal mesh).
 vtkSmartPointer<vtkPolyData> ReadByExtension(const std::string& path, const std::string& ext,
@@ -360,6 +393,10 @@ vtkSmartPointer<vtkPolyData> ReadByExtension(const std::string& path, const std:
     if (!vtkPLYReader::CanReadFile(path.c_str()))
     {
       error = "'" + path + "' is not a PLY file (it does not start with a PLY header)";
+      return nullptr;
+    }
+    if (!CheckPly(path, error))
+    {
       return nullptr;
     }
     vtkNew<vtkPLYReader> reader;
@@ -473,7 +510,7 @@ bool IsWritableExtension(const std::string& path)
 }
 
 bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& colorArrayName,
-               std::string& error)
+               std::string& error, const ColorMapping* mapping)
 {
   const std::string ext = Extension(path);
   MessageCatcher::Scope scope;
@@ -483,8 +520,10 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& co
     vtkNew<vtkPLYWriter> writer;
     writer->SetFileName(path.c_str());
     writer->SetFileTypeToBinary();
-    vtkSmartPointer<vtkPolyData> out = mesh;
-    vtkDataArray* colors = FindColorArray(mesh, colorArrayName);
+    // vtkPLYWriter writes polygons alone: strips go as their triangles.
+    vtkSmartPointer<vtkPolyData> out =
+      mesh->GetNumberOfStrips() > 0 ? Triangulated(mesh) : vtkSmartPointer<vtkPolyData>(mesh);
+    vtkDataArray* colors = FindColorArray(out, colorArrayName);
     if (colors && colors->GetNumberOfTuples() == mesh->GetNumberOfPoints())
     {
       const int comps = colors->GetNumberOfComponents();
@@ -492,15 +531,23 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& co
       if (colors->GetDataType() != VTK_UNSIGNED_CHAR || (comps != 3 && comps != 4) ||
           !colors->GetName() || !*colors->GetName())
       {
-        auto converted = ToUnsignedChar(colors, ColorMapping::Of(colors), true);
-        out = vtkSmartPointer<vtkPolyData>::New();
-        out->ShallowCopy(mesh);
-        out->GetPointData()->AddArray(converted);
+        auto converted =
+          ToUnsignedChar(colors, mapping ? *mapping : ColorMapping::Of(colors), true);
+        auto copy = vtkSmartPointer<vtkPolyData>::New();
+        copy->ShallowCopy(out);
+        copy->GetPointData()->AddArray(converted);
+        out = copy;
         written = converted;
       }
       writer->SetArrayName(written->GetName());
       writer->SetColorModeToDefault();
       writer->SetEnableAlpha(written->GetNumberOfComponents() == 4);
+    }
+    else if (vtkDataArray* faces = FindFaceColorArray(out, colorArrayName))
+    {
+      writer->SetArrayName(faces->GetName()); // vtkPLYWriter looks in the cell data too
+      writer->SetColorModeToDefault();
+      writer->SetEnableAlpha(faces->GetNumberOfComponents() == 4);
     }
     else
     {
@@ -603,6 +650,18 @@ std::string PointArrayNames(vtkPolyData* mesh)
     names += (names.empty() ? "" : ", ") + std::string(name);
   }
   return names.empty() ? std::string("none") : names;
+}
+
+vtkDataArray* FindFaceColorArray(vtkPolyData* mesh, const std::string& name)
+{
+  vtkDataArray* faces =
+    name.empty() ? mesh->GetCellData()->GetScalars() : mesh->GetCellData()->GetArray(name.c_str());
+  const int comps = faces ? faces->GetNumberOfComponents() : 0;
+  return faces && faces->GetDataType() == VTK_UNSIGNED_CHAR && (comps == 3 || comps == 4) &&
+      faces->GetName() && *faces->GetName() &&
+      faces->GetNumberOfTuples() == mesh->GetNumberOfCells()
+    ? faces
+    : nullptr;
 }
 
 vtkDataArray* FindColorArray(vtkPolyData* mesh, const std::string& name)

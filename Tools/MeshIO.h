@@ -15,6 +15,7 @@
 #ifndef MeshIO_h
 #define MeshIO_h
 
+#include "MeshColors.h"
 #include "vtkOutputWindow.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
@@ -65,10 +66,10 @@ bool IsWritableExtension(const std::string& path);
 /**
  * Writes `mesh` to .ply, .vtp or .vtk. For .ply, `colorArrayName` (a point array; may be
  * empty: the active scalars) is written as uchar colours; other colour arrays are converted
- * by the tools' colour mapping (MeshColors.h), alpha kept.
+ * by `mapping` (MeshColors.h; null: the mapping chosen on this mesh's array), alpha kept.
  */
 bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& colorArrayName,
-               std::string& error);
+               std::string& error, const ColorMapping* mapping = nullptr);
 
 /// Number of triangles of the mesh's polygons and strips, counted as after triangulation.
 long long CountTriangles(vtkPolyData* mesh);
@@ -85,6 +86,10 @@ std::string PointArrayNames(vtkPolyData* mesh);
 
 /// The colour array: the named point array, or the active point scalars when `name` is empty.
 vtkDataArray* FindColorArray(vtkPolyData* mesh, const std::string& name);
+
+/// Face colours a PLY file can hold: the named cell array (or the active cell scalars), when
+/// it is named unsigned char RGB or RGBA with a tuple a cell; null otherwise.
+vtkDataArray* FindFaceColorArray(vtkPolyData* mesh, const std::string& name);
 
 /**
  * A vtkOutputWindow that keeps VTK's error and warning messages instead of printing them.

@@ -1,14 +1,21 @@
 # Runs a command and checks its exit status and its output (a ctest helper).
 #
 #   cmake [-DEXPECT=success|failure] [-DEXIT_CODE=N] [-DREGEX=re] [-DFORBID=re]
-#         [-DMAKE_FILE=path -DMAKE_FILE_KIND=junk|points-only]
+#         [-DMAKE_FILE=path -DMAKE_FILE_KIND=junk|points-only|ascii-ply-no-face|ushort-ply|
+#                                           float-color-grid|strip|face-color-ply|
+#                                           truncated -DMAKE_FILE_FROM=path -DMAKE_FILE_SIZE=n]
 #         [-DCHECK_FILE=path -DCHECK_FILE_REGEX=re]
 #         -P RunCheck.cmake -- COMMAND [ARG ...]
 #
 # EXPECT: success (exit 0, the default) or failure (exit status not 0; EXIT_CODE pins it).
 # REGEX must match and FORBID must not match the command's stdout + stderr.
 # MAKE_FILE is written before the command runs: "junk" is text that is no mesh format,
-# "points-only" a legacy VTK polydata with three vertices and no triangle.
+# "points-only" a legacy VTK polydata with three vertices and no triangle, "ascii-ply-no-face"
+# an ASCII PLY whose header announces a face its body lacks, "ushort-ply" an ASCII PLY with
+# 16-bit colours, "float-color-grid" a legacy VTK flat 6 x 6 grid of triangles whose float RGB
+# colours lie in [1, 2] but for one inner point at 9 (so not in [0, 1]: mapped by their
+# range), "strip" a legacy VTK polydata of one triangle strip (8 points, 6 triangles),
+# "face-color-ply" an ASCII PLY of two triangles coloured per face, "truncated" the first MAKE_FILE_SIZE bytes of MAKE_FILE_FROM.
 # CHECK_FILE must exist after the command and match CHECK_FILE_REGEX.
 set(command)
 set(after_separator FALSE)
@@ -36,6 +43,63 @@ if (DEFINED MAKE_FILE)
     file(WRITE "${MAKE_FILE}"
       "# vtk DataFile Version 3.0\npoints and no triangle\nASCII\nDATASET POLYDATA\n"
       "POINTS 3 float\n0 0 0 1 0 0 0 1 0\nVERTICES 1 4\n3 0 1 2\n")
+  elseif (MAKE_FILE_KIND MATCHES "^(ascii-ply-no-face|ushort-ply)$")
+    set(type uchar)
+    set(face "3 0 1 2\n")
+    if (MAKE_FILE_KIND STREQUAL "ascii-ply-no-face")
+      set(face "")
+    else ()
+      set(type ushort)
+    endif ()
+    file(WRITE "${MAKE_FILE}"
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nproperty ${type} red\nproperty ${type} green\nproperty ${type} blue\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0 1000 2 3\n1 0 0 4 5 6\n0 1 0 7 8 9\n${face}")
+  elseif (MAKE_FILE_KIND STREQUAL "float-color-grid")
+    set(points "")
+    set(colors "")
+    set(cells "")
+    foreach (y RANGE 5)
+      foreach (x RANGE 5)
+        string(APPEND points "${x} ${y} 0\n")
+        if (x EQUAL 2 AND y EQUAL 3)
+          string(APPEND colors "9 9 9\n")
+        else ()
+          math(EXPR r "10 + 2 * ${x}")
+          math(EXPR g "10 + 2 * ${y}")
+          string(APPEND colors "1.${r} 1.${g} 1.5\n")
+        endif ()
+        if (x LESS 5 AND y LESS 5)
+          math(EXPR a "6 * ${y} + ${x}")
+          math(EXPR b "${a} + 1")
+          math(EXPR c "${a} + 7")
+          math(EXPR d "${a} + 6")
+          string(APPEND cells "3 ${a} ${b} ${c}\n3 ${a} ${c} ${d}\n")
+        endif ()
+      endforeach ()
+    endforeach ()
+    file(WRITE "${MAKE_FILE}"
+      "# vtk DataFile Version 3.0\nfloat colours\nASCII\nDATASET POLYDATA\n"
+      "POINTS 36 float\n${points}POLYGONS 50 200\n${cells}"
+      "POINT_DATA 36\nSCALARS RGB float 3\nLOOKUP_TABLE default\n${colors}")
+  elseif (MAKE_FILE_KIND STREQUAL "face-color-ply")
+    file(WRITE "${MAKE_FILE}"
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 2\nproperty list uchar int vertex_indices\n"
+      "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n"
+      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2 255 0 0\n3 0 2 3 0 255 0\n")
+  elseif (MAKE_FILE_KIND STREQUAL "strip")
+    file(WRITE "${MAKE_FILE}"
+      "# vtk DataFile Version 3.0\none strip\nASCII\nDATASET POLYDATA\n"
+      "POINTS 8 float\n0 0 0 0 1 0 1 0 0 1 1 0 2 0 0 2 1 0 3 0 0 3 1 0\n"
+      "TRIANGLE_STRIPS 1 9\n8 0 1 2 3 4 5 6 7\n")
+  elseif (MAKE_FILE_KIND STREQUAL "truncated")
+    file(COPY_FILE "${MAKE_FILE_FROM}" "${MAKE_FILE}")
+    execute_process(COMMAND truncate -s "${MAKE_FILE_SIZE}" "${MAKE_FILE}" RESULT_VARIABLE cut)
+    if (NOT cut EQUAL 0)
+      message(FATAL_ERROR "RunCheck.cmake: truncate failed")
+    endif ()
   else ()
     message(FATAL_ERROR "RunCheck.cmake: unknown MAKE_FILE_KIND '${MAKE_FILE_KIND}'")
   endif ()
