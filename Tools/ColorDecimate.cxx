@@ -953,6 +953,19 @@ Json Statistics(vtkColorHalfEdgeDecimation* filter, const Options& options, cons
   {
     stats["levels"] = LevelList(figures.Levels);
     stats["from_record"] = options.FromRecord;
+    if (!options.Levels.empty())
+    {
+      stats["output"] = nullptr; // the levels' files are written instead
+    }
+  }
+  if (!options.FromRecord.empty()) // no decimation ran: only the levels have figures
+  {
+    for (const char* key : { "threads", "reduction", "actual_error", "pruned_components",
+                             "output_points", "output_triangles", "collapses", "filter_seconds",
+                             "state_memory_bytes", "filter_peak_memory_bytes", "phases" })
+    {
+      stats[key] = nullptr;
+    }
   }
   return stats;
 }

@@ -1,9 +1,12 @@
 # Checks the "levels" list of color-decimate --lod --stats (a ctest helper).
 #
-#   cmake -DSTATS=file.json -DREDUCTIONS=r1;r2;... -DOUTPUTS=f1;f2;... -P CheckLevels.cmake
+#   cmake -DSTATS=file.json -DREDUCTIONS=r1;r2;... -DOUTPUTS=f1;f2;... [-DFROM_RECORD=ON]
+#         -P CheckLevels.cmake
 #
 # One level per reduction, in the order given, each naming its file (which must exist) and
-# reporting points, triangles, collapses and its times.
+# reporting points, triangles, collapses and its times. With --lod the top-level "output" is
+# null (no OUTPUT file is written); with --from-record (FROM_RECORD) so are the decimation's
+# figures, since none ran.
 if (NOT EXISTS "${STATS}")
   message(FATAL_ERROR "${STATS} was not written")
 endif ()
@@ -33,4 +36,17 @@ foreach (i RANGE ${last})
       message(FATAL_ERROR "level ${i}: key '${key}' missing")
     endif ()
   endforeach ()
+endforeach ()
+
+set(nulls)
+if (FROM_RECORD)
+  list(APPEND nulls reduction collapses output_triangles filter_seconds phases)
+else ()
+  list(APPEND nulls output)
+endif ()
+foreach (key IN LISTS nulls)
+  string(JSON type ERROR_VARIABLE problem TYPE "${json}" ${key})
+  if (problem OR NOT type STREQUAL "NULL")
+    message(FATAL_ERROR "top-level '${key}' is ${type} ${problem}, expected null")
+  endif ()
 endforeach ()
