@@ -33,4 +33,4 @@ sleep 1
 xdotool mousemove 260 200 sleep 0.3 mousemove 283 330 sleep 0.3 mousemove 285 336 click 1
 sleep 2
 import -window root "$scratch/menu.png"
-convert "$scratch/menu.png" -crop 720x450+0+0 +repage "$out/paraview_filters_menu.png"
+convert "$scratch/menu.png" -crop 800x450+0+0 +repage "$out/paraview_filters_menu.png"
