@@ -20,6 +20,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -110,22 +111,31 @@ bool IsPointArray(vtkColorHalfEdgeDecimation* self, const char* role, const char
 
 /// The colour array (of the given association), converted to RGB in [0,1]; false (with an
 /// error) for a bad one. Without one, the decimation goes by geometry alone: quietly for a mesh
-/// without point scalars or an empty name (ParaView's choice when the input has no point
-/// array), with a warning when an array selected by name is not there.
+/// without point scalars, or with an empty name (ParaView's choice when the input has no
+/// point scalars) and no point scalars; with a warning when an array selected by name is not
+/// there, or an empty name leaves the input's point scalars `scalars` unused.
 bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int association,
-                vtkIdType numPoints, int threads, InputMesh& mesh)
+                vtkIdType numPoints, int threads, vtkDataArray* scalars, InputMesh& mesh)
 {
   const char* name = array && array->GetName() ? array->GetName() : "";
   if (!array)
   {
     vtkInformation* selection = self->GetInputArrayInformation(0);
-    if (selection && selection->Has(vtkDataObject::FIELD_NAME()) &&
-        *selection->Get(vtkDataObject::FIELD_NAME()))
+    const char* asked = selection && selection->Has(vtkDataObject::FIELD_NAME())
+      ? selection->Get(vtkDataObject::FIELD_NAME())
+      : nullptr;
+    if (asked && *asked)
     {
-      vtkWarningWithObjectMacro(self, << "No colour array named '"
-                                      << selection->Get(vtkDataObject::FIELD_NAME())
+      vtkWarningWithObjectMacro(self, << "No colour array named '" << asked
                                       << "' (SetInputArrayToProcess): decimating by geometry "
                                          "alone.");
+    }
+    else if (asked && scalars)
+    {
+      vtkWarningWithObjectMacro(
+        self, << "No colour array selected (an empty name), though the input has point scalars '"
+              << (scalars->GetName() ? scalars->GetName() : "") << "': decimating by geometry "
+              << "alone.");
     }
     else
     {
@@ -436,7 +446,8 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   vtkDataArray* locks = this->GetLockArray(inputVector, lockAssociation);
   const vtkIdType numPoints = input->GetNumberOfPoints();
   if ((this->ErrorMetric != Geometry &&
-       !ReadColors(this, colors, association, numPoints, threads, mesh)) ||
+       !ReadColors(this, colors, association, numPoints, threads,
+                   input->GetPointData()->GetScalars(), mesh)) ||
       !ReadLocks(this, locks, lockAssociation, numPoints, mesh))
   {
     return 1;

@@ -88,12 +88,30 @@ PartsKey GeometryKey(vtkPolyData* input)
   return key;
 }
 
-/// What the cached record is read from: the table, its columns and field data arrays (a
-/// vtkTable's own MTime does not follow them, and removing one changes no MTime).
+/// What a cached record is read from: the table, its columns and field data arrays (a
+/// vtkTable's own MTime does not follow them, and removing one changes no MTime); of a
+/// composite record, those of every table in it.
+void AddRecordParts(vtkDataObject* record, PartsKey& key);
+
 PartsKey RecordKey(vtkDataObject* record)
 {
   PartsKey key;
+  AddRecordParts(record, key);
+  return key;
+}
+
+void AddRecordParts(vtkDataObject* record, PartsKey& key)
+{
   key.Add(record);
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(record))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      AddRecordParts(it->GetCurrentDataObject(), key);
+    }
+  }
   if (auto* table = vtkTable::SafeDownCast(record))
   {
     key.Add(table->GetRowData());
@@ -107,7 +125,6 @@ PartsKey RecordKey(vtkDataObject* record)
       key.Add(table->GetFieldData()->GetAbstractArray(a));
     }
   }
-  return key;
 }
 } // namespace
 
@@ -314,7 +331,7 @@ bool vtkColorHalfEdgeLevelOfDetail::ExtractBlocks(vtkCompositeDataSet* input,
   output->CopyStructure(input);
   output->GetFieldData()->PassData(input->GetFieldData());
   // The record of each leaf: at the same flat index of a composite record; a single table
-  // serves an input of one leaf.
+  // serves an input of one mesh.
   std::map<unsigned int, vtkDataObject*> recordAt;
   auto* composite = vtkCompositeDataSet::SafeDownCast(records);
   vtkSmartPointer<vtkCompositeDataIterator> it;
@@ -327,10 +344,10 @@ bool vtkColorHalfEdgeLevelOfDetail::ExtractBlocks(vtkCompositeDataSet* input,
     }
   }
   it.TakeReference(input->NewIterator());
-  size_t leaves = 0;
+  size_t meshes = 0;
   for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
   {
-    ++leaves;
+    meshes += vtkPolyData::SafeDownCast(it->GetCurrentDataObject()) ? 1 : 0;
   }
   std::map<unsigned int, Cache> kept;
   bool complete = true;
@@ -347,9 +364,13 @@ bool vtkColorHalfEdgeLevelOfDetail::ExtractBlocks(vtkCompositeDataSet* input,
                       << ", not a vtkPolyData: its level is empty.");
       continue;
     }
+    if (mesh->GetNumberOfPoints() == 0)
+    {
+      continue; // an empty mesh: an empty level, as for a single mesh
+    }
     auto found = recordAt.find(index);
     vtkDataObject* record = composite ? (found != recordAt.end() ? found->second : nullptr)
-                                      : (leaves == 1 ? records : nullptr);
+                                      : (meshes == 1 ? records : nullptr);
     if (!record)
     {
       vtkErrorMacro(<< "No collapse record for the mesh at flat index " << index

@@ -41,7 +41,8 @@
  * structure) gives a composite output of the same structure: each mesh's level from the record
  * at its place (a single vtkTable serves an input of one mesh); a block that is not a
  * vtkPolyData or has no record gets an empty level (a warning, an error). The statistics
- * (ActualReduction, ActualError, the collapse counts) are then over all the meshes.
+ * (ActualReduction, ActualError, the collapse counts) are then over all the meshes, and the
+ * output is read with GetOutputDataObject(0) (GetOutput() gives only a vtkPolyData: null).
  * Distributed data works piece by piece: each piece is extracted with the record made of that
  * piece (this filter asks for the ghost level the decimation asks for, so the pieces are the
  * same). The mesh and the record are read once and kept while neither changes (the input's

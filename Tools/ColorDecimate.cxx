@@ -760,9 +760,9 @@ int WriteInputCopy(const Options& options, vtkPolyData* input)
   return options.Output.empty() ? 0 : Continue;
 }
 
-void Configure(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkPolyData* input)
+/// The filter's properties from the options (its input is set once read).
+void Configure(vtkColorHalfEdgeDecimation* filter, const Options& options)
 {
-  filter->SetInputData(input);
   if (options.Paper)
   {
     filter->SetPaperDefaults();
@@ -1042,18 +1042,12 @@ int DecimateOrLoad(vtkColorHalfEdgeDecimation* filter, const Options& options,
                    vtkSmartPointer<vtkTable>& record, Figures& figures)
 {
   std::string error;
-  const int checked = CheckLevelOptions(filter, options);
-  if (checked != Continue)
-  {
-    return checked;
-  }
   if (!options.FromRecord.empty())
   {
     record = ReadRecord(options.FromRecord, error);
     return record ? Continue : Fail(error);
   }
-  int status = PrepareRecordRun(filter, options);
-  status = status == Continue ? Decimate(filter, options, figures) : status;
+  int status = Decimate(filter, options, figures);
   if (status == Continue && options.Levels.empty())
   {
     status = WriteOutput(filter, options, figures);
@@ -1207,8 +1201,17 @@ int WriteLevels(vtkColorHalfEdgeDecimation* filter, const Options& options, vtkP
 int Run(const Options& given)
 {
   Options options = given;
+  // The settings first, so that combinations the levels cannot honour fail before any reading.
+  vtkNew<vtkColorHalfEdgeDecimation> filter;
+  Configure(filter, options);
+  int status = CheckLevelOptions(filter, options);
+  status = status == Continue ? PrepareRecordRun(filter, options) : status;
+  if (status != Continue)
+  {
+    return status;
+  }
   Input input;
-  int status = ReadInput(options, input);
+  status = ReadInput(options, input);
   options.PlyColors =
     ColorMapping::Of(input.Mesh ? FindColorArray(input.Mesh, options.Array) : nullptr);
   if (status == Continue && !options.WriteInput.empty())
@@ -1219,8 +1222,7 @@ int Run(const Options& given)
   {
     return status;
   }
-  vtkNew<vtkColorHalfEdgeDecimation> filter;
-  Configure(filter, options, input.Mesh);
+  filter->SetInputData(input.Mesh);
   Figures figures;
   vtkSmartPointer<vtkTable> record;
   status = DecimateOrLoad(filter, options, record, figures);

@@ -351,33 +351,57 @@ bool CheckReadable(const std::string& path, std::string& error)
   return true;
 }
 
-/// What VTK's PLY reader would get wrong, checked first: a truncated binary body (it reads past
-/// its end) and colours wider than a byte (it converts them to bytes: 16-bit values wrap, float
-/// values in [0, 1] become 0 or 1). False with `error`.
+/// The face's corner list and colours as VTK's PLY reader reads them: a face element needs a
+/// vertex_indices (or vertex_index) list, of at most 255 corners (it keeps the count in a
+/// byte); colours of the vertex and face elements must be bytes (it converts other types to
+/// bytes: 16-bit values wrap, float values in [0, 1] become 0 or 1). "" when the header is
+/// one the reader gets right; the corner lists' lengths are left for CheckPlyBody.
+std::string CheckPlyElements(PlyHeader& header)
+{
+  for (PlyElement& element : header.Elements)
+  {
+    const bool face = element.Name == "face";
+    bool corners = false;
+    for (PlyProperty& p : element.Properties)
+    {
+      if (face && p.CountSize > 0 && (p.Name == "vertex_indices" || p.Name == "vertex_index"))
+      {
+        corners = true;
+        p.MaxLength = 255;
+      }
+      const bool color = (face || element.Name == "vertex") &&
+        (p.Name == "red" || p.Name == "green" || p.Name == "blue" || p.Name == "alpha" ||
+         (!face &&
+          (p.Name == "diffuse_red" || p.Name == "diffuse_green" || p.Name == "diffuse_blue")));
+      if (color && p.CountSize == 0 && p.Type != "uchar" && p.Type != "uint8")
+      {
+        return "it has colours of type " + p.Type + " ('" + element.Name + "' property " + p.Name +
+          "), which VTK's PLY reader converts to bytes, losing them: convert the file "
+          "to 8-bit colours (uchar) or to .vtp first";
+      }
+    }
+    if (face && !corners)
+    {
+      return "its 'face' element has no vertex_indices list, which VTK's PLY reader needs";
+    }
+  }
+  return "";
+}
+
+/// What VTK's PLY reader would get wrong or crash on, checked first (CheckPlyElements, and a
+/// body shorter than its header announces, which it reads past). False with `error`.
 bool CheckPly(const std::string& path, std::string& error)
 {
   PlyHeader header;
   std::string why;
-  if (!ReadPlyHeader(path, header, why) || !CheckPlyBody(path, header, why))
+  if (ReadPlyHeader(path, header, why))
+  {
+    why = CheckPlyElements(header);
+  }
+  if (!why.empty() || !CheckPlyBody(path, header, why))
   {
     error = "'" + path + "' cannot be read: " + why;
     return false;
-  }
-  for (const PlyElement& element : header.Elements)
-  {
-    for (const PlyProperty& p : element.Properties)
-    {
-      const bool color = p.Name == "red" || p.Name == "green" || p.Name == "blue" ||
-        p.Name == "alpha" || p.Name == "diffuse_red" || p.Name == "diffuse_green" ||
-        p.Name == "diffuse_blue";
-      if (color && p.CountSize == 0 && p.Size > 1)
-      {
-        error = "'" + path + "' has colours of type " + p.Type + " ('" + element.Name +
-          "' property " + p.Name + "), which VTK's PLY reader converts to bytes, losing them: " +
-          "convert the file to 8-bit colours (uchar) or to .vtp first";
-        return false;
-      }
-    }
   }
   return true;
 }
@@ -657,9 +681,11 @@ vtkDataArray* FindFaceColorArray(vtkPolyData* mesh, const std::string& name)
   vtkDataArray* faces =
     name.empty() ? mesh->GetCellData()->GetScalars() : mesh->GetCellData()->GetArray(name.c_str());
   const int comps = faces ? faces->GetNumberOfComponents() : 0;
+  // vtkPLYWriter numbers face colours by polygon: the cells must be polygons alone.
   return faces && faces->GetDataType() == VTK_UNSIGNED_CHAR && (comps == 3 || comps == 4) &&
       faces->GetName() && *faces->GetName() &&
-      faces->GetNumberOfTuples() == mesh->GetNumberOfCells()
+      faces->GetNumberOfTuples() == mesh->GetNumberOfCells() &&
+      mesh->GetNumberOfCells() == mesh->GetNumberOfPolys()
     ? faces
     : nullptr;
 }

@@ -118,6 +118,24 @@ int64_t ReadCount(ByteWindow& window, uint64_t at, int size, bool bigEndian, boo
   return static_cast<int64_t>(value);
 }
 
+/// A list's length as read: "" if it is one the reader takes, else what is wrong with it.
+std::string CheckLength(const PlyElement& element, const PlyProperty& p, uint64_t row,
+                        int64_t count)
+{
+  if (count < 0)
+  {
+    return "its '" + element.Name + "' element " + std::to_string(row) +
+      " has a list of negative length";
+  }
+  if (uint64_t(count) > p.MaxLength)
+  {
+    return "its '" + element.Name + "' element " + std::to_string(row) + " has a " + p.Name +
+      " list of " + std::to_string(count) + " items, more than the " + std::to_string(p.MaxLength) +
+      " VTK's PLY reader takes";
+  }
+  return "";
+}
+
 /// Walk an element's rows from `at` (lists' counts read); false with `error` at a bad place.
 bool SkipElement(ByteWindow& window, const PlyElement& element, bool bigEndian, uint64_t& at,
                  std::string& error)
@@ -150,12 +168,11 @@ bool SkipElement(ByteWindow& window, const PlyElement& element, bool bigEndian, 
         continue;
       }
       const int64_t count = ReadCount(window, at, p.CountSize, bigEndian, p.CountSigned);
-      if (count < 0)
+      error = count == -1 ? "it ends inside its '" + element.Name + "' elements (at " +
+          std::to_string(row) + " of " + std::to_string(element.Count) + " announced)"
+                          : CheckLength(element, p, row, count == -2 ? -1 : count);
+      if (!error.empty())
       {
-        error = count == -2 ? "its '" + element.Name + "' element " + std::to_string(row) +
-            " has a list of negative length"
-                            : "it ends inside its '" + element.Name + "' elements (at " +
-            std::to_string(row) + " of " + std::to_string(element.Count) + " announced)";
         return false;
       }
       at += uint64_t(p.CountSize) + uint64_t(count) * uint64_t(p.Size);
@@ -168,10 +185,12 @@ bool SkipElement(ByteWindow& window, const PlyElement& element, bool bigEndian, 
   }
   return true;
 }
-/// Whether an ASCII row (one line) holds the element's values: a token for each scalar, a
-/// non-negative count and that many tokens for each list.
-bool RowIsComplete(const std::string& line, const PlyElement& element)
+/// What is wrong with an ASCII row (one line), "" if nothing: it must hold a token for each
+/// scalar, and a count the list may have and that many tokens for each list.
+std::string CheckRow(const std::string& line, const PlyElement& element, uint64_t row)
 {
+  const std::string lacking =
+    "its '" + element.Name + "' element " + std::to_string(row) + " lacks values";
   const char* c = line.c_str();
   const auto next = [&c]() -> const char*
   {
@@ -195,25 +214,26 @@ bool RowIsComplete(const std::string& line, const PlyElement& element)
     const char* token = next();
     if (!token)
     {
-      return false;
+      return lacking;
     }
     if (p.CountSize > 0)
     {
-      const long count = std::strtol(token, nullptr, 10);
-      for (long k = 0; k < count; ++k)
+      const long long count = std::strtoll(token, nullptr, 10);
+      const std::string wrong = CheckLength(element, p, row, count);
+      if (!wrong.empty())
+      {
+        return wrong;
+      }
+      for (long long k = 0; k < count; ++k)
       {
         if (!next())
         {
-          return false;
+          return lacking;
         }
-      }
-      if (count < 0)
-      {
-        return false;
       }
     }
   }
-  return true;
+  return "";
 }
 
 /// Every element of an ASCII body there, one complete row a line.
@@ -226,11 +246,11 @@ bool CheckAsciiBody(const std::string& path, const PlyHeader& header, std::strin
   {
     for (uint64_t row = 0; row < element.Count; ++row)
     {
-      if (!std::getline(in, line) || !RowIsComplete(line, element))
+      error = std::getline(in, line) ? CheckRow(line, element, row)
+                                     : "it ends inside its '" + element.Name + "' elements (at " +
+          std::to_string(row) + " of " + std::to_string(element.Count) + " announced)";
+      if (!error.empty())
       {
-        error = (in ? "its '" + element.Name + "' element " + std::to_string(row) + " lacks values"
-                    : "it ends inside its '" + element.Name + "' elements (at " +
-                     std::to_string(row) + " of " + std::to_string(element.Count) + " announced)");
         return false;
       }
     }

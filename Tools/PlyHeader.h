@@ -21,7 +21,8 @@ struct PlyProperty
   int Size = 0;      ///< bytes of a value (of an item, for a list)
   int CountSize = 0; ///< bytes of a list's count; 0 for a scalar property
   bool CountSigned = false;
-  std::string Type; ///< as the header names it ("uchar", "float", ...)
+  uint64_t MaxLength = UINT64_MAX; ///< the longest list a reader takes (checked by CheckPlyBody)
+  std::string Type;                ///< as the header names it ("uchar", "float", ...)
 };
 
 struct PlyElement
@@ -43,8 +44,8 @@ bool ReadPlyHeader(const std::string& path, PlyHeader& header, std::string& erro
 
 /**
  * Check that a PLY file holds every element its header announces: in a binary file each
- * list's count read and its items skipped, in an ASCII one a complete row a line; false with
- * `error` saying where it ends.
+ * list's count read and its items skipped, in an ASCII one a complete row a line; and that no
+ * list is longer than its property's MaxLength. False with `error` saying where.
  */
 bool CheckPlyBody(const std::string& path, const PlyHeader& header, std::string& error);
 

@@ -379,14 +379,21 @@ CD_TEST_CASE(ColorArrayByName)
   CD_CHECK(missing.WarningText().find("No colour array named 'Nope'") != std::string::npos);
   CD_CHECK(std::abs(missing.ActualReduction - 0.9) <= 0.01);
 
-  // An empty name (ParaView's Colors when the input has no point array) selects none: geometry
-  // alone, quietly, as with no selection.
-  const RunResult unnamed =
-    Decimate(mesh, 0.9,
-             [](vtkColorHalfEdgeDecimation* f)
-             { f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, ""); });
-  CD_CHECK(unnamed.Warnings == 0 && unnamed.Errors == 0);
-  CD_CHECK(Result(unnamed) == Result(missing));
+  // An empty name (ParaView's Colors when the input has no point scalars) selects none:
+  // geometry alone, quietly on a mesh without point scalars, with a warning on one that has
+  // them (a ParaView state saved before the input had colours).
+  const auto unnamed = [](vtkColorHalfEdgeDecimation* f)
+  { f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, ""); };
+  auto plain = Copy(mesh);
+  plain->GetPointData()->SetScalars(nullptr);
+  const RunResult quiet = Decimate(plain, 0.9, unnamed);
+  CD_CHECK(quiet.Warnings == 0 && quiet.Errors == 0);
+  CD_CHECK(Result(quiet) == Result(missing));
+  const RunResult coloured = Decimate(mesh, 0.9, unnamed);
+  CD_CHECK(coloured.Warnings == 1 && coloured.Errors == 0);
+  CD_CHECK(coloured.HasWarning("No colour array selected (an empty name), though the input "
+                               "has point scalars 'RGB'"));
+  CD_CHECK(Result(coloured) == Result(missing));
 }
 
 //------------------------------------------------------------------------------

@@ -534,14 +534,31 @@ CD_TEST_CASE(CompositeInput)
   }
   CD_CHECK(kept > 0);
 
-  // A single record serves a composite of one mesh, not one of several.
+  // A composite record given as data and edited in place (a column removed, the table marked
+  // modified): read again, and refused.
+  vtkNew<vtkMultiBlockDataSet> nestedCopy;
+  nestedCopy->DeepCopy(recorded);
+  messages.Clear();
+  lod->SetInputData(group);
+  lod->SetRecordData(nestedCopy);
+  lod->Update();
+  CD_CHECK(messages.Errors == 0);
+  auto* firstTable = vtkTable::SafeDownCast(Leaves(nestedCopy).begin()->second);
+  firstTable->RemoveColumnByName("Error");
+  firstTable->Modified();
+  lod->Update();
+  CD_CHECK(messages.HasError("lacks one of the columns"));
+
+  // A single record serves a composite of one mesh (whatever other blocks it has), not one of
+  // several.
   vtkNew<vtkMultiBlockDataSet> one;
   one->SetBlock(0, meshes.begin()->second);
+  one->SetBlock(1, vtkNew<vtkUnstructuredGrid>());
   messages.Clear();
   lod->SetInputData(one);
   lod->SetRecordData(records.begin()->second);
   lod->Update();
-  CD_CHECK(messages.Errors == 0 && Leaves(lod->GetOutputDataObject(0)).size() == 1);
+  CD_CHECK(messages.Errors == 0 && Leaves(lod->GetOutputDataObject(0)).size() == 2);
   CD_CHECK(vtkPolyData::SafeDownCast(Leaves(lod->GetOutputDataObject(0)).begin()->second)
              ->GetNumberOfCells() > 0);
   lod->SetInputData(group);

@@ -3,8 +3,9 @@
 #   cmake [-DEXPECT=success|failure] [-DEXIT_CODE=N] [-DREGEX=re] [-DFORBID=re]
 #         [-DMAKE_FILE=path -DMAKE_FILE_KIND=junk|points-only|ascii-ply-no-face|ushort-ply|
 #                                           float-color-grid|strip|face-color-ply|
+#                                           ply-extras|ply-no-index-list|ply-long-face|
 #                                           truncated -DMAKE_FILE_FROM=path -DMAKE_FILE_SIZE=n]
-#         [-DCHECK_FILE=path -DCHECK_FILE_REGEX=re]
+#         [-DCHECK_FILE=path -DCHECK_FILE_REGEX=re] [-DCHECK_FILE_ABSENT=path]
 #         -P RunCheck.cmake -- COMMAND [ARG ...]
 #
 # EXPECT: success (exit 0, the default) or failure (exit status not 0; EXIT_CODE pins it).
@@ -15,8 +16,13 @@
 # 16-bit colours, "float-color-grid" a legacy VTK flat 6 x 6 grid of triangles whose float RGB
 # colours lie in [1, 2] but for one inner point at 9 (so not in [0, 1]: mapped by their
 # range), "strip" a legacy VTK polydata of one triangle strip (8 points, 6 triangles),
-# "face-color-ply" an ASCII PLY of two triangles coloured per face, "truncated" the first MAKE_FILE_SIZE bytes of MAKE_FILE_FROM.
-# CHECK_FILE must exist after the command and match CHECK_FILE_REGEX.
+# "face-color-ply" an ASCII PLY of two triangles coloured per face, "ply-extras" a valid ASCII
+# PLY with comments, obj_info, CRLF line ends, extra spaces, a uint8/int32 list and a material
+# element with float colours (which VTK's reader does not read as point colours),
+# "ply-no-index-list" one whose faces have no vertex_indices list, "ply-long-face" one face of
+# 300 corners, "truncated" the first MAKE_FILE_SIZE bytes of MAKE_FILE_FROM.
+# CHECK_FILE must exist after the command and match CHECK_FILE_REGEX; CHECK_FILE_ABSENT must
+# not (it is removed first).
 set(command)
 set(after_separator FALSE)
 foreach (i RANGE 1 ${CMAKE_ARGC})
@@ -89,6 +95,33 @@ if (DEFINED MAKE_FILE)
       "property float z\nelement face 2\nproperty list uchar int vertex_indices\n"
       "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n"
       "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2 255 0 0\n3 0 2 3 0 255 0\n")
+  elseif (MAKE_FILE_KIND STREQUAL "ply-extras")
+    file(WRITE "${MAKE_FILE}"
+      "ply\r\nformat ascii 1.0\r\ncomment made by a test\r\nobj_info nothing\r\n"
+      "element vertex 4\r\nproperty float x\r\nproperty float y\r\nproperty float z\r\n"
+      "property uchar red\r\nproperty uchar green\r\nproperty uchar blue\r\n"
+      "element face 2\r\nproperty  list uint8 int32 vertex_indices\r\n"
+      "element material 1\r\nproperty float diffuse_red\r\nproperty float diffuse_green\r\n"
+      "property float diffuse_blue\r\nend_header\r\n"
+      "0 0 0 255 0 0\r\n1 0 0  0 255 0\r\n1 1 0 0 0 255\r\n0 1 0 9 9 9\r\n"
+      "3 0 1 2\r\n3 0 2 3\r\n0.5 0.5 0.5\r\n")
+  elseif (MAKE_FILE_KIND MATCHES "^ply-(no-index-list|long-face)$")
+    set(list "property list uchar int vertex_indices")
+    set(face "3 0 1 2")
+    if (MAKE_FILE_KIND STREQUAL "ply-no-index-list")
+      set(list "property list uchar int corners")
+    else ()
+      set(list "property list int int vertex_indices")
+      set(face "300")
+      foreach (k RANGE 299)
+        math(EXPR corner "${k} % 3")
+        string(APPEND face " ${corner}")
+      endforeach ()
+    endif ()
+    file(WRITE "${MAKE_FILE}"
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\n${list}\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n${face}\n")
   elseif (MAKE_FILE_KIND STREQUAL "strip")
     file(WRITE "${MAKE_FILE}"
       "# vtk DataFile Version 3.0\none strip\nASCII\nDATASET POLYDATA\n"
@@ -105,6 +138,9 @@ if (DEFINED MAKE_FILE)
   endif ()
 endif ()
 
+if (DEFINED CHECK_FILE_ABSENT)
+  file(REMOVE "${CHECK_FILE_ABSENT}")
+endif ()
 execute_process(COMMAND ${command}
   RESULT_VARIABLE status
   OUTPUT_VARIABLE out
@@ -134,6 +170,9 @@ if (DEFINED REGEX AND NOT all MATCHES "${REGEX}")
 endif ()
 if (DEFINED FORBID AND all MATCHES "${FORBID}")
   message(FATAL_ERROR "the output matches '${FORBID}', which it must not")
+endif ()
+if (DEFINED CHECK_FILE_ABSENT AND EXISTS "${CHECK_FILE_ABSENT}")
+  message(FATAL_ERROR "${CHECK_FILE_ABSENT} was written")
 endif ()
 if (DEFINED CHECK_FILE)
   if (NOT EXISTS "${CHECK_FILE}")
