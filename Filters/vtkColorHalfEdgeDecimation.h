@@ -59,6 +59,11 @@
  * exporters write texture seams) are decimated closed: both sides collapse together and keep
  * their own point data (see PreserveSeams).
  *
+ * Composite data (a vtkMultiBlockDataSet of meshes, ...): VTK's pipeline runs the filter on
+ * each mesh, so both outputs are composites of the input's structure (the record's holds each
+ * mesh's table, for vtkColorHalfEdgeLevelOfDetail), and the statistics (ActualReduction, ...)
+ * are those of the last mesh.
+ *
  * Distributed data: when the input is one piece of several (UPDATE_NUMBER_OF_PIECES > 1, as
  * in ParaView run with MPI), the filter asks upstream for one level of ghost cells. Ghost
  * cells are left out and every point they use is kept in place, as are ghost (duplicate)
