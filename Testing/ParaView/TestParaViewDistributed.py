@@ -52,6 +52,8 @@ parser.add_argument("--schedule", choices=["Greedy", "Batched"], default="Greedy
 parser.add_argument("--compare-decimate", action="store_true")
 parser.add_argument("--time", action="store_true")
 parser.add_argument("--no-check", action="store_true")
+parser.add_argument("--expect-ranks", type=int, default=0,
+                    help="fail unless pvbatch runs on this many ranks (0: any)")
 args = parser.parse_args()
 
 LoadPlugin(args.plugin, remote=False, ns=globals())
@@ -62,6 +64,10 @@ if ranks is None:
     ranks = vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
 
 failures = []
+if args.expect_ranks and ranks != args.expect_ranks:
+    print("FAILED: %d rank(s), expected %d (is mpiexec the one of ParaView's MPI?)"
+          % (ranks, args.expect_ranks))
+    sys.exit(1)
 
 
 def check(condition, message):

@@ -21,6 +21,8 @@ from paraview import servermanager
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
 parser.add_argument("--resolution", type=int, default=120)
+parser.add_argument("--expect-ranks", type=int, default=0,
+                    help="fail unless pvbatch runs on this many ranks (0: any)")
 args = parser.parse_args()
 
 failures = []
@@ -33,6 +35,11 @@ def check(condition, message):
 
 
 LoadPlugin(args.plugin, remote=False, ns=globals())
+ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+if args.expect_ranks and ranks != args.expect_ranks:
+    print("FAILED: %d rank(s), expected %d (is mpiexec the one of ParaView's MPI?)"
+          % (ranks, args.expect_ranks))
+    sys.exit(1)
 check("ColorHalfEdgeLevelOfDetail" in globals(),
       "the plugin did not define ColorHalfEdgeLevelOfDetail")
 sm = servermanager.filters.ColorHalfEdgeLevelOfDetail().SMProxy

@@ -251,6 +251,8 @@ view.CameraParallelScale = 1.0
 Render(view)
 os.makedirs(args.output_dir, exist_ok=True)
 image = os.path.join(args.output_dir, os.path.basename(args.baseline))
+if os.path.exists(image):
+    os.remove(image)  # a failed save must not leave an earlier picture to compare
 SaveScreenshot(image, view, ImageResolution=[400, 400], TransparentBackground=0)
 
 from vtkmodules.vtkImagingCore import vtkImageDifference  # noqa: E402

@@ -1,10 +1,11 @@
 # Checks the "levels" list of color-decimate --lod --stats (a ctest helper).
 #
 #   cmake -DSTATS=file.json -DREDUCTIONS=r1;r2;... -DOUTPUTS=f1;f2;... [-DFROM_RECORD=ON]
-#         -P CheckLevels.cmake
+#         [-DMESH_CHECK=ColorDecimationMeshCheck] -P CheckLevels.cmake
 #
 # One level per reduction, in the order given, each naming its file (which must exist) and
-# reporting points, triangles, collapses and its times. With --lod the top-level "output" is
+# reporting points, triangles, collapses and its times (with MESH_CHECK, the points and
+# triangles of its file). With --lod the top-level "output" is
 # null (no OUTPUT file is written); with --from-record (FROM_RECORD) so are the decimation's
 # figures, since none ran.
 if (NOT EXISTS "${STATS}")
@@ -35,7 +36,19 @@ foreach (i RANGE ${last})
     if (problem)
       message(FATAL_ERROR "level ${i}: key '${key}' missing")
     endif ()
+    set(${key} "${value}")
   endforeach ()
+  if (MESH_CHECK)
+    execute_process(COMMAND "${MESH_CHECK}" "${output}" RESULT_VARIABLE status
+      OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if (NOT status STREQUAL "0" OR NOT out MATCHES "points=([0-9]+) triangles=([0-9]+)")
+      message(FATAL_ERROR "level ${i}: cannot read ${output}: ${out}${err}")
+    endif ()
+    if (NOT output_points EQUAL CMAKE_MATCH_1 OR NOT output_triangles EQUAL CMAKE_MATCH_2)
+      message(FATAL_ERROR "level ${i}: ${output_points} points and ${output_triangles} "
+        "triangles reported, ${CMAKE_MATCH_1} and ${CMAKE_MATCH_2} in ${output}")
+    endif ()
+  endif ()
 endforeach ()
 
 set(nulls)

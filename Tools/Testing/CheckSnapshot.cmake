@@ -1,5 +1,6 @@
 # Runs `color-decimate INPUT OUTPUT --snapshot PNG` (under xvfb-run when given) and checks that
-# a real picture came out: a PNG of the expected size (2 x 2 panels of SIZE pixels), not empty.
+# a real picture came out: a PNG of the expected size (2 x 2 panels of SIZE pixels and a
+# 2-pixel gutter), not empty.
 # -DCLI=... -DINPUT=... -DOUTPUT=... -DPNG=... -DSIZE=... [-DXVFB_RUN=...]
 file(REMOVE "${PNG}")
 set(command "${CLI}" "${INPUT}" "${OUTPUT}" --reduction 0.9 --snapshot "${PNG}"
@@ -24,9 +25,9 @@ string(SUBSTRING "${header}" 32 8 width_hex)
 string(SUBSTRING "${header}" 40 8 height_hex)
 math(EXPR width "0x${width_hex}")
 math(EXPR height "0x${height_hex}")
-math(EXPR expected "2 * ${SIZE}")
-if (width LESS expected OR height LESS expected)
-  message(FATAL_ERROR "snapshot is ${width} x ${height}, expected at least ${expected} x ${expected}")
+math(EXPR expected "2 * ${SIZE} + 2")
+if (NOT width EQUAL expected OR NOT height EQUAL expected)
+  message(FATAL_ERROR "snapshot is ${width} x ${height}, expected ${expected} x ${expected}")
 endif ()
 file(SIZE "${PNG}" bytes)
 if (bytes LESS 8000)

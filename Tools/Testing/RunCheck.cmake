@@ -21,8 +21,9 @@
 # element with float colours (which VTK's reader does not read as point colours),
 # "ply-no-index-list" one whose faces have no vertex_indices list, "ply-long-face" one face of
 # 300 corners, "truncated" the first MAKE_FILE_SIZE bytes of MAKE_FILE_FROM.
-# CHECK_FILE must exist after the command and match CHECK_FILE_REGEX; CHECK_FILE_ABSENT must
-# not (it is removed first).
+# CHECK_FILE must exist after the command and match CHECK_FILE_REGEX (it is removed first,
+# unless it is MAKE_FILE: a file from an earlier run cannot pass); CHECK_FILE_ABSENT must not
+# (it is removed first too).
 set(command)
 set(after_separator FALSE)
 foreach (i RANGE 1 ${CMAKE_ARGC})
@@ -140,6 +141,9 @@ endif ()
 
 if (DEFINED CHECK_FILE_ABSENT)
   file(REMOVE "${CHECK_FILE_ABSENT}")
+endif ()
+if (DEFINED CHECK_FILE AND NOT CHECK_FILE STREQUAL "${MAKE_FILE}")
+  file(REMOVE "${CHECK_FILE}")
 endif ()
 execute_process(COMMAND ${command}
   RESULT_VARIABLE status
