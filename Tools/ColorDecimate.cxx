@@ -469,7 +469,6 @@ std::string Footer()
     "Exit status: 0 success, 1 unreadable/unsupported input or failed output, 2 bad options.";
 }
 
-/// INPUT and OUTPUT after the parse; "" when they are right, otherwise what is wrong.
 /// Whether two paths name the same file: the same file on disk (through links) or, for a file
 /// not there yet, the same canonical path.
 bool SameFile(const std::string& a, const std::string& b)
@@ -527,6 +526,7 @@ std::string CheckCollisions(const Options& options)
   return "";
 }
 
+/// INPUT and OUTPUT after the parse; "" when they are right, otherwise what is wrong.
 std::string CheckFiles(Options& options)
 {
   std::vector<std::string> positional;
