@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # valgrind memcheck on a representative decimation (a 20480-triangle coloured icosphere,
-# 90 % reduction, both metrics, Testing/Hostile/TestValgrindDecimation.cxx): fails on any
+# 90 % reduction: the defaults with the collapse record and a level extracted from it, then the
+# paper's metric and the geometric one; Testing/Hostile/TestValgrindDecimation.cxx): fails on any
 # memory error or definite/possible leak (docs/RELIABILITY.md). Runs the ctest test
 # ColorDecimation.Valgrind (label valgrind).
 #
