@@ -434,21 +434,8 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
 
   // 2. Read the points and triangles, convert the colours.
   InputMesh mesh;
-  if (!colordecimation::adapter::ReadGeometry(this, input, threads, mesh))
-  {
-    return 1;
-  }
-  int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
-  int lockAssociation = vtkDataObject::FIELD_ASSOCIATION_POINTS;
-  vtkDataArray* colors = this->ErrorMetric != Geometry
-    ? this->GetInputArrayToProcess(0, inputVector, association)
-    : nullptr;
-  vtkDataArray* locks = this->GetLockArray(inputVector, lockAssociation);
-  const vtkIdType numPoints = input->GetNumberOfPoints();
-  if ((this->ErrorMetric != Geometry &&
-       !ReadColors(this, colors, association, numPoints, threads,
-                   input->GetPointData()->GetScalars(), mesh)) ||
-      !ReadLocks(this, locks, lockAssociation, numPoints, mesh))
+  if (!colordecimation::adapter::ReadGeometry(this, input, threads, mesh) ||
+      !this->ReadPointArrays(inputVector, input, threads, mesh))
   {
     return 1;
   }
@@ -570,6 +557,23 @@ vtkDataArray* vtkColorHalfEdgeDecimation::GetLockArray(vtkInformationVector** in
 {
   return this->GetLockArrayName() ? this->GetInputArrayToProcess(1, inputVector, association)
                                   : nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkColorHalfEdgeDecimation::ReadPointArrays(vtkInformationVector** inputVector,
+                                                 vtkPolyData* input, int threads, InputMesh& mesh)
+{
+  int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  int lockAssociation = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  vtkDataArray* colors = this->ErrorMetric != Geometry
+    ? this->GetInputArrayToProcess(0, inputVector, association)
+    : nullptr;
+  vtkDataArray* locks = this->GetLockArray(inputVector, lockAssociation);
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  return (this->ErrorMetric == Geometry ||
+          ReadColors(this, colors, association, numPoints, threads,
+                     input->GetPointData()->GetScalars(), mesh)) &&
+    ReadLocks(this, locks, lockAssociation, numPoints, mesh);
 }
 
 //------------------------------------------------------------------------------

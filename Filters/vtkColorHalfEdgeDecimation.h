@@ -95,6 +95,10 @@ namespace colordecimation
 {
 struct DecimatorStatistics;
 class PhaseTimes;
+namespace adapter
+{
+struct InputMesh;
+}
 }
 
 class VTKCOLORDECIMATION_EXPORT vtkColorHalfEdgeDecimation : public vtkPolyDataAlgorithm
@@ -501,6 +505,10 @@ protected:
   /// The lock array, or null when none is selected or the input has none of that name (the
   /// caller tells which from GetLockArrayName()).
   vtkDataArray* GetLockArray(vtkInformationVector** inputVector, int& association);
+  /// The colours (unless the metric is Geometry) and the locked points into `mesh`; false
+  /// (with an error) for a bad array.
+  bool ReadPointArrays(vtkInformationVector** inputVector, vtkPolyData* input, int threads,
+                       colordecimation::adapter::InputMesh& mesh);
 
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
