@@ -328,8 +328,7 @@ bool vtkColorHalfEdgeLevelOfDetail::ExtractBlocks(vtkCompositeDataSet* input,
                                                   vtkDataObject* records,
                                                   vtkCompositeDataSet* output)
 {
-  output->CopyStructure(input);
-  output->GetFieldData()->PassData(input->GetFieldData());
+  output->CopyStructure(input); // its field data too
   // The record of each leaf: at the same flat index of a composite record; a single table
   // serves an input of one mesh.
   std::map<unsigned int, vtkDataObject*> recordAt;
