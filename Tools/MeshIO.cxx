@@ -548,10 +548,11 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& co
     vtkSmartPointer<vtkPolyData> out =
       mesh->GetNumberOfStrips() > 0 ? Triangulated(mesh) : vtkSmartPointer<vtkPolyData>(mesh);
     vtkDataArray* colors = FindColorArray(out, colorArrayName);
+    vtkDataArray* written = nullptr; // the point colours as bytes, or else the face colours
     if (colors && colors->GetNumberOfTuples() == mesh->GetNumberOfPoints())
     {
       const int comps = colors->GetNumberOfComponents();
-      vtkDataArray* written = colors;
+      written = colors;
       if (colors->GetDataType() != VTK_UNSIGNED_CHAR || (comps != 3 && comps != 4) ||
           !colors->GetName() || !*colors->GetName())
       {
@@ -563,15 +564,16 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& co
         out = copy;
         written = converted;
       }
+    }
+    else
+    {
+      written = FindFaceColorArray(out, colorArrayName); // vtkPLYWriter looks in cell data too
+    }
+    if (written)
+    {
       writer->SetArrayName(written->GetName());
       writer->SetColorModeToDefault();
       writer->SetEnableAlpha(written->GetNumberOfComponents() == 4);
-    }
-    else if (vtkDataArray* faces = FindFaceColorArray(out, colorArrayName))
-    {
-      writer->SetArrayName(faces->GetName()); // vtkPLYWriter looks in the cell data too
-      writer->SetColorModeToDefault();
-      writer->SetEnableAlpha(faces->GetNumberOfComponents() == 4);
     }
     else
     {
