@@ -449,6 +449,58 @@ std::map<unsigned int, vtkDataObject*> Leaves(vtkDataObject* data)
   return leaves;
 }
 
+using LeafMap = std::map<unsigned int, vtkDataObject*>;
+
+/// The composite level `lod` gives at `reduction`: each mesh's level is the one extracted alone
+/// from its own record, and ActualReduction is over all the meshes.
+void ExpectLevelOfEachMesh(vtkColorHalfEdgeLevelOfDetail* lod, const LeafMap& meshes,
+                           const LeafMap& records, double reduction)
+{
+  lod->SetTargetReduction(reduction);
+  lod->Update();
+  CD_CHECK(vtkMultiBlockDataSet::SafeDownCast(lod->GetOutputDataObject(0)) != nullptr);
+  const auto levels = Leaves(lod->GetOutputDataObject(0));
+  CD_CHECK(levels.size() == meshes.size());
+  vtkIdType in = 0, out = 0;
+  for (const auto& [index, mesh] : meshes)
+  {
+    auto* table = vtkTable::SafeDownCast(records.at(index));
+    auto* level = vtkPolyData::SafeDownCast(levels.count(index) ? levels.at(index) : nullptr);
+    auto alone = Extract(vtkPolyData::SafeDownCast(mesh), table,
+                         [reduction](auto* f) { f->SetTargetReduction(reduction); });
+    std::string why;
+    CD_CHECK_MSG(level && SameMesh(level, alone, why), "mesh " << index << ": " << why);
+    in += vtkPolyData::SafeDownCast(mesh)->GetNumberOfCells();
+    out += level ? level->GetNumberOfCells() : 0;
+  }
+  CD_CHECK(std::abs(lod->GetActualReduction() - (1.0 - double(out) / double(in))) < 1e-12);
+}
+
+/// `group` with a mesh added that has no record (an error for it, an empty level, the others
+/// as before) and a block that is no mesh (a warning, an empty level).
+void ExpectMixedBlocks(vtkColorHalfEdgeLevelOfDetail* lod, vtkMultiBlockDataSet* group,
+                       const LeafMap& meshes, const Messages& messages)
+{
+  vtkNew<vtkMultiBlockDataSet> more;
+  more->ShallowCopy(group);
+  more->SetBlock(2, DecoratedSphere(1));
+  more->SetBlock(3, vtkNew<vtkUnstructuredGrid>());
+  lod->SetInputData(more);
+  lod->Update();
+  const auto levels = Leaves(lod->GetOutputDataObject(0));
+  CD_CHECK(messages.HasError("No collapse record for the mesh at flat index"));
+  CD_CHECK(messages.HasWarning("is a vtkUnstructuredGrid, not a vtkPolyData"));
+  CD_CHECK(levels.size() == 4);
+  vtkIdType kept = 0;
+  for (const auto& [index, level] : levels)
+  {
+    kept += vtkPolyData::SafeDownCast(level)->GetNumberOfCells();
+    CD_CHECK((meshes.count(index) > 0) ==
+             (vtkPolyData::SafeDownCast(level)->GetNumberOfCells() > 0));
+  }
+  CD_CHECK(kept > 0);
+}
+
 // A composite input (multiblock, nested; partitioned collection): the decimation makes a record
 // for each mesh in a composite of the same structure, and the level filter gives a composite
 // output of that type whose each mesh is the level extracted from that mesh's own record; the
@@ -480,24 +532,8 @@ CD_TEST_CASE(CompositeInput)
   lod->SetRecordConnection(run->GetOutputPort(1));
   for (const double reduction : { 0.5, 0.9 }) // the second reuses each mesh's cache
   {
-    lod->SetTargetReduction(reduction);
-    lod->Update();
-    CD_CHECK(vtkMultiBlockDataSet::SafeDownCast(lod->GetOutputDataObject(0)) != nullptr);
-    const auto levels = Leaves(lod->GetOutputDataObject(0));
-    CD_CHECK(levels.size() == meshes.size() && messages.Errors == 0 && messages.Warnings == 0);
-    vtkIdType in = 0, out = 0;
-    for (const auto& [index, mesh] : meshes)
-    {
-      auto* table = vtkTable::SafeDownCast(records.at(index));
-      auto* level = vtkPolyData::SafeDownCast(levels.count(index) ? levels.at(index) : nullptr);
-      auto alone = Extract(vtkPolyData::SafeDownCast(mesh), table,
-                           [reduction](auto* f) { f->SetTargetReduction(reduction); });
-      std::string why;
-      CD_CHECK_MSG(level && SameMesh(level, alone, why), "mesh " << index << ": " << why);
-      in += vtkPolyData::SafeDownCast(mesh)->GetNumberOfCells();
-      out += level ? level->GetNumberOfCells() : 0;
-    }
-    CD_CHECK(std::abs(lod->GetActualReduction() - (1.0 - double(out) / double(in))) < 1e-12);
+    ExpectLevelOfEachMesh(lod, meshes, records, reduction);
+    CD_CHECK(messages.Errors == 0 && messages.Warnings == 0);
   }
 
   // The same meshes as a partitioned dataset collection: that type out.
@@ -512,27 +548,8 @@ CD_TEST_CASE(CompositeInput)
   CD_CHECK(vtkPartitionedDataSetCollection::SafeDownCast(lod->GetOutputDataObject(0)));
   CD_CHECK(Leaves(lod->GetOutputDataObject(0)).size() == 2 && messages.Errors == 0);
 
-  // A mesh added that has no record: an error for it, an empty level, the others as before; a
-  // block that is no mesh: a warning, an empty level.
-  vtkNew<vtkMultiBlockDataSet> more;
-  more->ShallowCopy(group);
-  more->SetBlock(2, DecoratedSphere(1));
-  more->SetBlock(3, vtkNew<vtkUnstructuredGrid>());
   run->SetInputData(group);
-  lod->SetInputData(more);
-  lod->Update();
-  const auto levels = Leaves(lod->GetOutputDataObject(0));
-  CD_CHECK(messages.HasError("No collapse record for the mesh at flat index"));
-  CD_CHECK(messages.HasWarning("is a vtkUnstructuredGrid, not a vtkPolyData"));
-  CD_CHECK(levels.size() == 4);
-  vtkIdType kept = 0;
-  for (const auto& [index, level] : levels)
-  {
-    kept += vtkPolyData::SafeDownCast(level)->GetNumberOfCells();
-    CD_CHECK((meshes.count(index) > 0) ==
-             (vtkPolyData::SafeDownCast(level)->GetNumberOfCells() > 0));
-  }
-  CD_CHECK(kept > 0);
+  ExpectMixedBlocks(lod, group, meshes, messages);
 
   // A composite record given as data and edited in place (a column removed, the table marked
   // modified): read again, and refused.
