@@ -1101,7 +1101,7 @@ struct LevelWrite
 };
 
 /// Write the level once `before` (the previous level's file, if valid) is written: one file at
-/// a time, since VTK's PLY writer keeps process-wide state.
+/// a time, so that no VTK writer (of .vtp and .vtk levels) runs beside another.
 void StartWrite(LevelWrite& write, vtkSmartPointer<vtkPolyData> mesh, const Options& options,
                 std::shared_future<std::string> before)
 {

@@ -3,6 +3,7 @@
 #include "ColorDecimationMeshes.h"
 #include "MeshColors.h"
 #include "PlyHeader.h"
+#include "PlyWriter.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -14,7 +15,6 @@
 #include "vtkOBJReader.h"
 #include "vtkObjectFactory.h"
 #include "vtkPLYReader.h"
-#include "vtkPLYWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataWriter.h"
 #include "vtkSTLReader.h"
@@ -533,6 +533,36 @@ bool IsWritableExtension(const std::string& path)
   return ext == ".ply" || ext == ".vtp" || ext == ".vtk";
 }
 
+namespace
+{
+/// The mesh as PLY (PlyWriter.h): the point colours as bytes (mapped by `mapping`, or by the
+/// array's own range), or else the face colours PLY can hold.
+bool WritePlyMesh(vtkPolyData* mesh, const std::string& path, const std::string& colorArrayName,
+                  const ColorMapping* mapping, std::string& error)
+{
+  // PLY's faces are polygons: strips go as their triangles.
+  vtkSmartPointer<vtkPolyData> out =
+    mesh->GetNumberOfStrips() > 0 ? Triangulated(mesh) : vtkSmartPointer<vtkPolyData>(mesh);
+  vtkDataArray* colors = FindColorArray(out, colorArrayName);
+  vtkSmartPointer<vtkUnsignedCharArray> pointColors;
+  vtkUnsignedCharArray* faceColors = nullptr;
+  if (colors && colors->GetNumberOfTuples() == mesh->GetNumberOfPoints())
+  {
+    const int comps = colors->GetNumberOfComponents();
+    pointColors = vtkUnsignedCharArray::SafeDownCast(colors);
+    if (!pointColors || (comps != 3 && comps != 4))
+    {
+      pointColors = ToUnsignedChar(colors, mapping ? *mapping : ColorMapping::Of(colors), true);
+    }
+  }
+  else
+  {
+    faceColors = vtkUnsignedCharArray::SafeDownCast(FindFaceColorArray(out, colorArrayName));
+  }
+  return WritePly(out, path, pointColors, faceColors, error);
+}
+} // namespace
+
 bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& colorArrayName,
                std::string& error, const ColorMapping* mapping)
 {
@@ -541,46 +571,7 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& co
   int ok = 0;
   if (ext == ".ply")
   {
-    vtkNew<vtkPLYWriter> writer;
-    writer->SetFileName(path.c_str());
-    writer->SetFileTypeToBinary();
-    // vtkPLYWriter writes polygons alone: strips go as their triangles.
-    vtkSmartPointer<vtkPolyData> out =
-      mesh->GetNumberOfStrips() > 0 ? Triangulated(mesh) : vtkSmartPointer<vtkPolyData>(mesh);
-    vtkDataArray* colors = FindColorArray(out, colorArrayName);
-    vtkDataArray* written = nullptr; // the point colours as bytes, or else the face colours
-    if (colors && colors->GetNumberOfTuples() == mesh->GetNumberOfPoints())
-    {
-      const int comps = colors->GetNumberOfComponents();
-      written = colors;
-      if (colors->GetDataType() != VTK_UNSIGNED_CHAR || (comps != 3 && comps != 4) ||
-          !colors->GetName() || !*colors->GetName())
-      {
-        auto converted =
-          ToUnsignedChar(colors, mapping ? *mapping : ColorMapping::Of(colors), true);
-        auto copy = vtkSmartPointer<vtkPolyData>::New();
-        copy->ShallowCopy(out);
-        copy->GetPointData()->AddArray(converted);
-        out = copy;
-        written = converted;
-      }
-    }
-    else
-    {
-      written = FindFaceColorArray(out, colorArrayName); // vtkPLYWriter looks in cell data too
-    }
-    if (written)
-    {
-      writer->SetArrayName(written->GetName());
-      writer->SetColorModeToDefault();
-      writer->SetEnableAlpha(written->GetNumberOfComponents() == 4);
-    }
-    else
-    {
-      writer->SetColorModeToOff();
-    }
-    writer->SetInputData(out);
-    ok = writer->Write();
+    return WritePlyMesh(mesh, path, colorArrayName, mapping, error);
   }
   else if (ext == ".vtp")
   {
@@ -683,9 +674,8 @@ vtkDataArray* FindFaceColorArray(vtkPolyData* mesh, const std::string& name)
   vtkDataArray* faces =
     name.empty() ? mesh->GetCellData()->GetScalars() : mesh->GetCellData()->GetArray(name.c_str());
   const int comps = faces ? faces->GetNumberOfComponents() : 0;
-  // vtkPLYWriter numbers face colours by polygon: the cells must be polygons alone.
+  // A PLY file numbers face colours by polygon: the cells must be polygons alone.
   return faces && faces->GetDataType() == VTK_UNSIGNED_CHAR && (comps == 3 || comps == 4) &&
-      faces->GetName() && *faces->GetName() &&
       faces->GetNumberOfTuples() == mesh->GetNumberOfCells() &&
       mesh->GetNumberOfCells() == mesh->GetNumberOfPolys()
     ? faces

@@ -88,8 +88,8 @@ std::string PointArrayNames(vtkPolyData* mesh);
 vtkDataArray* FindColorArray(vtkPolyData* mesh, const std::string& name);
 
 /// Face colours a PLY file can hold: the named cell array (or the active cell scalars), when
-/// it is named unsigned char RGB or RGBA with a tuple a cell and the cells are all polygons;
-/// null otherwise.
+/// it is unsigned char RGB or RGBA with a tuple a cell and the cells are all polygons; null
+/// otherwise.
 vtkDataArray* FindFaceColorArray(vtkPolyData* mesh, const std::string& name);
 
 /**

@@ -1,0 +1,276 @@
+/**
+ * @file TestPlyWriter.cxx
+ * @brief PlyWriter.h against vtkPLYWriter: the same bytes for every kind of mesh both write
+ * (colours of points or faces, with and without alpha, normals, texture coordinates, double
+ * points, polygons, no faces), and where vtkPLYWriter loses data (normals and texture
+ * coordinates that are not floats), the values read back by vtkPLYReader. A polygon of more
+ * than 255 corners and an unwritable path are errors that leave no file.
+ *
+ * Usage: TestPlyWriter DIRECTORY (a scratch folder for the files)
+ */
+#include "PlyWriter.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkNew.h"
+#include "vtkPLYReader.h"
+#include "vtkPLYWriter.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <string>
+#include <sys/stat.h>
+
+namespace
+{
+using colordecimation::tools::WritePly;
+
+int Failures = 0;
+
+void Expect(bool ok, const std::string& what)
+{
+  if (!ok)
+  {
+    std::cerr << "TestPlyWriter: FAILED: " << what << std::endl;
+    ++Failures;
+  }
+}
+
+std::string Bytes(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+bool Exists(const std::string& path)
+{
+  struct stat info;
+  return stat(path.c_str(), &info) == 0;
+}
+
+/// A sphere (float points, float normals) of `resolution`, with none of its arrays but those.
+vtkSmartPointer<vtkPolyData> Sphere(int resolution)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(resolution);
+  sphere->SetPhiResolution(resolution);
+  sphere->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->DeepCopy(sphere->GetOutput());
+  return mesh;
+}
+
+/// Bytes of tuple i: a pattern that differs between tuples and components.
+vtkSmartPointer<vtkUnsignedCharArray> Colors(vtkIdType tuples, int components, const char* name)
+{
+  auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  colors->SetName(name);
+  colors->SetNumberOfComponents(components);
+  colors->SetNumberOfTuples(tuples);
+  for (vtkIdType i = 0; i < tuples * components; ++i)
+  {
+    colors->SetValue(i, static_cast<unsigned char>((i * 37 + i / 7) % 256));
+  }
+  return colors;
+}
+
+vtkSmartPointer<vtkDataArray> TCoords(vtkIdType tuples, bool doubles)
+{
+  vtkSmartPointer<vtkDataArray> tcoords = doubles ? vtkSmartPointer<vtkDataArray>::Take(vtkDoubleArray::New())
+                                                  : vtkSmartPointer<vtkDataArray>::Take(vtkFloatArray::New());
+  tcoords->SetName("uv");
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetNumberOfTuples(tuples);
+  for (vtkIdType i = 0; i < tuples; ++i)
+  {
+    tcoords->SetTuple2(i, 0.001 * double(i), 1.0 / (1.0 + double(i)));
+  }
+  return tcoords;
+}
+
+/// Write `mesh` with vtkPLYWriter (as the CLI set it: binary, the colour array by name, alpha
+/// with 4 components) and with WritePly; the files must be byte for byte the same.
+void ExpectSameAsVtk(vtkPolyData* mesh, vtkUnsignedCharArray* pointColors,
+                     vtkUnsignedCharArray* faceColors, const std::string& dir,
+                     const std::string& name)
+{
+  const std::string theirs = dir + "/" + name + ".vtk.ply";
+  const std::string ours = dir + "/" + name + ".ours.ply";
+  vtkNew<vtkPLYWriter> writer;
+  writer->SetFileName(theirs.c_str());
+  writer->SetFileTypeToBinary();
+  writer->SetInputData(mesh);
+  vtkUnsignedCharArray* colors = pointColors ? pointColors : faceColors;
+  if (colors)
+  {
+    writer->SetArrayName(colors->GetName());
+    writer->SetEnableAlpha(colors->GetNumberOfComponents() == 4);
+  }
+  else
+  {
+    writer->SetColorModeToOff();
+  }
+  Expect(writer->Write() == 1, name + ": vtkPLYWriter wrote its file");
+  std::string error;
+  Expect(WritePly(mesh, ours, pointColors, faceColors, error), name + ": written (" + error + ")");
+  const std::string expected = Bytes(theirs);
+  Expect(expected.size() > 200, name + ": vtkPLYWriter's file is there");
+  Expect(Bytes(ours) == expected, name + ": the same bytes as vtkPLYWriter's file");
+}
+
+void TestSameBytes(const std::string& dir)
+{
+  auto mesh = Sphere(24);
+  const vtkIdType points = mesh->GetNumberOfPoints();
+  const vtkIdType faces = mesh->GetNumberOfCells();
+  ExpectSameAsVtk(mesh, nullptr, nullptr, dir, "normals");
+  mesh->GetPointData()->SetNormals(nullptr);
+  ExpectSameAsVtk(mesh, nullptr, nullptr, dir, "plain");
+  for (int components : { 3, 4 })
+  {
+    const std::string suffix = std::to_string(components);
+    auto rgb = Colors(points, components, "RGB");
+    mesh->GetPointData()->AddArray(rgb);
+    ExpectSameAsVtk(mesh, rgb, nullptr, dir, "point-colors-" + suffix);
+    mesh->GetPointData()->RemoveArray("RGB");
+    auto faceRgb = Colors(faces, components, "FaceRGB");
+    mesh->GetCellData()->AddArray(faceRgb);
+    ExpectSameAsVtk(mesh, nullptr, faceRgb, dir, "face-colors-" + suffix);
+    mesh->GetCellData()->RemoveArray("FaceRGB");
+  }
+  // Everything a vertex can hold: normals, colours with alpha, texture coordinates.
+  auto full = Sphere(17);
+  auto rgba = Colors(full->GetNumberOfPoints(), 4, "RGBA");
+  full->GetPointData()->AddArray(rgba);
+  full->GetPointData()->SetTCoords(TCoords(full->GetNumberOfPoints(), false));
+  ExpectSameAsVtk(full, rgba, nullptr, dir, "full-vertex");
+  // Double points (cast to float), polygons of several sizes, a mesh with no faces.
+  vtkNew<vtkPoints> doubles;
+  doubles->SetDataTypeToDouble();
+  for (int i = 0; i < 12; ++i)
+  {
+    doubles->InsertNextPoint(std::cos(i * 0.5) + 1e-9 * i, std::sin(i * 0.5), 1.0 / 3.0 + i);
+  }
+  vtkNew<vtkCellArray> polygons;
+  polygons->InsertNextCell({ 0, 1, 2 });
+  polygons->InsertNextCell({ 2, 3, 4, 5 });
+  polygons->InsertNextCell({ 5, 6, 7, 8, 9, 10, 11 });
+  vtkNew<vtkPolyData> polygonal;
+  polygonal->SetPoints(doubles);
+  polygonal->SetPolys(polygons);
+  ExpectSameAsVtk(polygonal, nullptr, nullptr, dir, "double-polygons");
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(doubles);
+  ExpectSameAsVtk(cloud, nullptr, nullptr, dir, "no-faces");
+}
+
+vtkSmartPointer<vtkPolyData> ReadBack(const std::string& path)
+{
+  vtkNew<vtkPLYReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(reader->GetOutput());
+  return mesh;
+}
+
+/// Double normals and texture coordinates are written as floats, not dropped.
+void TestDoublesKept(const std::string& dir)
+{
+  auto mesh = Sphere(20);
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  vtkNew<vtkDoubleArray> normals;
+  normals->DeepCopy(mesh->GetPointData()->GetNormals());
+  normals->SetName("N");
+  mesh->GetPointData()->SetNormals(normals);
+  mesh->GetPointData()->SetTCoords(TCoords(n, true));
+  const std::string path = dir + "/doubles.ply";
+  std::string error;
+  Expect(WritePly(mesh, path, nullptr, nullptr, error), "doubles: written (" + error + ")");
+  auto back = ReadBack(path);
+  vtkDataArray* readNormals = back->GetPointData()->GetNormals();
+  vtkDataArray* readTCoords = back->GetPointData()->GetTCoords();
+  Expect(back->GetNumberOfPoints() == n && readNormals && readTCoords,
+         "doubles: the points, normals and texture coordinates read back");
+  if (!readNormals || !readTCoords || back->GetNumberOfPoints() != n)
+  {
+    return;
+  }
+  bool same = true;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      same = same &&
+        readNormals->GetComponent(i, k) == double(float(normals->GetComponent(i, k)));
+    }
+    for (int k = 0; k < 2; ++k)
+    {
+      same = same &&
+        readTCoords->GetComponent(i, k) ==
+          double(float(mesh->GetPointData()->GetTCoords()->GetComponent(i, k)));
+    }
+  }
+  Expect(same, "doubles: every normal and texture coordinate read back as its float");
+}
+
+/// What cannot be written is an error, and no file is left.
+void TestErrors(const std::string& dir)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polygons;
+  polygons->InsertNextCell(300);
+  for (int i = 0; i < 300; ++i)
+  {
+    points->InsertNextPoint(std::cos(i * 0.02), std::sin(i * 0.02), 0.0);
+    polygons->InsertCellPoint(i);
+  }
+  vtkNew<vtkPolyData> wide;
+  wide->SetPoints(points);
+  wide->SetPolys(polygons);
+  const std::string path = dir + "/wide.ply";
+  std::string error;
+  Expect(!WritePly(wide, path, nullptr, nullptr, error) &&
+           error.find("300 corners") != std::string::npos,
+         "a polygon of 300 corners is an error naming it (" + error + ")");
+  Expect(!Exists(path), "no file is left after an error");
+  error.clear();
+  Expect(!WritePly(Sphere(8), dir + "/no/such/folder/x.ply", nullptr, nullptr, error) &&
+           error.find("cannot write") != std::string::npos,
+         "an unwritable path is an error (" + error + ")");
+  auto mesh = Sphere(8);
+  auto wrong = Colors(mesh->GetNumberOfPoints() - 1, 3, "RGB");
+  error.clear();
+  Expect(!WritePly(mesh, dir + "/short.ply", wrong, nullptr, error) &&
+           error.find("colours") != std::string::npos && !Exists(dir + "/short.ply"),
+         "colours of the wrong length are an error (" + error + ")");
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  if (argc != 2)
+  {
+    std::cerr << "Usage: TestPlyWriter DIRECTORY" << std::endl;
+    return 2;
+  }
+  const std::string dir = argv[1];
+  TestSameBytes(dir);
+  TestDoublesKept(dir);
+  TestErrors(dir);
+  if (Failures == 0)
+  {
+    std::cout << "TestPlyWriter: all passed" << std::endl;
+  }
+  return Failures == 0 ? 0 : 1;
+}
