@@ -117,15 +117,14 @@ private:
 struct VertexColumns
 {
   vtkSmartPointer<vtkFloatArray> Points;
-  vtkSmartPointer<vtkFloatArray> Normals;  ///< or none
-  vtkUnsignedCharArray* Colors = nullptr;  ///< or none
+  vtkSmartPointer<vtkFloatArray> Normals; ///< or none
+  vtkUnsignedCharArray* Colors = nullptr; ///< or none
   vtkSmartPointer<vtkFloatArray> TCoords; ///< or none
 
   size_t RecordBytes() const
   {
     return 12 + (this->Normals ? 12 : 0) +
-      (this->Colors ? size_t(this->Colors->GetNumberOfComponents()) : 0) +
-      (this->TCoords ? 8 : 0);
+      (this->Colors ? size_t(this->Colors->GetNumberOfComponents()) : 0) + (this->TCoords ? 8 : 0);
   }
 };
 
@@ -252,8 +251,8 @@ bool WritePly(vtkPolyData* mesh, const std::string& path, vtkUnsignedCharArray* 
   if (n > INT_MAX || !CheckColors(pointColors, n, "point", error) ||
       !CheckColors(faceColors, polys->GetNumberOfCells(), "polygon", error))
   {
-    error = "cannot write '" + path + "': " +
-      (n > INT_MAX ? std::string("PLY's 32-bit ids cannot number its points") : error);
+    error = "cannot write '" + path +
+      "': " + (n > INT_MAX ? std::string("PLY's 32-bit ids cannot number its points") : error);
     return false;
   }
   VertexColumns columns;

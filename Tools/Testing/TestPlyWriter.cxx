@@ -86,8 +86,9 @@ vtkSmartPointer<vtkUnsignedCharArray> Colors(vtkIdType tuples, int components, c
 
 vtkSmartPointer<vtkDataArray> TCoords(vtkIdType tuples, bool doubles)
 {
-  vtkSmartPointer<vtkDataArray> tcoords = doubles ? vtkSmartPointer<vtkDataArray>::Take(vtkDoubleArray::New())
-                                                  : vtkSmartPointer<vtkDataArray>::Take(vtkFloatArray::New());
+  vtkSmartPointer<vtkDataArray> tcoords = doubles
+    ? vtkSmartPointer<vtkDataArray>::Take(vtkDoubleArray::New())
+    : vtkSmartPointer<vtkDataArray>::Take(vtkFloatArray::New());
   tcoords->SetName("uv");
   tcoords->SetNumberOfComponents(2);
   tcoords->SetNumberOfTuples(tuples);
@@ -211,8 +212,7 @@ void TestDoublesKept(const std::string& dir)
   {
     for (int k = 0; k < 3; ++k)
     {
-      same = same &&
-        readNormals->GetComponent(i, k) == double(float(normals->GetComponent(i, k)));
+      same = same && readNormals->GetComponent(i, k) == double(float(normals->GetComponent(i, k)));
     }
     for (int k = 0; k < 2; ++k)
     {
