@@ -23,6 +23,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkVersionMacros.h"
 
 #include <cmath>
 #include <fstream>
@@ -100,11 +101,18 @@ vtkSmartPointer<vtkDataArray> TCoords(vtkIdType tuples, bool doubles)
 }
 
 /// Write `mesh` with vtkPLYWriter (as the CLI set it: binary, the colour array by name, alpha
-/// with 4 components) and with WritePly; the files must be byte for byte the same.
-void ExpectSameAsVtk(vtkPolyData* mesh, vtkUnsignedCharArray* pointColors,
+/// with 4 components) and with WritePly; the files must be byte for byte the same. VTK 9.1's
+/// vtkPLYWriter writes no normals (9.2's does): there both files are of the mesh without them,
+/// and TestDoublesKept reads normals back.
+void ExpectSameAsVtk(vtkPolyData* input, vtkUnsignedCharArray* pointColors,
                      vtkUnsignedCharArray* faceColors, const std::string& dir,
                      const std::string& name)
 {
+  vtkNew<vtkPolyData> mesh;
+  mesh->ShallowCopy(input);
+#if VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 2, 0)
+  mesh->GetPointData()->SetNormals(nullptr);
+#endif
   const std::string theirs = dir + "/" + name + ".vtk.ply";
   const std::string ours = dir + "/" + name + ".ours.ply";
   vtkNew<vtkPLYWriter> writer;
