@@ -1101,7 +1101,8 @@ struct LevelWrite
 };
 
 /// Write the level once `before` (the previous level's file, if valid) is written: one file at
-/// a time, so that no VTK writer (of .vtp and .vtk levels) runs beside another.
+/// a time: levels in .vtp or .vtk go through VTK's writers, which are not run side by side
+/// here (their thread safety is not checked).
 void StartWrite(LevelWrite& write, vtkSmartPointer<vtkPolyData> mesh, const Options& options,
                 std::shared_future<std::string> before)
 {

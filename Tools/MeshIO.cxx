@@ -536,7 +536,7 @@ bool IsWritableExtension(const std::string& path)
 namespace
 {
 /// The mesh as PLY (PlyWriter.h): the point colours as bytes (mapped by `mapping`, or by the
-/// array's own range), or else the face colours PLY can hold.
+/// array's own range) with the face colours of the same name, or else the face colours alone.
 bool WritePlyMesh(vtkPolyData* mesh, const std::string& path, const std::string& colorArrayName,
                   const ColorMapping* mapping, std::string& error)
 {
@@ -554,6 +554,10 @@ bool WritePlyMesh(vtkPolyData* mesh, const std::string& path, const std::string&
     {
       pointColors = ToUnsignedChar(colors, mapping ? *mapping : ColorMapping::Of(colors), true);
     }
+    // Face colours of the same name too (PLY's reader names both RGB or RGBA).
+    const char* name = colors->GetName();
+    faceColors =
+      name && *name ? vtkUnsignedCharArray::SafeDownCast(FindFaceColorArray(out, name)) : nullptr;
   }
   else
   {
@@ -571,7 +575,11 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& co
   int ok = 0;
   if (ext == ".ply")
   {
-    return WritePlyMesh(mesh, path, colorArrayName, mapping, error);
+    if (!WritePlyMesh(mesh, path, colorArrayName, mapping, error))
+    {
+      return false;
+    }
+    ok = 1;
   }
   else if (ext == ".vtp")
   {

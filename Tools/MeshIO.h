@@ -64,9 +64,11 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& desc
 bool IsWritableExtension(const std::string& path);
 
 /**
- * Writes `mesh` to .ply, .vtp or .vtk. For .ply, `colorArrayName` (a point array; may be
- * empty: the active scalars) is written as uchar colours; other colour arrays are converted
- * by `mapping` (MeshColors.h; null: the mapping chosen on this mesh's array), alpha kept.
+ * Writes `mesh` to .ply, .vtp or .vtk. For .ply (PlyWriter.h), `colorArrayName` (a point
+ * array; may be empty: the active scalars) is written as uchar colours, with the face colours
+ * of the same name; other colour arrays are converted by `mapping` (MeshColors.h; null: the
+ * mapping chosen on this mesh's array), alpha kept. Without point colours, the face colours
+ * (FindFaceColorArray) are written.
  */
 bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& colorArrayName,
                std::string& error, const ColorMapping* mapping = nullptr);

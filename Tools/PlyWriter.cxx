@@ -11,6 +11,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <climits>
 #include <cstdio>
@@ -68,8 +69,9 @@ public:
   explicit File(const std::string& path)
     : Path(path)
     , Handle(std::fopen(path.c_str(), "wb"))
+    , Opened(this->Handle != nullptr)
   {
-    this->Fail(this->Handle == nullptr);
+    this->Fail(!this->Opened);
   }
   ~File()
   {
@@ -92,7 +94,10 @@ public:
     }
     if (!this->Error.empty())
     {
-      std::remove(this->Path.c_str());
+      if (this->Opened)
+      {
+        std::remove(this->Path.c_str()); // what this wrote, never what was there
+      }
       error = this->Error;
     }
     return this->Error.empty();
@@ -110,6 +115,7 @@ private:
   }
   std::string Path;
   std::FILE* Handle;
+  bool Opened;
   std::string Error;
 };
 

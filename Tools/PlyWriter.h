@@ -8,12 +8,11 @@
  * extracting the level (docs/BENCHMARK.md). This writes the same bytes from whole blocks: the
  * header vtkPLYWriter writes, then each vertex as x y z, nx ny nz (point normals), red green
  * blue [alpha] (point colours), u v (texture coordinates) and each polygon as a byte count,
- * 32-bit ids and red green blue [alpha] (face colours). Where vtkPLYWriter loses data quietly
- * this keeps it or fails: normals and texture coordinates of any type are written as floats
- * (vtkPLYWriter drops or dereferences them unless they are floats), and a polygon of more than
- * 255 corners, whose count a byte cannot hold, is an error (vtkPLYWriter writes a file its
- * header does not describe). Vertices, lines and strips are not written (PLY's face element
- * holds polygons; the caller triangulates strips).
+ * 32-bit ids and red green blue [alpha] (face colours). It keeps what vtkPLYWriter drops:
+ * normals (VTK 9.1's writes none; 9.2's only floats) and texture coordinates of any type are
+ * written as floats. A polygon of more than 255 corners, whose count a byte cannot hold, is an
+ * error. Vertices, lines and strips are not written (PLY's face element holds polygons; the
+ * caller triangulates strips).
  */
 #ifndef colordecimation_tools_PlyWriter_h
 #define colordecimation_tools_PlyWriter_h

@@ -2,12 +2,15 @@
  * @file TestPlyWriter.cxx
  * @brief PlyWriter.h against vtkPLYWriter: the same bytes for every kind of mesh both write
  * (colours of points or faces, with and without alpha, normals, texture coordinates, double
- * points, polygons, no faces), and where vtkPLYWriter loses data (normals and texture
- * coordinates that are not floats), the values read back by vtkPLYReader. A polygon of more
- * than 255 corners and an unwritable path are errors that leave no file.
+ * points, polygons up to 255 corners, no faces, files of several blocks; point and face
+ * colours together through the CLI's WriteMesh), and where vtkPLYWriter loses data (normals
+ * and texture coordinates that are not floats), the values read back by vtkPLYReader. A
+ * polygon of more than 255 corners and an unwritable path are errors that leave no file (and
+ * remove nothing that was there).
  *
  * Usage: TestPlyWriter DIRECTORY (a scratch folder for the files)
  */
+#include "MeshIO.h"
 #include "PlyWriter.h"
 
 #include "vtkCellArray.h"
@@ -174,10 +177,20 @@ void TestSameBytes(const std::string& dir)
   polygons->InsertNextCell({ 0, 1, 2 });
   polygons->InsertNextCell({ 2, 3, 4, 5 });
   polygons->InsertNextCell({ 5, 6, 7, 8, 9, 10, 11 });
+  polygons->InsertNextCell(255); // the most corners a byte counts
+  for (int i = 0; i < 255; ++i)
+  {
+    polygons->InsertCellPoint(i % 12);
+  }
   vtkNew<vtkPolyData> polygonal;
   polygonal->SetPoints(doubles);
   polygonal->SetPolys(polygons);
   ExpectSameAsVtk(polygonal, nullptr, nullptr, dir, "double-polygons");
+  // Files of several blocks (the writer gathers 1 MiB at a time).
+  auto large = Sphere(400);
+  auto largeRgb = Colors(large->GetNumberOfPoints(), 3, "RGB");
+  large->GetPointData()->AddArray(largeRgb);
+  ExpectSameAsVtk(large, largeRgb, nullptr, dir, "large");
   vtkNew<vtkPolyData> cloud;
   cloud->SetPoints(doubles);
   ExpectSameAsVtk(cloud, nullptr, nullptr, dir, "no-faces");
@@ -232,6 +245,31 @@ void TestDoublesKept(const std::string& dir)
   Expect(same, "doubles: every normal and texture coordinate read back as its float");
 }
 
+/// Through the CLI's WriteMesh: point and face colours of the same name (as vtkPLYReader names
+/// both) are both written, as vtkPLYWriter, given that name, writes them.
+void TestPointAndFaceColors(const std::string& dir)
+{
+  auto mesh = Sphere(24);
+  mesh->GetPointData()->SetNormals(nullptr);
+  auto points = Colors(mesh->GetNumberOfPoints(), 3, "RGB");
+  auto faces = Colors(mesh->GetNumberOfCells(), 3, "RGB");
+  mesh->GetPointData()->SetScalars(points);
+  mesh->GetCellData()->SetScalars(faces);
+  const std::string theirs = dir + "/both.vtk.ply";
+  vtkNew<vtkPLYWriter> writer;
+  writer->SetFileName(theirs.c_str());
+  writer->SetFileTypeToBinary();
+  writer->SetInputData(mesh);
+  writer->SetArrayName("RGB");
+  Expect(writer->Write() == 1, "both colours: vtkPLYWriter wrote its file");
+  std::string error;
+  const std::string ours = dir + "/both.ours.ply";
+  Expect(colordecimation::tools::WriteMesh(mesh, ours, "", error, nullptr),
+         "both colours: written by WriteMesh (" + error + ")");
+  Expect(Bytes(theirs).find("element face") != std::string::npos && Bytes(ours) == Bytes(theirs),
+         "both colours: the same bytes as vtkPLYWriter's file");
+}
+
 /// What cannot be written is an error, and no file is left.
 void TestErrors(const std::string& dir)
 {
@@ -256,6 +294,11 @@ void TestErrors(const std::string& dir)
   Expect(!WritePly(Sphere(8), dir + "/no/such/folder/x.ply", nullptr, nullptr, error) &&
            error.find("cannot write") != std::string::npos,
          "an unwritable path is an error (" + error + ")");
+  const std::string folder = dir + "/folder.ply";
+  mkdir(folder.c_str(), 0755);
+  error.clear();
+  Expect(!WritePly(Sphere(8), folder, nullptr, nullptr, error) && Exists(folder),
+         "a folder in the way is an error, and the folder stays (" + error + ")");
   auto mesh = Sphere(8);
   auto wrong = Colors(mesh->GetNumberOfPoints() - 1, 3, "RGB");
   error.clear();
@@ -275,6 +318,7 @@ int main(int argc, char* argv[])
   const std::string dir = argv[1];
   TestSameBytes(dir);
   TestDoublesKept(dir);
+  TestPointAndFaceColors(dir);
   TestErrors(dir);
   if (Failures == 0)
   {
