@@ -126,6 +126,21 @@ void AddRecordParts(vtkDataObject* record, PartsKey& key)
     }
   }
 }
+/// The tables of a composite record (one for each mesh of the composite input it came from).
+std::vector<vtkDataObject*> RecordTables(vtkCompositeDataSet* record)
+{
+  std::vector<vtkDataObject*> tables;
+  vtkSmartPointer<vtkCompositeDataIterator> it;
+  it.TakeReference(record->NewIterator());
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    if (vtkTable::SafeDownCast(it->GetCurrentDataObject()))
+    {
+      tables.push_back(it->GetCurrentDataObject());
+    }
+  }
+  return tables;
+}
 } // namespace
 
 /// A mesh and its record as last read, kept while neither changes.
@@ -390,6 +405,28 @@ bool vtkColorHalfEdgeLevelOfDetail::ExtractBlocks(vtkCompositeDataSet* input,
 }
 
 //------------------------------------------------------------------------------
+void vtkColorHalfEdgeLevelOfDetail::ExtractSingle(vtkPolyData* input, vtkDataObject* record,
+                                                  Cache& cache, vtkPolyData* output)
+{
+  // A composite record of one mesh serves a single mesh; one of several cannot say whose.
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(record))
+  {
+    const std::vector<vtkDataObject*> tables = RecordTables(composite);
+    if (tables.size() != 1)
+    {
+      vtkErrorMacro(<< "The collapse record is a " << record->GetClassName() << " of "
+                    << tables.size()
+                    << " records (one for each mesh of a composite input) and the input is a "
+                       "single mesh: give the composite input the record was made from, or "
+                       "the same block of both. Output is empty.");
+      return;
+    }
+    record = tables[0];
+  }
+  this->ExtractLevel(input, record, cache, output);
+}
+
+//------------------------------------------------------------------------------
 int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(request),
                                                vtkInformationVector** inputVector,
                                                vtkInformationVector* outputVector)
@@ -433,7 +470,7 @@ int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(reques
     {
       it = it->first == 0 ? std::next(it) : blocks.erase(it);
     }
-    this->ExtractLevel(mesh, record, blocks[0], level);
+    this->ExtractSingle(mesh, record, blocks[0], level);
   }
   const Caches& sums = *this->Cached;
   this->ActualReduction = sums.InputTriangles > 0

@@ -161,6 +161,8 @@ protected:
   bool UpdateCache(vtkPolyData* input, vtkDataObject* record, Cache& cache);
   /// The level of one mesh from its record, into `output`; false (with an error) if none.
   bool ExtractLevel(vtkPolyData* input, vtkDataObject* record, Cache& cache, vtkPolyData* output);
+  /// A single mesh's level: its record is a table, or a composite record holding one table.
+  void ExtractSingle(vtkPolyData* input, vtkDataObject* record, Cache& cache, vtkPolyData* output);
   /// Each leaf mesh of a composite input from the record at the same place in `records`.
   bool ExtractBlocks(vtkCompositeDataSet* input, vtkDataObject* records,
                      vtkCompositeDataSet* output);

@@ -581,6 +581,25 @@ CD_TEST_CASE(CompositeInput)
   lod->SetInputData(group);
   lod->Update();
   CD_CHECK(messages.HasError("No collapse record"));
+
+  // The other way round: a single mesh takes a composite record of one mesh, as its table; a
+  // composite record of several is refused, naming what it is.
+  auto* first = vtkPolyData::SafeDownCast(meshes.begin()->second);
+  vtkNew<vtkMultiBlockDataSet> oneRecord;
+  oneRecord->SetBlock(0, records.begin()->second);
+  messages.Clear();
+  lod->SetInputData(first);
+  lod->SetRecordData(oneRecord);
+  lod->SetTargetReduction(0.9);
+  lod->Update();
+  auto alone = Extract(first, vtkTable::SafeDownCast(records.begin()->second),
+                       [](auto* f) { f->SetTargetReduction(0.9); });
+  std::string why;
+  CD_CHECK_MSG(messages.Errors == 0 && SameMesh(lod->GetOutput(), alone, why), why);
+  lod->SetRecordData(recorded);
+  lod->Update();
+  CD_CHECK(messages.HasError("vtkMultiBlockDataSet of 2 records") &&
+           lod->GetOutput()->GetNumberOfCells() == 0);
 }
 
 // The mesh is read again only when its points or cells change: not when the input is a new
