@@ -39,7 +39,8 @@
  * A composite input (a vtkMultiBlockDataSet or vtkPartitionedDataSetCollection of meshes, on
  * which vtkColorHalfEdgeDecimation makes a record for each mesh, in a composite of the same
  * structure) gives a composite output of the same structure: each mesh's level from the record
- * at its place (a single vtkTable serves an input of one mesh); a block that is not a
+ * at its place (a single vtkTable serves an input of one mesh, and a composite record of one
+ * mesh a single mesh); a block that is not a
  * vtkPolyData or has no record gets an empty level (a warning, an error). The statistics
  * (ActualReduction, ActualError, the collapse counts) are then over all the meshes, and the
  * output is read with GetOutputDataObject(0) (GetOutput() gives only a vtkPolyData: null).
