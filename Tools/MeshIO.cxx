@@ -1,6 +1,7 @@
 #include "MeshIO.h"
 
 #include "ColorDecimationMeshes.h"
+#include "LegacyVtk.h"
 #include "MeshColors.h"
 #include "PlyHeader.h"
 #include "PlyWriter.h"
@@ -460,6 +461,10 @@ vtkSmartPointer<vtkPolyData> ReadByExtension(const std::string& path, const std:
       return nullptr;
     }
     reader->CloseVTKFile();
+    if (!CheckLegacyVtk(path, error))
+    {
+      return nullptr;
+    }
     reader->Update();
     mesh = AsPolyData(reader->GetOutput(), problem);
   }

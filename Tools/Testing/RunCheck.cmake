@@ -4,6 +4,7 @@
 #         [-DMAKE_FILE=path -DMAKE_FILE_KIND=junk|points-only|ascii-ply-no-face|ushort-ply|
 #                                           float-color-grid|strip|face-color-ply|
 #                                           ply-extras|ply-no-index-list|ply-long-face|
+#                                           ascii-vtk-cut|
 #                                           truncated -DMAKE_FILE_FROM=path -DMAKE_FILE_SIZE=n]
 #         [-DCHECK_FILE=path -DCHECK_FILE_REGEX=re] [-DCHECK_FILE_ABSENT=path]
 #         -P RunCheck.cmake -- COMMAND [ARG ...]
@@ -20,7 +21,8 @@
 # PLY with comments, obj_info, CRLF line ends, extra spaces, a uint8/int32 list and a material
 # element with float colours (which VTK's reader does not read as point colours),
 # "ply-no-index-list" one whose faces have no vertex_indices list, "ply-long-face" one face of
-# 300 corners, "truncated" the first MAKE_FILE_SIZE bytes of MAKE_FILE_FROM.
+# 300 corners, "ascii-vtk-cut" an ASCII legacy VTK polydata whose second triangle is cut short
+# (VTK's reader crashed on it), "truncated" the first MAKE_FILE_SIZE bytes of MAKE_FILE_FROM.
 # CHECK_FILE must exist after the command and match CHECK_FILE_REGEX (it is removed first,
 # unless it is MAKE_FILE: a file from an earlier run cannot pass); CHECK_FILE_ABSENT must not
 # (it is removed first too).
@@ -90,6 +92,10 @@ if (DEFINED MAKE_FILE)
       "# vtk DataFile Version 3.0\nfloat colours\nASCII\nDATASET POLYDATA\n"
       "POINTS 36 float\n${points}POLYGONS 50 200\n${cells}"
       "POINT_DATA 36\nSCALARS RGB float 3\nLOOKUP_TABLE default\n${colors}")
+  elseif (MAKE_FILE_KIND STREQUAL "ascii-vtk-cut")
+    file(WRITE "${MAKE_FILE}"
+      "# vtk DataFile Version 3.0\ncut short\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n"
+      "0 0 0 1 0 0 0 1 0 1 1 0\nPOLYGONS 2 8\n3 0 1 2\n3 1")
   elseif (MAKE_FILE_KIND STREQUAL "face-color-ply")
     file(WRITE "${MAKE_FILE}"
       "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
