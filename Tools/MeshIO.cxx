@@ -31,6 +31,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -407,6 +408,37 @@ bool CheckPly(const std::string& path, std::string& error)
   return true;
 }
 
+/// A binary STL file (one that does not start with "solid") holds the 50 bytes of each
+/// triangle its header counts: VTK's reader reads a shorter one without an error.
+bool CheckBinaryStl(const std::string& path, std::string& error)
+{
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in.tellg();
+  char header[84];
+  in.seekg(0);
+  if (size < 0 || !in.read(header, sizeof(header)))
+  {
+    return true; // shorter than a binary header: VTK's reader judges it
+  }
+  std::string start(header, 80);
+  start.erase(0, start.find_first_not_of(" \t\r\n"));
+  std::transform(start.begin(), start.end(), start.begin(), ::tolower);
+  if (start.rfind("solid", 0) == 0)
+  {
+    return true; // ASCII (or a binary file whose header looks like it): VTK's reader decides
+  }
+  const uint64_t count = uint64_t(uint8_t(header[80])) | uint64_t(uint8_t(header[81])) << 8 |
+    uint64_t(uint8_t(header[82])) << 16 | uint64_t(uint8_t(header[83])) << 24;
+  if (uint64_t(size) < 84 + 50 * count)
+  {
+    error = "'" + path + "' cannot be read: its header counts " + std::to_string(count) +
+      " triangles (" + std::to_string(84 + 50 * count) + " bytes), the file has " +
+      std::to_string(size) + " bytes (it is truncated)";
+    return false;
+  }
+  return true;
+}
+
 // The mesh read by the reader of the file's extension, or null with error (the file is
 // not of its type) or problem (the reader gave no polygonal mesh).
 vtkSmartPointer<vtkPolyData> ReadByExtension(const std::string& path, const std::string& ext,
@@ -477,6 +509,10 @@ vtkSmartPointer<vtkPolyData> ReadByExtension(const std::string& path, const std:
   }
   else if (ext == ".stl")
   {
+    if (!CheckBinaryStl(path, error))
+    {
+      return nullptr;
+    }
     vtkNew<vtkSTLReader> reader;
     reader->SetFileName(path.c_str());
     reader->Update();
