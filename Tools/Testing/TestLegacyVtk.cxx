@@ -10,6 +10,7 @@
  * Usage: TestLegacyVtk DIRECTORY (a scratch folder for the files)
  */
 #include "LegacyVtk.h"
+#include "ToolsTest.h"
 
 #include "vtkBitArray.h"
 #include "vtkCellArray.h"
@@ -38,16 +39,7 @@ namespace
 {
 using colordecimation::tools::CheckLegacyVtk;
 
-int Failures = 0;
-
-void Expect(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "TestLegacyVtk: FAILED: " << what << std::endl;
-    ++Failures;
-  }
-}
+using colordecimation::tools::test::Expect;
 
 /// An array of `components` x `tuples` values i * 0.25 (as T's values).
 template <typename Array>
@@ -165,6 +157,7 @@ void TestFile(vtkPolyData* mesh, bool binary, int version, const std::string& di
 
 int main(int argc, char* argv[])
 {
+  colordecimation::tools::test::Name = "TestLegacyVtk";
   if (argc != 2)
   {
     std::cerr << "Usage: TestLegacyVtk DIRECTORY" << std::endl;
@@ -181,9 +174,5 @@ int main(int argc, char* argv[])
   std::string error;
   Expect(CheckLegacyVtk(std::string(argv[1]) + "/none.vtk", error),
          "a file that is not there is left to the reader");
-  if (Failures == 0)
-  {
-    std::cout << "TestLegacyVtk: all passed" << std::endl;
-  }
-  return Failures == 0 ? 0 : 1;
+  return colordecimation::tools::test::Finish();
 }

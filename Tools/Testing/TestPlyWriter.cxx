@@ -12,6 +12,7 @@
  */
 #include "MeshIO.h"
 #include "PlyWriter.h"
+#include "ToolsTest.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -39,16 +40,7 @@ namespace
 {
 using colordecimation::tools::WritePly;
 
-int Failures = 0;
-
-void Expect(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "TestPlyWriter: FAILED: " << what << std::endl;
-    ++Failures;
-  }
-}
+using colordecimation::tools::test::Expect;
 
 std::string Bytes(const std::string& path)
 {
@@ -310,6 +302,7 @@ void TestErrors(const std::string& dir)
 
 int main(int argc, char* argv[])
 {
+  colordecimation::tools::test::Name = "TestPlyWriter";
   if (argc != 2)
   {
     std::cerr << "Usage: TestPlyWriter DIRECTORY" << std::endl;
@@ -320,9 +313,5 @@ int main(int argc, char* argv[])
   TestDoublesKept(dir);
   TestPointAndFaceColors(dir);
   TestErrors(dir);
-  if (Failures == 0)
-  {
-    std::cout << "TestPlyWriter: all passed" << std::endl;
-  }
-  return Failures == 0 ? 0 : 1;
+  return colordecimation::tools::test::Finish();
 }
