@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -18,7 +19,8 @@ namespace
 /// not known here (strings, variants, long, whose size the writer's platform chose).
 int TypeSize(std::string type)
 {
-  std::transform(type.begin(), type.end(), type.begin(), ::tolower);
+  std::transform(type.begin(), type.end(), type.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (type == "bit")
   {
     return -1;
@@ -83,18 +85,25 @@ public:
     return false;
   }
 
-  /// Step past `count` values of `type` (binary: bytes; ASCII: words).
-  Step Values(const std::string& type, uint64_t count)
+  /// Step past `tuples` x `components` values of `type` (binary: bytes; ASCII: words, of
+  /// which VTK's reader, reading words, takes `onLine` from the section's own line).
+  Step Values(const std::string& type, uint64_t tuples, uint64_t components, size_t onLine = 0)
   {
     const int size = TypeSize(type);
+    this->Components = components;
     if (size == 0)
     {
       return Step::Unknown;
     }
+    if (components != 0 && tuples > UINT64_MAX / components)
+    {
+      return Step::Truncated; // more values than any file holds
+    }
+    const uint64_t count = tuples * components;
     if (!this->Binary)
     {
       std::string word;
-      for (uint64_t i = 0; i < count; ++i)
+      for (uint64_t i = std::min<uint64_t>(onLine, count); i < count; ++i)
       {
         if (!(this->In >> word))
         {
@@ -103,36 +112,56 @@ public:
       }
       return Step::Read;
     }
-    const uint64_t bytes = size < 0 ? (count + 7) / 8 : count * uint64_t(size);
     const std::streamoff at = this->In.tellg();
-    if (at < 0 || uint64_t(at) + bytes > this->Size)
+    const uint64_t left = at >= 0 && uint64_t(at) <= this->Size ? this->Size - uint64_t(at) : 0;
+    const uint64_t bytes = size < 0    ? count / 8 + (count % 8 != 0 ? 1 : 0)
+      : count <= left / uint64_t(size) ? count * uint64_t(size)
+                                       : left + 1;
+    if (at < 0 || bytes > left)
     {
       return Step::Truncated;
     }
-    this->In.seekg(at + std::streamoff(bytes));
+    this->In.seekg(at + std::streamoff(bytes)); // forward only
     return Step::Read;
   }
 
   /// Colours and lookup tables: bytes in a binary file, floats in an ASCII one.
-  Step Colors(uint64_t count)
+  Step Colors(uint64_t tuples, uint64_t components, size_t onLine)
   {
-    return this->Values(this->Binary ? "unsigned_char" : "float", count);
+    return this->Values(this->Binary ? "unsigned_char" : "float", tuples, components, onLine);
   }
 
-  /// A METADATA block: its lines up to the first empty one.
-  void SkipMetadata()
+  /// A METADATA block, as VTK's reader reads it: up to an empty line, COMPONENT_NAMES with a
+  /// line for each component of the array before it. INFORMATION (keys of many kinds) and
+  /// anything else end the check.
+  Step Metadata()
   {
     std::string line;
-    while (std::getline(this->In, line) && line.find_first_not_of(" \t\r") != std::string::npos)
+    while (std::getline(this->In, line))
     {
+      std::istringstream split(line);
+      std::string key;
+      if (!(split >> key))
+      {
+        return Step::Read;
+      }
+      if (key != "COMPONENT_NAMES")
+      {
+        return Step::Unknown;
+      }
+      for (uint64_t c = 0; c < this->Components && std::getline(this->In, line); ++c)
+      {
+      }
     }
+    return Step::Read;
   }
 
   std::ifstream In;
   const bool Binary;
   const bool Offsets; ///< cells as offsets and connectivity (version 5)
   const uint64_t Size;
-  uint64_t Tuples = 0; ///< of the current POINT_DATA or CELL_DATA
+  uint64_t Tuples = 0;     ///< of the current POINT_DATA or CELL_DATA
+  uint64_t Components = 0; ///< of the last array, for its METADATA's component names
 };
 
 uint64_t Number(const std::vector<std::string>& words, size_t i)
@@ -140,20 +169,31 @@ uint64_t Number(const std::vector<std::string>& words, size_t i)
   return i < words.size() ? std::strtoull(words[i].c_str(), nullptr, 10) : 0;
 }
 
+/// The words of a section's line after its first `arity` (values, in an ASCII file).
+size_t After(const std::vector<std::string>& words, size_t arity)
+{
+  return words.size() > arity ? words.size() - arity : 0;
+}
+
 std::string Upper(std::string word)
 {
-  std::transform(word.begin(), word.end(), word.begin(), ::toupper);
+  std::transform(word.begin(), word.end(), word.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
   return word;
 }
 
 /// Cells (VERTICES, LINES, POLYGONS, TRIANGLE_STRIPS, CELLS) "n size": version 5's OFFSETS
-/// (n values) and CONNECTIVITY (size values), each under its own type line; before, size
-/// 32-bit integers.
+/// (n values; none, and no lines, when n is 0) and CONNECTIVITY (size values), each under its
+/// own type line; before, size 32-bit integers.
 Step Cells(Walker& walker, const std::vector<std::string>& words)
 {
   if (!walker.Offsets)
   {
-    return walker.Values("int", Number(words, 2));
+    return walker.Values("int", Number(words, 2), 1, After(words, 3));
+  }
+  if (Number(words, 1) == 0)
+  {
+    return Step::Read;
   }
   for (const char* part : { "OFFSETS", "CONNECTIVITY" })
   {
@@ -166,7 +206,8 @@ Step Cells(Walker& walker, const std::vector<std::string>& words)
     {
       return walker.In.eof() ? Step::Truncated : Step::Unknown; // cut in that line, or other
     }
-    const Step step = walker.Values(line[1], Number(words, part[0] == 'O' ? 1 : 2));
+    const Step step =
+      walker.Values(line[1], Number(words, part[0] == 'O' ? 1 : 2), 1, After(line, 2));
     if (step != Step::Read)
     {
       return step;
@@ -183,17 +224,20 @@ Step Field(Walker& walker, const std::vector<std::string>& words)
   for (uint64_t i = 0; i < arrays; ++i)
   {
     std::vector<std::string> line;
-    do
+    if (!walker.Words(line))
     {
-      if (!walker.Words(line))
+      return Step::Truncated;
+    }
+    if (Upper(line[0]) == "METADATA")
+    {
+      const Step step = walker.Metadata();
+      if (step != Step::Read)
       {
-        return Step::Truncated;
+        return step;
       }
-      if (Upper(line[0]) == "METADATA")
-      {
-        walker.SkipMetadata();
-      }
-    } while (Upper(line[0]) == "METADATA");
+      --i; // the array is still to come
+      continue;
+    }
     if (line[0] == "NULL_ARRAY")
     {
       continue;
@@ -202,7 +246,7 @@ Step Field(Walker& walker, const std::vector<std::string>& words)
     {
       return Step::Unknown;
     }
-    const Step step = walker.Values(line[3], Number(line, 1) * Number(line, 2));
+    const Step step = walker.Values(line[3], Number(line, 2), Number(line, 1), After(line, 4));
     if (step != Step::Read)
     {
       return step;
@@ -211,22 +255,56 @@ Step Field(Walker& walker, const std::vector<std::string>& words)
   return Step::Read;
 }
 
-/// SCALARS name type [components], with the optional LOOKUP_TABLE line after it.
+/// SCALARS name type [components] (a line VTK's reader reads whole), with the optional
+/// "LOOKUP_TABLE name" line after it.
 Step Scalars(Walker& walker, const std::vector<std::string>& words)
 {
+  uint64_t components = 1;
+  if (words.size() > 3)
+  {
+    char* end = nullptr;
+    const uint64_t given = std::strtoull(words[3].c_str(), &end, 10);
+    components = end && *end == '\0' && given > 0 ? given : 1;
+  }
   const std::streamoff at = walker.In.tellg();
   std::vector<std::string> next;
   if (!walker.Words(next))
   {
     return walker.Tuples == 0 ? Step::Read : Step::Truncated;
   }
+  size_t onLine = After(next, 2);
   if (Upper(next[0]) != "LOOKUP_TABLE")
   {
     walker.In.clear();
     walker.In.seekg(at);
+    onLine = 0;
   }
-  const uint64_t components = words.size() > 3 ? Number(words, 3) : 1;
-  return walker.Values(words.size() > 2 ? words[2] : "", walker.Tuples * components);
+  return walker.Values(words.size() > 2 ? words[2] : "", walker.Tuples, components, onLine);
+}
+
+/// An array of the current POINT_DATA or CELL_DATA: "KEY name type" with a fixed number of
+/// components, or COLOR_SCALARS "name components", TEXTURE_COORDINATES "name dim type".
+Step Attribute(Walker& walker, const std::string& key, const std::vector<std::string>& words)
+{
+  const uint64_t n = walker.Tuples;
+  if (key == "COLOR_SCALARS")
+  {
+    return walker.Colors(n, Number(words, 2), After(words, 3));
+  }
+  if (key == "TEXTURE_COORDINATES")
+  {
+    return walker.Values(words.size() > 3 ? words[3] : "", n, Number(words, 2), After(words, 4));
+  }
+  const int per = key == "VECTORS" || key == "NORMALS"                    ? 3
+    : key == "TENSORS"                                                    ? 9
+    : key == "TENSORS6"                                                   ? 6
+    : key == "GLOBAL_IDS" || key == "PEDIGREE_IDS" || key == "EDGE_FLAGS" ? 1
+                                                                          : 0;
+  if (per == 0)
+  {
+    return Step::Unknown;
+  }
+  return walker.Values(words.size() > 2 ? words[2] : "", n, per, After(words, 3));
 }
 
 /// One section from its keyword line.
@@ -234,7 +312,6 @@ Step Section(Walker& walker, const std::vector<std::string>& words)
 {
   const std::string key = Upper(words[0]);
   const std::string type = words.size() > 2 ? words[2] : "";
-  const uint64_t n = walker.Tuples;
   if (key == "DATASET" || key == "DIMENSIONS" || key == "ORIGIN" || key == "SPACING" ||
       key == "ASPECT_RATIO")
   {
@@ -242,8 +319,7 @@ Step Section(Walker& walker, const std::vector<std::string>& words)
   }
   if (key == "METADATA")
   {
-    walker.SkipMetadata();
-    return Step::Read;
+    return walker.Metadata();
   }
   if (key == "POINT_DATA" || key == "CELL_DATA")
   {
@@ -252,11 +328,11 @@ Step Section(Walker& walker, const std::vector<std::string>& words)
   }
   if (key == "POINTS")
   {
-    return walker.Values(type, 3 * Number(words, 1));
+    return walker.Values(type, Number(words, 1), 3, After(words, 3));
   }
   if (key == "X_COORDINATES" || key == "Y_COORDINATES" || key == "Z_COORDINATES")
   {
-    return walker.Values(type, Number(words, 1));
+    return walker.Values(type, Number(words, 1), 1, After(words, 3));
   }
   if (key == "VERTICES" || key == "LINES" || key == "POLYGONS" || key == "TRIANGLE_STRIPS" ||
       key == "CELLS")
@@ -265,7 +341,7 @@ Step Section(Walker& walker, const std::vector<std::string>& words)
   }
   if (key == "CELL_TYPES")
   {
-    return walker.Values("int", Number(words, 1));
+    return walker.Values("int", Number(words, 1), 1, After(words, 2));
   }
   if (key == "FIELD")
   {
@@ -275,28 +351,11 @@ Step Section(Walker& walker, const std::vector<std::string>& words)
   {
     return Scalars(walker, words);
   }
-  if (key == "COLOR_SCALARS")
-  {
-    return walker.Colors(n * Number(words, 2));
-  }
   if (key == "LOOKUP_TABLE")
   {
-    return walker.Colors(4 * Number(words, 2));
+    return walker.Colors(Number(words, 2), 4, After(words, 3));
   }
-  const int per = key == "VECTORS" || key == "NORMALS"                    ? 3
-    : key == "TENSORS"                                                    ? 9
-    : key == "TENSORS6"                                                   ? 6
-    : key == "GLOBAL_IDS" || key == "PEDIGREE_IDS" || key == "EDGE_FLAGS" ? 1
-                                                                          : 0;
-  if (per > 0)
-  {
-    return walker.Values(type, n * per);
-  }
-  if (key == "TEXTURE_COORDINATES")
-  {
-    return walker.Values(words.size() > 3 ? words[3] : "", n * Number(words, 2));
-  }
-  return Step::Unknown;
+  return Attribute(walker, key, words);
 }
 } // namespace
 
@@ -311,8 +370,11 @@ bool CheckLegacyVtk(const std::string& path, std::string& error)
   {
     return true; // not a legacy file: VTK's reader says so
   }
-  const std::string number = version.substr(std::string("# vtk DataFile Version").size());
-  const bool offsets = std::strtod(number.c_str(), nullptr) >= 5.0;
+  // Cells as offsets and connectivity from version 5.0 on, the version read as VTK does.
+  int major = 0, minor = 0;
+  const bool offsets = std::sscanf(version.c_str() + std::string("# vtk DataFile Version").size(),
+                                   "%d.%d", &major, &minor) == 2 &&
+    major >= 5;
   Walker walker(path, Upper(format) == "BINARY", offsets, uint64_t(size));
   std::vector<std::string> words;
   for (int skip = 0; skip < 3; ++skip)

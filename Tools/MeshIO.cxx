@@ -23,6 +23,7 @@
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
 #include "vtkXMLUnstructuredGridReader.h"
+#include "vtksys/SystemTools.hxx"
 #if COLORDECIMATION_TOOLS_HAVE_SURFACE_FILTER
 #include "vtkDataSetSurfaceFilter.h"
 #endif
@@ -408,32 +409,29 @@ bool CheckPly(const std::string& path, std::string& error)
   return true;
 }
 
-/// A binary STL file (one that does not start with "solid") holds the 50 bytes of each
-/// triangle its header counts: VTK's reader reads a shorter one without an error.
+/// A binary STL file (binary as VTK's reader tells it: by its first bytes) that ends inside a
+/// triangle its header counts is truncated. VTK's reader, which reads what is there (header
+/// counts are often wrong, so it reads whole triangles to the end), would say nothing.
 bool CheckBinaryStl(const std::string& path, std::string& error)
 {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   const std::streamoff size = in.tellg();
-  char header[84];
+  unsigned char header[84];
   in.seekg(0);
-  if (size < 0 || !in.read(header, sizeof(header)))
+  if (size < 0 || !in.read(reinterpret_cast<char*>(header), sizeof(header)) ||
+      vtksys::SystemTools::DetectFileType(path.c_str()) != vtksys::SystemTools::FileTypeBinary)
   {
-    return true; // shorter than a binary header: VTK's reader judges it
+    return true; // an ASCII file, or none: VTK's reader judges it
   }
-  std::string start(header, 80);
-  start.erase(0, start.find_first_not_of(" \t\r\n"));
-  std::transform(start.begin(), start.end(), start.begin(), ::tolower);
-  if (start.rfind("solid", 0) == 0)
+  const uint64_t count = uint64_t(header[80]) | uint64_t(header[81]) << 8 |
+    uint64_t(header[82]) << 16 | uint64_t(header[83]) << 24;
+  const uint64_t body = uint64_t(size) - 84;
+  if (body < 50 * count && body % 50 != 0)
   {
-    return true; // ASCII (or a binary file whose header looks like it): VTK's reader decides
-  }
-  const uint64_t count = uint64_t(uint8_t(header[80])) | uint64_t(uint8_t(header[81])) << 8 |
-    uint64_t(uint8_t(header[82])) << 16 | uint64_t(uint8_t(header[83])) << 24;
-  if (uint64_t(size) < 84 + 50 * count)
-  {
-    error = "'" + path + "' cannot be read: its header counts " + std::to_string(count) +
-      " triangles (" + std::to_string(84 + 50 * count) + " bytes), the file has " +
-      std::to_string(size) + " bytes (it is truncated)";
+    error = "'" + path + "' cannot be read: it ends inside a triangle (" + std::to_string(body) +
+      " bytes after its header: " + std::to_string(body / 50) + " triangles and " +
+      std::to_string(body % 50) + " bytes, of the " + std::to_string(count) +
+      " its header counts)";
     return false;
   }
   return true;

@@ -4,7 +4,7 @@
 #         [-DMAKE_FILE=path -DMAKE_FILE_KIND=junk|points-only|ascii-ply-no-face|ushort-ply|
 #                                           float-color-grid|strip|face-color-ply|
 #                                           ply-extras|ply-no-index-list|ply-long-face|
-#                                           ascii-vtk-cut|stl-cut|
+#                                           ascii-vtk-cut|stl-cut|stl-bogus-count|
 #                                           truncated -DMAKE_FILE_FROM=path -DMAKE_FILE_SIZE=n]
 #         [-DCHECK_FILE=path -DCHECK_FILE_REGEX=re] [-DCHECK_FILE_ABSENT=path]
 #         -P RunCheck.cmake -- COMMAND [ARG ...]
@@ -22,8 +22,9 @@
 # element with float colours (which VTK's reader does not read as point colours),
 # "ply-no-index-list" one whose faces have no vertex_indices list, "ply-long-face" one face of
 # 300 corners, "ascii-vtk-cut" an ASCII legacy VTK polydata whose second triangle is cut short
-# (VTK's reader crashed on it), "stl-cut" a binary STL whose header counts 538,976,288
-# triangles (the count's bytes are spaces) and holds 3, "truncated" the first MAKE_FILE_SIZE bytes of MAKE_FILE_FROM.
+# (VTK's reader crashed on it), "stl-bogus-count" a binary STL of two
+# whole triangles (4 points) whose header counts 16,843,009, "stl-cut" the same with 20 bytes
+# of a third triangle, "truncated" the first MAKE_FILE_SIZE bytes of MAKE_FILE_FROM.
 # CHECK_FILE must exist after the command and match CHECK_FILE_REGEX (it is removed first,
 # unless it is MAKE_FILE: a file from an earlier run cannot pass); CHECK_FILE_ABSENT must not
 # (it is removed first too).
@@ -97,10 +98,20 @@ if (DEFINED MAKE_FILE)
     file(WRITE "${MAKE_FILE}"
       "# vtk DataFile Version 3.0\ncut short\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n"
       "0 0 0 1 0 0 0 1 0 1 1 0\nPOLYGONS 2 8\n3 0 1 2\n3 1")
-  elseif (MAKE_FILE_KIND STREQUAL "stl-cut")
-    string(REPEAT "x" 80 header)
-    string(REPEAT "abcdefghij" 15 body)
-    file(WRITE "${MAKE_FILE}" "${header}    ${body}")
+  elseif (MAKE_FILE_KIND MATCHES "^stl-(cut|bogus-count)$")
+    # Bytes without a zero, which file(WRITE) cannot write: as floats, e is 2.4e-38 and o is
+    # 1.0078; the header's 84 bytes of 1 count 16,843,009 triangles.
+    string(ASCII 1 1 1 1 e)
+    string(ASCII 1 1 129 63 o)
+    string(ASCII 1 1 attribute)
+    string(REPEAT "${e}" 21 header)
+    set(first "${e}${e}${e}${e}${e}${e}${o}${e}${e}${e}${o}${e}${attribute}")
+    set(second "${e}${e}${e}${o}${e}${e}${o}${o}${e}${e}${o}${e}${attribute}")
+    set(cut "")
+    if (MAKE_FILE_KIND STREQUAL "stl-cut")
+      set(cut "${e}${e}${e}${e}${e}")
+    endif ()
+    file(WRITE "${MAKE_FILE}" "${header}${first}${second}${cut}")
   elseif (MAKE_FILE_KIND STREQUAL "face-color-ply")
     file(WRITE "${MAKE_FILE}"
       "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"

@@ -1,11 +1,13 @@
 /**
  * @file TestLegacyVtk.cxx
- * @brief CheckLegacyVtk (LegacyVtk.h) on files vtkPolyDataWriter writes, ASCII and binary,
- * versions 4.2 and 5.1, with every kind of section (vertices, lines, polygons, strips;
- * colours, scalars with a lookup table, normals, texture coordinates, vectors, tensors,
- * global ids, field arrays of several types with component names, bits): each whole file
- * passes (and VTK reads it), and each file cut inside any of its sections' values fails,
- * naming that section.
+ * @brief CheckLegacyVtk (LegacyVtk.h) on files vtkPolyDataWriter and
+ * vtkUnstructuredGridWriter write, ASCII and binary, versions 4.2 and 5.1, with the sections a
+ * mesh has (vertices, lines, polygons, strips, cells and cell types; colours, scalars with a
+ * lookup table, normals, texture coordinates, vectors, tensors, global ids, field arrays of
+ * several types with component names, one of them empty, bits): each whole file passes (and
+ * VTK reads it), and each file cut inside any of those sections' values fails, naming that
+ * section. Hand-written files: values on a keyword's line, an empty cell section, version "5",
+ * pass; counts of -1 or beyond any file, an ASCII file cut short, fail (and return).
  *
  * Usage: TestLegacyVtk DIRECTORY (a scratch folder for the files)
  */
@@ -15,12 +17,16 @@
 #include "vtkBitArray.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataWriter.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkGenericDataObjectReader.h"
 #include "vtkIdTypeArray.h"
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataReader.h"
 #include "vtkPolyDataWriter.h"
@@ -28,6 +34,8 @@
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridWriter.h"
 
 #include <fstream>
 #include <iostream>
@@ -84,6 +92,10 @@ vtkSmartPointer<vtkPolyData> Everything()
   named->SetComponentName(1, "second");
   pd->AddArray(named);
   pd->AddArray(Values<vtkBitArray>("Flags", 1, n));
+  auto gap = Values<vtkFloatArray>("Gap", 3, n); // a component without a name: an empty line
+  gap->SetComponentName(0, "x");
+  gap->SetComponentName(2, "z");
+  pd->AddArray(gap);
   const vtkIdType cells = mesh->GetNumberOfCells();
   auto scalars = Values<vtkFloatArray>("Pressure", 1, cells);
   vtkNew<vtkLookupTable> table;
@@ -106,10 +118,26 @@ std::string Bytes(const std::string& path)
 std::vector<std::pair<size_t, std::string>> ValueStarts(const std::string& file)
 {
   std::vector<std::pair<size_t, std::string>> starts;
-  for (const char* key :
-       { "POINTS", "OFFSETS", "CONNECTIVITY", "VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS",
-         "COLOR_SCALARS", "LOOKUP_TABLE", "NORMALS", "TEXTURE_COORDINATES", "VECTORS", "TENSORS",
-         "GLOBAL_IDS", "Pair", "Flags", "Area" })
+  for (const char* key : { "POINTS",
+                           "OFFSETS",
+                           "CONNECTIVITY",
+                           "VERTICES",
+                           "LINES",
+                           "POLYGONS",
+                           "TRIANGLE_STRIPS",
+                           "COLOR_SCALARS",
+                           "LOOKUP_TABLE",
+                           "NORMALS",
+                           "TEXTURE_COORDINATES",
+                           "VECTORS",
+                           "TENSORS",
+                           "GLOBAL_IDS",
+                           "Pair",
+                           "Flags",
+                           "Gap",
+                           "Area",
+                           "CELLS",
+                           "CELL_TYPES" })
   {
     for (size_t at = file.find(std::string("\n") + key + " "); at != std::string::npos;
          at = file.find(std::string("\n") + key + " ", at + 1))
@@ -121,26 +149,47 @@ std::vector<std::pair<size_t, std::string>> ValueStarts(const std::string& file)
   return starts;
 }
 
-void TestFile(vtkPolyData* mesh, bool binary, int version, const std::string& dir)
+/// A grid of two triangles and a tetrahedron, for CELLS and CELL_TYPES.
+vtkSmartPointer<vtkUnstructuredGrid> Grid()
 {
-  const std::string name = std::string(binary ? "binary" : "ascii") + "-" + std::to_string(version);
+  vtkNew<vtkPoints> points;
+  for (int i = 0; i < 5; ++i)
+  {
+    points->InsertNextPoint(i % 2, i / 2, i == 4 ? 1.0 : 0.0);
+  }
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetPoints(points);
+  const vtkIdType first[] = { 0, 1, 2 }, second[] = { 1, 3, 2 }, tetra[] = { 0, 1, 2, 4 };
+  grid->InsertNextCell(VTK_TRIANGLE, 3, first);
+  grid->InsertNextCell(VTK_TRIANGLE, 3, second);
+  grid->InsertNextCell(VTK_TETRA, 4, tetra);
+  grid->GetPointData()->SetScalars(Values<vtkUnsignedCharArray>("RGB", 3, 5));
+  return grid;
+}
+
+/// `data` written by `writer` in each format: the whole file passes (and VTK reads it), and
+/// the file cut 2 bytes into the values of each section fails naming the section.
+void TestFile(vtkDataSet* data, vtkDataWriter* writer, bool binary, int version,
+              const std::string& dir, size_t sections)
+{
+  const std::string name = std::string(data->GetClassName()) + "-" + (binary ? "binary" : "ascii") +
+    "-" + std::to_string(version);
   const std::string path = dir + "/" + name + ".vtk";
-  vtkNew<vtkPolyDataWriter> writer;
   writer->SetFileName(path.c_str());
   writer->SetFileVersion(version);
   binary ? writer->SetFileTypeToBinary() : writer->SetFileTypeToASCII();
-  writer->SetInputData(mesh);
+  writer->SetInputDataObject(data);
   Expect(writer->Write() == 1, name + ": written");
   std::string error;
   Expect(CheckLegacyVtk(path, error), name + ": the whole file passes (" + error + ")");
-  vtkNew<vtkPolyDataReader> reader;
+  vtkNew<vtkGenericDataObjectReader> reader;
   reader->SetFileName(path.c_str());
   reader->Update();
-  Expect(reader->GetOutput()->GetNumberOfCells() == mesh->GetNumberOfCells(),
-         name + ": and VTK reads it");
+  auto* read = vtkDataSet::SafeDownCast(reader->GetOutput());
+  Expect(read && read->GetNumberOfCells() == data->GetNumberOfCells(), name + ": VTK reads it");
   const std::string file = Bytes(path);
   const auto starts = ValueStarts(file);
-  Expect(starts.size() >= 14,
+  Expect(starts.size() >= sections,
          name + ": its sections found (" + std::to_string(starts.size()) + ")");
   for (const auto& [start, key] : starts)
   {
@@ -151,6 +200,54 @@ void TestFile(vtkPolyData* mesh, bool binary, int version, const std::string& di
     Expect(!passed && error.find("ends inside its") != std::string::npos,
            name + ": cut 2 bytes into the values after " + key + " at " + std::to_string(start) +
              ": " + (passed ? "passed" : error));
+  }
+}
+/// Files written by hand: what VTK reads must pass, what ends early (or announces more values
+/// than a file can hold) must fail, and nothing may hang.
+void TestHandWritten(const std::string& dir)
+{
+  const std::string header = "# vtk DataFile Version ";
+  const std::string triangle = "\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n";
+  const struct
+  {
+    const char* Name;
+    std::string Text;
+    bool Passes;
+  } files[] = {
+    { "values on the keyword lines",
+      header +
+        "4.2\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 "
+        "float 0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4 3 0 1 2\n",
+      true },
+    { "an empty cell section with no offsets (5.1)",
+      header + "5.1\nx\nASCII" + triangle +
+        "POLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY vtktypeint64\n0 1 2\n"
+        "VERTICES 0 0\n",
+      true },
+    { "version 5 without a minor number (cells as in 4.2)",
+      header + "5\nx\nASCII" + triangle + "POLYGONS 1 4\n3 0 1 2\n", true },
+    { "a lookup table's values on its line",
+      header + "4.2\nx\nASCII" + triangle +
+        "POINT_DATA 3\nSCALARS s float\nLOOKUP_TABLE "
+        "default 1 2 3\n",
+      true },
+    { "a count of -1",
+      header + "5.1\nx\nBINARY\nDATASET POLYDATA\nPOINTS -1 double\n" + std::string(24, '\x01'),
+      false },
+    { "a count beyond any file",
+      header + "5.1\nx\nBINARY\nDATASET POLYDATA\nPOINTS 4611686018427387904 float\n" +
+        std::string(12, '\x01'),
+      false },
+    { "an ASCII triangle cut short",
+      header + "4.2\nx\nASCII" + triangle + "POLYGONS 2 8\n3 0 1 2\n3 1", false },
+  };
+  for (const auto& file : files)
+  {
+    const std::string path = dir + "/hand.vtk";
+    std::ofstream(path, std::ios::binary) << file.Text;
+    std::string error;
+    Expect(CheckLegacyVtk(path, error) == file.Passes,
+           std::string(file.Name) + ": " + (file.Passes ? "passes" : "fails") + " (" + error + ")");
   }
 }
 } // namespace
@@ -164,13 +261,16 @@ int main(int argc, char* argv[])
     return 2;
   }
   auto mesh = Everything();
+  auto grid = Grid();
   for (bool binary : { true, false })
   {
     for (int version : { 42, 51 })
     {
-      TestFile(mesh, binary, version, argv[1]);
+      TestFile(mesh, vtkNew<vtkPolyDataWriter>(), binary, version, argv[1], 17);
+      TestFile(grid, vtkNew<vtkUnstructuredGridWriter>(), binary, version, argv[1], 4);
     }
   }
+  TestHandWritten(argv[1]);
   std::string error;
   Expect(CheckLegacyVtk(std::string(argv[1]) + "/none.vtk", error),
          "a file that is not there is left to the reader");
