@@ -6,6 +6,7 @@
 #include "PlyHeader.h"
 #include "PlyWriter.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -430,11 +431,80 @@ bool CheckBinaryStl(const std::string& path, std::string& error)
   {
     error = "'" + path + "' cannot be read: it ends inside a triangle (" + std::to_string(body) +
       " bytes after its header: " + std::to_string(body / 50) + " triangles and " +
-      std::to_string(body % 50) + " bytes, of the " + std::to_string(count) +
-      " its header counts)";
+      std::to_string(body % 50) + " bytes, of the " + std::to_string(count) + " its header counts)";
     return false;
   }
   return true;
+}
+
+/// The reader of the file's extension, its file name set; null for an extension none reads.
+vtkSmartPointer<vtkAlgorithm> ReaderFor(const std::string& path, const std::string& ext)
+{
+  const auto named = [&path](auto reader)
+  {
+    reader->SetFileName(path.c_str());
+    return vtkSmartPointer<vtkAlgorithm>(reader);
+  };
+  if (ext == ".ply")
+  {
+    return named(vtkSmartPointer<vtkPLYReader>::New());
+  }
+  if (ext == ".vtp")
+  {
+    return named(vtkSmartPointer<vtkXMLPolyDataReader>::New());
+  }
+  if (ext == ".vtu")
+  {
+    return named(vtkSmartPointer<vtkXMLUnstructuredGridReader>::New());
+  }
+  if (ext == ".vtk")
+  {
+    return named(vtkSmartPointer<vtkGenericDataObjectReader>::New());
+  }
+  if (ext == ".obj")
+  {
+    return named(vtkSmartPointer<vtkOBJReader>::New());
+  }
+  if (ext == ".stl")
+  {
+    return named(vtkSmartPointer<vtkSTLReader>::New());
+  }
+  return nullptr;
+}
+
+/// Whether the file is of its extension's type, and holds nothing VTK's reader would crash
+/// on or get wrong without a word (CheckPly, CheckLegacyVtk, CheckBinaryStl); false with
+/// `error`.
+bool CheckBeforeReading(vtkAlgorithm* reader, const std::string& path, const std::string& ext,
+                        std::string& error)
+{
+  if (ext == ".ply" && !vtkPLYReader::CanReadFile(path.c_str()))
+  {
+    error = "'" + path + "' is not a PLY file (it does not start with a PLY header)";
+    return false;
+  }
+  auto* xml = vtkXMLReader::SafeDownCast(reader);
+  if (xml && !xml->CanReadFile(path.c_str()))
+  {
+    error = "'" + path + "' is not a VTK XML " + (ext == ".vtp" ? "PolyData" : "UnstructuredGrid") +
+      " file";
+    return false;
+  }
+  auto* legacy = vtkGenericDataObjectReader::SafeDownCast(reader);
+  if (legacy)
+  {
+    const bool header = legacy->OpenVTKFile() && legacy->ReadHeader();
+    legacy->CloseVTKFile();
+    if (!header)
+    {
+      error = "'" + path + "' is not a legacy VTK file (no '# vtk DataFile' header)";
+      return false;
+    }
+  }
+  return ext == ".ply" ? CheckPly(path, error)
+    : legacy           ? CheckLegacyVtk(path, error)
+    : ext == ".stl"    ? CheckBinaryStl(path, error)
+                       : true;
 }
 
 // The mesh read by the reader of the file's extension, or null with error (the file is
@@ -442,87 +512,19 @@ bool CheckBinaryStl(const std::string& path, std::string& error)
 vtkSmartPointer<vtkPolyData> ReadByExtension(const std::string& path, const std::string& ext,
                                              std::string& problem, std::string& error)
 {
-  vtkSmartPointer<vtkPolyData> mesh;
-  if (ext == ".ply")
-  {
-    if (!vtkPLYReader::CanReadFile(path.c_str()))
-    {
-      error = "'" + path + "' is not a PLY file (it does not start with a PLY header)";
-      return nullptr;
-    }
-    if (!CheckPly(path, error))
-    {
-      return nullptr;
-    }
-    vtkNew<vtkPLYReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = AsPolyData(reader->GetOutput(), problem);
-  }
-  else if (ext == ".vtp" || ext == ".vtu")
-  {
-    vtkSmartPointer<vtkXMLReader> reader;
-    if (ext == ".vtp")
-    {
-      reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    }
-    else
-    {
-      reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
-    }
-    if (!reader->CanReadFile(path.c_str()))
-    {
-      error = "'" + path + "' is not a VTK XML " +
-        (ext == ".vtp" ? "PolyData" : "UnstructuredGrid") + " file";
-      return nullptr;
-    }
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = AsPolyData(reader->GetOutputDataObject(0), problem);
-  }
-  else if (ext == ".vtk")
-  {
-    vtkNew<vtkGenericDataObjectReader> reader;
-    reader->SetFileName(path.c_str());
-    if (!reader->OpenVTKFile() || !reader->ReadHeader())
-    {
-      reader->CloseVTKFile();
-      error = "'" + path + "' is not a legacy VTK file (no '# vtk DataFile' header)";
-      return nullptr;
-    }
-    reader->CloseVTKFile();
-    if (!CheckLegacyVtk(path, error))
-    {
-      return nullptr;
-    }
-    reader->Update();
-    mesh = AsPolyData(reader->GetOutput(), problem);
-  }
-  else if (ext == ".obj")
-  {
-    vtkNew<vtkOBJReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = AsPolyData(reader->GetOutput(), problem);
-  }
-  else if (ext == ".stl")
-  {
-    if (!CheckBinaryStl(path, error))
-    {
-      return nullptr;
-    }
-    vtkNew<vtkSTLReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    mesh = AsPolyData(reader->GetOutput(), problem);
-  }
-  else
+  vtkSmartPointer<vtkAlgorithm> reader = ReaderFor(path, ext);
+  if (!reader)
   {
     error = "unsupported input type '" + (ext.empty() ? std::string("(no extension)") : ext) +
       "' for '" + path + "' (expected .ply, .vtp, .vtu, .vtk, .obj, .stl or demo:)";
     return nullptr;
   }
-  return mesh;
+  if (!CheckBeforeReading(reader, path, ext, error))
+  {
+    return nullptr;
+  }
+  reader->Update();
+  return AsPolyData(reader->GetOutputDataObject(0), problem);
 }
 } // namespace
 

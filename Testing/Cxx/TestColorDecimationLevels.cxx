@@ -501,6 +501,45 @@ void ExpectMixedBlocks(vtkColorHalfEdgeLevelOfDetail* lod, vtkMultiBlockDataSet*
   CD_CHECK(kept > 0);
 }
 
+/// A single record serves a composite of one mesh (whatever other blocks it has), not one of
+/// several; the other way round, a single mesh takes a composite record of one mesh, as its
+/// table, and a composite record of several is refused, naming what it is.
+void ExpectSingleRecords(vtkColorHalfEdgeLevelOfDetail* lod, vtkMultiBlockDataSet* group,
+                         const LeafMap& meshes, const LeafMap& records, vtkDataObject* recorded,
+                         EventRecorder& messages)
+{
+  vtkNew<vtkMultiBlockDataSet> one;
+  one->SetBlock(0, meshes.begin()->second);
+  one->SetBlock(1, vtkNew<vtkUnstructuredGrid>());
+  messages.Clear();
+  lod->SetInputData(one);
+  lod->SetRecordData(records.begin()->second);
+  lod->Update();
+  CD_CHECK(messages.Errors == 0 && Leaves(lod->GetOutputDataObject(0)).size() == 2);
+  CD_CHECK(vtkPolyData::SafeDownCast(Leaves(lod->GetOutputDataObject(0)).begin()->second)
+             ->GetNumberOfCells() > 0);
+  lod->SetInputData(group);
+  lod->Update();
+  CD_CHECK(messages.HasError("No collapse record"));
+
+  auto* first = vtkPolyData::SafeDownCast(meshes.begin()->second);
+  vtkNew<vtkMultiBlockDataSet> oneRecord;
+  oneRecord->SetBlock(0, records.begin()->second);
+  messages.Clear();
+  lod->SetInputData(first);
+  lod->SetRecordData(oneRecord);
+  lod->SetTargetReduction(0.9);
+  lod->Update();
+  auto alone = Extract(first, vtkTable::SafeDownCast(records.begin()->second),
+                       [](auto* f) { f->SetTargetReduction(0.9); });
+  std::string why;
+  CD_CHECK_MSG(messages.Errors == 0 && SameMesh(lod->GetOutput(), alone, why), why);
+  lod->SetRecordData(recorded);
+  lod->Update();
+  CD_CHECK(messages.HasError("vtkMultiBlockDataSet of 2 records") &&
+           lod->GetOutput()->GetNumberOfCells() == 0);
+}
+
 // A composite input (multiblock, nested; partitioned collection): the decimation makes a record
 // for each mesh in a composite of the same structure, and the level filter gives a composite
 // output of that type whose each mesh is the level extracted from that mesh's own record; the
@@ -566,40 +605,7 @@ CD_TEST_CASE(CompositeInput)
   lod->Update();
   CD_CHECK(messages.HasError("lacks one of the columns"));
 
-  // A single record serves a composite of one mesh (whatever other blocks it has), not one of
-  // several.
-  vtkNew<vtkMultiBlockDataSet> one;
-  one->SetBlock(0, meshes.begin()->second);
-  one->SetBlock(1, vtkNew<vtkUnstructuredGrid>());
-  messages.Clear();
-  lod->SetInputData(one);
-  lod->SetRecordData(records.begin()->second);
-  lod->Update();
-  CD_CHECK(messages.Errors == 0 && Leaves(lod->GetOutputDataObject(0)).size() == 2);
-  CD_CHECK(vtkPolyData::SafeDownCast(Leaves(lod->GetOutputDataObject(0)).begin()->second)
-             ->GetNumberOfCells() > 0);
-  lod->SetInputData(group);
-  lod->Update();
-  CD_CHECK(messages.HasError("No collapse record"));
-
-  // The other way round: a single mesh takes a composite record of one mesh, as its table; a
-  // composite record of several is refused, naming what it is.
-  auto* first = vtkPolyData::SafeDownCast(meshes.begin()->second);
-  vtkNew<vtkMultiBlockDataSet> oneRecord;
-  oneRecord->SetBlock(0, records.begin()->second);
-  messages.Clear();
-  lod->SetInputData(first);
-  lod->SetRecordData(oneRecord);
-  lod->SetTargetReduction(0.9);
-  lod->Update();
-  auto alone = Extract(first, vtkTable::SafeDownCast(records.begin()->second),
-                       [](auto* f) { f->SetTargetReduction(0.9); });
-  std::string why;
-  CD_CHECK_MSG(messages.Errors == 0 && SameMesh(lod->GetOutput(), alone, why), why);
-  lod->SetRecordData(recorded);
-  lod->Update();
-  CD_CHECK(messages.HasError("vtkMultiBlockDataSet of 2 records") &&
-           lod->GetOutput()->GetNumberOfCells() == 0);
+  ExpectSingleRecords(lod, group, meshes, records, recorded, messages);
 }
 
 // The mesh is read again only when its points or cells change: not when the input is a new
