@@ -323,10 +323,12 @@ void ReadControls(ByteReader& in, vtkPolyData* mesh, Settings& settings)
   mesh->GetPointData()->AddArray(locks);
 }
 
-vtkSmartPointer<vtkPolyData> Build(ByteReader& in, Settings& settings)
+/// The settings from the first bytes (options and more: the two flag bytes, kept for what
+/// follows); the coordinates' scale.
+double ReadSettings(ByteReader& in, Settings& settings, uint8_t& options, uint8_t& more)
 {
-  const uint8_t options = in.Byte();
-  const uint8_t more = in.Byte();
+  options = in.Byte();
+  more = in.Byte();
   settings.Metric = options & 3;
   settings.ColorSpace = (more & 8) ? vtkColorHalfEdgeDecimation::CIELab : 0;
   settings.OptimalPlacement = (more & 16) != 0;
@@ -339,12 +341,14 @@ vtkSmartPointer<vtkPolyData> Build(ByteReader& in, Settings& settings)
   settings.TargetReduction = TargetReduction(in.Byte());
   settings.NormalAngle = NormalAngle(in.Byte());
   settings.GeometryWeight = GeometryWeight(in.Byte());
-  const double scale = Scale(in.Byte());
+  return Scale(in.Byte());
+}
 
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+vtkSmartPointer<vtkPoints> ReadPoints(ByteReader& in, bool doubles, double scale)
+{
   const vtkIdType numPoints = in.Byte() % 251;
-  vtkNew<vtkPoints> points;
-  points->SetDataType((options & 16) ? VTK_DOUBLE : VTK_FLOAT);
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataType(doubles ? VTK_DOUBLE : VTK_FLOAT);
   points->SetNumberOfPoints(numPoints);
   for (vtkIdType i = 0; i < numPoints; ++i)
   {
@@ -355,8 +359,13 @@ vtkSmartPointer<vtkPolyData> Build(ByteReader& in, Settings& settings)
     }
     points->SetPoint(i, p);
   }
-  mesh->SetPoints(points);
+  return points;
+}
 
+/// Triangles (a 16-bit count, then their ids), more polygons, strips, vertices and lines.
+void ReadAllCells(ByteReader& in, vtkPolyData* mesh)
+{
+  const vtkIdType numPoints = mesh->GetNumberOfPoints();
   vtkNew<vtkCellArray> polys;
   int numTriangles = in.Byte();
   numTriangles |= in.Byte() << 8;
@@ -370,11 +379,9 @@ vtkSmartPointer<vtkPolyData> Build(ByteReader& in, Settings& settings)
     polys->InsertNextCell(3, ids);
   }
   ReadCells(in, numPoints, 9, polys);
-  vtkNew<vtkCellArray> strips;
+  vtkNew<vtkCellArray> strips, verts, lines;
   ReadCells(in, numPoints, 12, strips);
-  vtkNew<vtkCellArray> verts;
   ReadCells(in, numPoints, 4, verts);
-  vtkNew<vtkCellArray> lines;
   ReadCells(in, numPoints, 5, lines);
   mesh->SetPolys(polys);
   if (strips->GetNumberOfCells())
@@ -389,56 +396,67 @@ vtkSmartPointer<vtkPolyData> Build(ByteReader& in, Settings& settings)
   {
     mesh->SetLines(lines);
   }
-  const vtkIdType numCells = mesh->GetNumberOfCells();
+}
 
+/// The colours as the point scalars (named "Color" unless `more` & 4), or, for kind 15, as a
+/// cell array selected by name, which the filter must refuse.
+void AddColors(ByteReader& in, vtkPolyData* mesh, uint8_t more, Settings& settings)
+{
   int kind = 0;
-  vtkSmartPointer<vtkDataArray> colors = ReadColors(in, numPoints, kind);
-  if (colors)
+  vtkSmartPointer<vtkDataArray> colors = ReadColors(in, mesh->GetNumberOfPoints(), kind);
+  if (!colors)
   {
-    if (!(more & 4))
-    {
-      colors->SetName("Color");
-    }
-    if (kind == 15)
-    {
-      // A cell-data colour array selected by name: the filter must refuse it.
-      colors->SetName("Color");
-      colors->SetNumberOfTuples(numCells);
-      if (colors->GetNumberOfValues() > 0)
-      {
-        std::memset(colors->GetVoidPointer(0), 128,
-                    static_cast<size_t>(colors->GetNumberOfValues()) * colors->GetDataTypeSize());
-      }
-      mesh->GetCellData()->AddArray(colors);
-      settings.ColorByName = true;
-    }
-    else
-    {
-      mesh->GetPointData()->SetScalars(colors);
-    }
+    return;
   }
-  if (more & 1)
+  if (!(more & 4))
   {
+    colors->SetName("Color");
+  }
+  if (kind != 15)
+  {
+    mesh->GetPointData()->SetScalars(colors);
+    return;
+  }
+  colors->SetName("Color");
+  colors->SetNumberOfTuples(mesh->GetNumberOfCells());
+  if (colors->GetNumberOfValues() > 0)
+  {
+    std::memset(colors->GetVoidPointer(0), 128,
+                static_cast<size_t>(colors->GetNumberOfValues()) * colors->GetDataTypeSize());
+  }
+  mesh->GetCellData()->AddArray(colors);
+  settings.ColorByName = true;
+}
+
+/// Ghost flags from the bytes: of the cells when `more` & 1, of the points when `more` & 2.
+void AddGhosts(ByteReader& in, vtkPolyData* mesh, uint8_t more)
+{
+  for (vtkDataSetAttributes* data : { static_cast<vtkDataSetAttributes*>(mesh->GetCellData()),
+                                      static_cast<vtkDataSetAttributes*>(mesh->GetPointData()) })
+  {
+    const bool cells = data == mesh->GetCellData();
+    if (!(more & (cells ? 1 : 2)))
+    {
+      continue;
+    }
+    const vtkIdType count = cells ? mesh->GetNumberOfCells() : mesh->GetNumberOfPoints();
     vtkNew<vtkUnsignedCharArray> ghosts;
     ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
-    ghosts->SetNumberOfValues(numCells);
-    for (vtkIdType c = 0; c < numCells; ++c)
-    {
-      ghosts->SetValue(c, in.Byte());
-    }
-    mesh->GetCellData()->AddArray(ghosts);
-  }
-  if (more & 2)
-  {
-    vtkNew<vtkUnsignedCharArray> ghosts;
-    ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
-    ghosts->SetNumberOfValues(numPoints);
-    for (vtkIdType i = 0; i < numPoints; ++i)
+    ghosts->SetNumberOfValues(count);
+    for (vtkIdType i = 0; i < count; ++i)
     {
       ghosts->SetValue(i, in.Byte());
     }
-    mesh->GetPointData()->AddArray(ghosts);
+    data->AddArray(ghosts);
   }
+}
+
+/// Arrays to carry (options & 64: a 2-component point array and cell ids) and a stale
+/// original-ids array to replace (options & 128).
+void AddExtraArrays(vtkPolyData* mesh, uint8_t options)
+{
+  const vtkIdType numPoints = mesh->GetNumberOfPoints();
+  const vtkIdType numCells = mesh->GetNumberOfCells();
   if (options & 64)
   {
     vtkNew<vtkFloatArray> extra;
@@ -467,6 +485,19 @@ vtkSmartPointer<vtkPolyData> Build(ByteReader& in, Settings& settings)
     stale->FillValue(-7);
     mesh->GetPointData()->AddArray(stale);
   }
+}
+
+/// The mesh and the settings the bytes describe, read in this order.
+vtkSmartPointer<vtkPolyData> Build(ByteReader& in, Settings& settings)
+{
+  uint8_t options = 0, more = 0;
+  const double scale = ReadSettings(in, settings, options, more);
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(ReadPoints(in, (options & 16) != 0, scale));
+  ReadAllCells(in, mesh);
+  AddColors(in, mesh, more, settings);
+  AddGhosts(in, mesh, more);
+  AddExtraArrays(mesh, options);
   ReadControls(in, mesh, settings);
   return mesh;
 }
