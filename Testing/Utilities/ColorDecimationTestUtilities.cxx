@@ -181,34 +181,21 @@ std::ostream& operator<<(std::ostream& os, const Topology& t)
             << ", triangles repeating an id " << t.RepeatedIdTriangles;
 }
 
-Topology AnalyseTopology(const std::vector<Tri>& tris)
+namespace
 {
-  Topology topo;
-  struct EdgeUse
-  {
-    int Forward = 0;  ///< used as (min, max)
-    int Backward = 0; ///< used as (max, min)
-  };
-  std::map<std::pair<vtkIdType, vtkIdType>, EdgeUse> edges;
-  std::map<vtkIdType, std::vector<std::pair<vtkIdType, vtkIdType>>> links;
-  for (const Tri& t : tris)
-  {
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || t[0] < 0)
-    {
-      ++topo.RepeatedIdTriangles;
-      continue;
-    }
-    ++topo.Faces;
-    for (int k = 0; k < 3; ++k)
-    {
-      const vtkIdType a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
-      EdgeUse& use = edges[{ std::min(a, b), std::max(a, b) }];
-      (a < b ? use.Forward : use.Backward) += 1;
-      links[a].emplace_back(b, c);
-    }
-  }
-  topo.Vertices = static_cast<long long>(links.size());
-  topo.Edges = static_cast<long long>(edges.size());
+struct EdgeUse
+{
+  int Forward = 0;  ///< used as (min, max)
+  int Backward = 0; ///< used as (max, min)
+};
+using EdgeUseMap = std::map<std::pair<vtkIdType, vtkIdType>, EdgeUse>;
+/// Each vertex's link: the edges opposite it in its triangles, oriented.
+using Links = std::map<vtkIdType, std::vector<std::pair<vtkIdType, vtkIdType>>>;
+
+/// The boundary edges (each to the edges leaving its end), non-manifold and misoriented edges
+/// counted into `topo`.
+std::map<vtkIdType, std::vector<vtkIdType>> CountEdges(const EdgeUseMap& edges, Topology& topo)
+{
   std::map<vtkIdType, std::vector<vtkIdType>> boundaryNext;
   for (const auto& e : edges)
   {
@@ -234,7 +221,13 @@ Topology AnalyseTopology(const std::vector<Tri>& tris)
       ++topo.MisorientedEdges;
     }
   }
-  // Boundary loops: follow each boundary edge to the boundary edge leaving its end.
+  return boundaryNext;
+}
+
+/// Boundary loops: each boundary edge followed to the boundary edge leaving its end.
+long long CountBoundaryLoops(const std::map<vtkIdType, std::vector<vtkIdType>>& boundaryNext)
+{
+  long long loops = 0;
   std::set<std::pair<vtkIdType, vtkIdType>> seen;
   for (const auto& start : boundaryNext)
   {
@@ -244,7 +237,7 @@ Topology AnalyseTopology(const std::vector<Tri>& tris)
       {
         continue;
       }
-      ++topo.BoundaryLoops;
+      ++loops;
       vtkIdType a = start.first;
       while (!seen.count({ a, b }))
       {
@@ -259,52 +252,82 @@ Topology AnalyseTopology(const std::vector<Tri>& tris)
       }
     }
   }
-  // A manifold vertex's link (the edges opposite it, oriented) is one path or one cycle.
+  return loops;
+}
+
+/// A manifold vertex's link is one path or one cycle.
+bool IsManifoldLink(const std::vector<std::pair<vtkIdType, vtkIdType>>& link)
+{
+  std::map<vtkIdType, vtkIdType> next;
+  std::map<vtkIdType, int> indegree;
+  for (const auto& e : link)
+  {
+    if (!next.emplace(e.first, e.second).second || ++indegree[e.second] != 1)
+    {
+      return false;
+    }
+  }
+  std::set<vtkIdType> visited;
+  int components = 0;
+  auto walk = [&](vtkIdType s)
+  {
+    ++components;
+    for (vtkIdType v = s; !visited.count(v);)
+    {
+      visited.insert(v);
+      auto it = next.find(v);
+      if (it == next.end())
+      {
+        break;
+      }
+      v = it->second;
+    }
+  };
+  for (const auto& e : next)
+  {
+    if (!indegree.count(e.first))
+    {
+      walk(e.first); // a path starts here
+    }
+  }
+  for (const auto& e : next)
+  {
+    if (!visited.count(e.first))
+    {
+      walk(e.first); // a cycle
+    }
+  }
+  return components == 1;
+}
+} // namespace
+
+Topology AnalyseTopology(const std::vector<Tri>& tris)
+{
+  Topology topo;
+  EdgeUseMap edges;
+  Links links;
+  for (const Tri& t : tris)
+  {
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || t[0] < 0)
+    {
+      ++topo.RepeatedIdTriangles;
+      continue;
+    }
+    ++topo.Faces;
+    for (int k = 0; k < 3; ++k)
+    {
+      const vtkIdType a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
+      EdgeUse& use = edges[{ std::min(a, b), std::max(a, b) }];
+      (a < b ? use.Forward : use.Backward) += 1;
+      links[a].emplace_back(b, c);
+    }
+  }
+  topo.Vertices = static_cast<long long>(links.size());
+  topo.Edges = static_cast<long long>(edges.size());
+  topo.BoundaryLoops = CountBoundaryLoops(CountEdges(edges, topo));
   for (const auto& link : links)
   {
-    std::map<vtkIdType, vtkIdType> next;
-    std::map<vtkIdType, int> indegree;
-    bool ok = true;
-    for (const auto& e : link.second)
-    {
-      ok = ok && next.emplace(e.first, e.second).second;
-      ok = ok && ++indegree[e.second] == 1;
-    }
-    if (ok)
-    {
-      std::set<vtkIdType> visited;
-      int components = 0;
-      auto walk = [&](vtkIdType s)
-      {
-        ++components;
-        for (vtkIdType v = s; !visited.count(v);)
-        {
-          visited.insert(v);
-          auto it = next.find(v);
-          if (it == next.end())
-          {
-            break;
-          }
-          v = it->second;
-        }
-      };
-      for (const auto& e : next)
-      {
-        if (!indegree.count(e.first))
-        {
-          walk(e.first); // a path starts here
-        }
-      }
-      for (const auto& e : next)
-      {
-        if (!visited.count(e.first))
-        {
-          walk(e.first); // a cycle
-        }
-      }
-      ok = components == 1;
-    }
-    topo.NonManifoldVertices += ok ? 0 : 1;
+    topo.NonManifoldVertices += IsManifoldLink(link.second) ? 0 : 1;
   }
   return topo;
 }
