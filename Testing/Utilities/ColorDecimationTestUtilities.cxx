@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -486,6 +487,36 @@ void UpNormal(const double*, double n[3])
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+/// Each array of `in` is in `out`, of its kind, with `count` tuples, tuple i a copy of input
+/// tuple source(i); what differs goes to `fail` (`what`: "point" or "cell").
+void CheckArraysCopied(vtkDataSetAttributes* in, vtkDataSetAttributes* out, vtkIdType count,
+                       const char* what, const std::function<vtkIdType(vtkIdType)>& source,
+                       const std::function<void(const std::string&)>& fail)
+{
+  for (int a = 0; a < in->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* from = in->GetAbstractArray(a);
+    vtkAbstractArray* to = out->GetAbstractArray(from->GetName());
+    const std::string name = std::string(what) + " array " + NameOf(from);
+    if (!SameKind(from, to) || to->GetNumberOfTuples() != count)
+    {
+      fail(name + " missing or of another type or size");
+      continue;
+    }
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      if (!SameTuple(from, source(i), to, i))
+      {
+        fail(name + " tuple " + std::to_string(i) + " is not a copy of input tuple " +
+             std::to_string(source(i)));
+      }
+    }
+  }
+}
+} // namespace
+
 long long CheckPointDataCopied(vtkPolyData* input, vtkPolyData* output)
 {
   long long bad = 0;
@@ -528,29 +559,8 @@ long long CheckPointDataCopied(vtkPolyData* input, vtkPolyData* output)
   }
   vtkPointData* inPD = input->GetPointData();
   vtkPointData* outPD = output->GetPointData();
-  for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* in = inPD->GetAbstractArray(a);
-    vtkAbstractArray* out = outPD->GetAbstractArray(in->GetName());
-    if (!SameKind(in, out))
-    {
-      fail(std::string("point array ") + NameOf(in) + " missing or of another type");
-      continue;
-    }
-    if (out->GetNumberOfTuples() != nOut)
-    {
-      fail(std::string("point array ") + NameOf(in) + " has the wrong number of tuples");
-      continue;
-    }
-    for (vtkIdType i = 0; i < nOut; ++i)
-    {
-      if (!SameTuple(in, ids->GetValue(i), out, i))
-      {
-        fail(std::string("point array ") + NameOf(in) + " tuple " + std::to_string(i) +
-             " is not a copy of input tuple " + std::to_string(ids->GetValue(i)));
-      }
-    }
-  }
+  CheckArraysCopied(
+    inPD, outPD, nOut, "point", [ids](vtkIdType i) { return ids->GetValue(i); }, fail);
   if (outPD->GetNumberOfArrays() != inPD->GetNumberOfArrays() + 1)
   {
     fail("the output has " + std::to_string(outPD->GetNumberOfArrays()) +
@@ -571,6 +581,45 @@ long long CheckPointDataCopied(vtkPolyData* input, vtkPolyData* output)
   }
   return bad;
 }
+
+namespace
+{
+/// Output triangles identical to an input triangle come from that triangle (SourceId); their
+/// number.
+long long CheckIdenticalTriangles(vtkPolyData* input, vtkPolyData* output,
+                                  vtkIdTypeArray* outSource,
+                                  const std::function<void(const std::string&)>& fail)
+{
+  // Output triangles identical to an input triangle come from that triangle.
+  std::map<Tri, vtkIdType> inputTriangles;
+  const vtkIdType polyOffset = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  const std::vector<Tri> inTris = GetTriangles(input);
+  for (size_t i = 0; i < inTris.size(); ++i)
+  {
+    if (inTris[i][0] >= 0)
+    {
+      inputTriangles[Canonical(inTris[i])] = polyOffset + static_cast<vtkIdType>(i);
+    }
+  }
+  const std::vector<Tri> outTris = GetOriginalTriangles(output);
+  long long identical = 0;
+  for (size_t t = 0; t < outTris.size(); ++t)
+  {
+    auto it = inputTriangles.find(Canonical(outTris[t]));
+    if (it != inputTriangles.end())
+    {
+      ++identical;
+      if (outSource->GetValue(static_cast<vtkIdType>(t)) != it->second)
+      {
+        fail("output triangle " + std::to_string(t) + " is input triangle " +
+             std::to_string(it->second) + " but its cell data comes from cell " +
+             std::to_string(outSource->GetValue(static_cast<vtkIdType>(t))));
+      }
+    }
+  }
+  return identical;
+}
+} // namespace
 
 long long CheckCellDataCopied(vtkPolyData* input, vtkPolyData* output, long long* untouched)
 {
@@ -610,53 +659,10 @@ long long CheckCellDataCopied(vtkPolyData* input, vtkPolyData* output, long long
       fail("input triangle " + std::to_string(s) + " gave two output triangles");
     }
   }
-  vtkCellData* inCD = input->GetCellData();
-  vtkCellData* outCD = output->GetCellData();
-  for (int a = 0; a < inCD->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* in = inCD->GetAbstractArray(a);
-    vtkAbstractArray* out = outCD->GetAbstractArray(in->GetName());
-    if (!SameKind(in, out) || out->GetNumberOfTuples() != nOutCells)
-    {
-      fail(std::string("cell array ") + NameOf(in) + " missing or of another type or size");
-      continue;
-    }
-    for (vtkIdType t = 0; t < nOutCells; ++t)
-    {
-      if (!SameTuple(in, outSource->GetValue(t), out, t))
-      {
-        fail(std::string("cell array ") + NameOf(in) + " tuple " + std::to_string(t) +
-             " is not its source cell's");
-      }
-    }
-  }
-  // Output triangles identical to an input triangle come from that triangle.
-  std::map<Tri, vtkIdType> inputTriangles;
-  const vtkIdType polyOffset = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  const std::vector<Tri> inTris = GetTriangles(input);
-  for (size_t i = 0; i < inTris.size(); ++i)
-  {
-    if (inTris[i][0] >= 0)
-    {
-      inputTriangles[Canonical(inTris[i])] = polyOffset + static_cast<vtkIdType>(i);
-    }
-  }
-  const std::vector<Tri> outTris = GetOriginalTriangles(output);
-  long long identical = 0;
-  for (size_t t = 0; t < outTris.size(); ++t)
-  {
-    auto it = inputTriangles.find(Canonical(outTris[t]));
-    if (it != inputTriangles.end())
-    {
-      ++identical;
-      if (outSource->GetValue(static_cast<vtkIdType>(t)) != it->second)
-      {
-        fail("output triangle " + std::to_string(t) + " is input triangle " +
-             std::to_string(it->second) + " but its cell data comes from cell " +
-             std::to_string(outSource->GetValue(static_cast<vtkIdType>(t))));
-      }
-    }
-  }
+  CheckArraysCopied(
+    input->GetCellData(), output->GetCellData(), nOutCells, "cell",
+    [outSource](vtkIdType t) { return outSource->GetValue(t); }, fail);
+  const long long identical = CheckIdenticalTriangles(input, output, outSource, fail);
   if (untouched)
   {
     *untouched = identical;
