@@ -63,23 +63,10 @@ bool Near(double a, double b, double tolerance)
   return std::fabs(a - b) <= tolerance;
 }
 
-} // namespace
-
-int main(int argc, char* argv[])
+/// 1. Identical meshes: nothing differs; PSNR is infinite.
+fid::Result CheckIdentical(vtkPolyData* sphere, const fid::Options& options)
 {
-  const std::string temporary = argc > 1 ? argv[1] : ".";
-  std::string why;
-  if (!fid::CanRender(&why))
-  {
-    std::cerr << "cannot render: " << why << "\n";
-    return 1;
-  }
-  fid::Options options;
-  options.Size = 200;
-
-  // 1. Identical meshes: nothing differs; PSNR is infinite.
-  auto sphere = meshes::Icosphere(4, meshes::Pattern::SmoothGradient);
-  fid::Result same = fid::CompareRenders(sphere, sphere, options);
+  const fid::Result same = fid::CompareRenders(sphere, sphere, options);
   CD_CHECK_MSG(same.Ok, "identical meshes render");
   CD_CHECK_MSG(same.Unlit.All.CoveredPixels > 6 * 200 * 200 / 4, "the sphere covers its views");
   CD_CHECK_MSG(same.Unlit.Views.size() == 6 && same.Lit.Views.size() == 6, "six views per pass");
@@ -89,14 +76,14 @@ int main(int argc, char* argv[])
   CD_CHECK_MSG(json.find("\"psnr\": null") != std::string::npos &&
                  json.find("\"color_array\": \"RGB\"") != std::string::npos,
                "JSON writes an infinite PSNR as null and names the colour array");
+  return same;
+}
 
-  // 2. A uniform colour shift of (10, -20, 5) on a constant mesh: every covered pixel is
-  //    off by sqrt(525); the shape is unchanged.
-  auto constant = meshes::Icosphere(4, meshes::Pattern::Constant);
-  auto shifted = Copy(constant);
-  SetConstantColor(constant, 180, 140, 100);
-  SetConstantColor(shifted, 190, 120, 105);
-  fid::Result shift = fid::CompareRenders(constant, shifted, options);
+/// 2. A uniform colour shift of (10, -20, 5) on a constant mesh: every covered pixel is off
+/// by sqrt(525); the shape is unchanged.
+fid::Result CheckShift(vtkPolyData* constant, vtkPolyData* shifted, const fid::Options& options)
+{
+  const fid::Result shift = fid::CompareRenders(constant, shifted, options);
   const double expectedRms = std::sqrt(525.0);
   const double expectedPsnr = 10.0 * std::log10(255.0 * 255.0 / (525.0 / 3.0));
   std::cout << "        shift: unlit RMS " << shift.Unlit.All.Rms << " (expected " << expectedRms
@@ -105,10 +92,13 @@ int main(int argc, char* argv[])
                "colour shift: RMS = sqrt(10^2+20^2+5^2)");
   CD_CHECK_MSG(Near(shift.Unlit.All.Psnr, expectedPsnr, 0.02), "colour shift: PSNR = 25.70 dB");
   CD_CHECK_MSG(shift.Lit.All.Rms == 0.0, "colour shift: the lit (shape) pass sees no change");
+  return shift;
+}
 
-  // 3. A copy moved by a fifth of the radius: shape and colour both differ, and the pixels
-  //    covered by either mesh outnumber those of one mesh.
-  auto moved = Copy(sphere);
+/// `mesh` moved by 0.2 along x (a fifth of the unit sphere's radius).
+vtkSmartPointer<vtkPolyData> Moved(vtkPolyData* mesh)
+{
+  auto moved = Copy(mesh);
   for (vtkIdType i = 0; i < moved->GetNumberOfPoints(); ++i)
   {
     double p[3];
@@ -116,6 +106,14 @@ int main(int argc, char* argv[])
     p[0] += 0.2;
     moved->GetPoints()->SetPoint(i, p);
   }
+  return moved;
+}
+
+/// 3. A copy moved by a fifth of the radius: shape and colour both differ, and the pixels
+/// covered by either mesh outnumber those of one mesh.
+void CheckMoved(vtkPolyData* sphere, vtkPolyData* moved, const fid::Result& same,
+                const fid::Options& options)
+{
   fid::Result move = fid::CompareRenders(sphere, moved, options);
   std::cout << "        moved: unlit RMS " << move.Unlit.All.Rms << ", lit RMS " << move.Lit.All.Rms
             << "\n";
@@ -123,16 +121,23 @@ int main(int argc, char* argv[])
                "moved copy: both passes differ");
   CD_CHECK_MSG(move.Unlit.All.CoveredPixels > same.Unlit.All.CoveredPixels,
                "moved copy: the union of the silhouettes is counted");
+}
 
-  // 4. Float colours in [0,1] are scaled to 0..255: same figures as unsigned char.
+/// 4. Float colours in [0,1] are scaled to 0..255: same figures as unsigned char.
+void CheckFloatColors(vtkPolyData* constant, vtkPolyData* shifted, const fid::Result& shift,
+                      const fid::Options& options)
+{
   auto floatA = Copy(constant);
   auto floatB = Copy(shifted);
   ToFloatColors(floatA);
   ToFloatColors(floatB);
   fid::Result floats = fid::CompareRenders(floatA, floatB, options);
   CD_CHECK_MSG(Near(floats.Unlit.All.Rms, shift.Unlit.All.Rms, 0.05), "float colours in [0,1]");
+}
 
-  // 5. Colours lost (the mesh renders white), then restored from the nearest points.
+/// 5. Colours lost (the mesh renders white), then restored from the nearest points.
+void CheckLostColors(vtkPolyData* sphere, const fid::Options& options)
+{
   auto bare = Copy(sphere);
   bare->GetPointData()->RemoveArray("RGB");
   fid::Result lost = fid::CompareRenders(sphere, bare, options);
@@ -140,9 +145,14 @@ int main(int argc, char* argv[])
   CD_CHECK_MSG(fid::TransferNearestColors(sphere, bare), "TransferNearestColors succeeds");
   fid::Result restored = fid::CompareRenders(sphere, bare, options);
   CD_CHECK_MSG(restored.Unlit.All.Rms == 0.0, "nearest-point colours of the same points: RMS 0");
+}
 
-  // 6. The per-view images and the snapshot.
+/// 6. The per-view images and the snapshot.
+void CheckImages(vtkPolyData* sphere, vtkPolyData* moved, fid::Options options,
+                 const std::string& temporary)
+{
   options.ImageDirectory = temporary;
+  std::string why;
   fid::CompareRenders(sphere, moved, options);
   CD_CHECK_MSG(std::ifstream(temporary + "/unlit_-Z_difference.png").good() &&
                  std::ifstream(temporary + "/lit_+X_original.png").good(),
@@ -173,13 +183,43 @@ int main(int argc, char* argv[])
     }
   }
   CD_CHECK_MSG(panelsDrawn, "snapshot: the mesh is drawn in all four panels");
+}
 
-  // 7. Errors are reported, not crashed on.
+/// 7. Errors are reported, not crashed on.
+void CheckErrors(vtkPolyData* sphere, const fid::Options& options, const std::string& temporary)
+{
   fid::Options badArray = options;
   badArray.ColorArray = "NoSuchArray";
   fid::Result bad = fid::CompareRenders(sphere, sphere, badArray);
   CD_CHECK_MSG(!bad.Ok && !bad.Error.empty(), "an unknown colour array is an error");
   CD_CHECK_MSG(!fid::ReadMesh(temporary + "/missing.ply"), "ReadMesh of a missing file is null");
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const std::string temporary = argc > 1 ? argv[1] : ".";
+  std::string why;
+  if (!fid::CanRender(&why))
+  {
+    std::cerr << "cannot render: " << why << "\n";
+    return 1;
+  }
+  fid::Options options;
+  options.Size = 200;
+  auto sphere = meshes::Icosphere(4, meshes::Pattern::SmoothGradient);
+  const fid::Result same = CheckIdentical(sphere, options);
+  auto constant = meshes::Icosphere(4, meshes::Pattern::Constant);
+  auto shifted = Copy(constant);
+  SetConstantColor(constant, 180, 140, 100);
+  SetConstantColor(shifted, 190, 120, 105);
+  const fid::Result shift = CheckShift(constant, shifted, options);
+  auto moved = Moved(sphere);
+  CheckMoved(sphere, moved, same, options);
+  CheckFloatColors(constant, shifted, shift, options);
+  CheckLostColors(sphere, options);
+  CheckImages(sphere, moved, options, temporary);
+  CheckErrors(sphere, options, temporary);
 
   const int failures = colordecimation::testing::GetNumberOfFailures();
   std::cout << (failures ? "FAILED: " : "all passed: ") << failures << " failure(s)\n";
