@@ -74,6 +74,87 @@ std::string ArgumentAfter(int argc, char* argv[], const char* flag)
   return std::string();
 }
 
+/// The command line after the scene.
+struct Arguments
+{
+  double Reduction = 0.0;
+  double Threshold = 0.15; // vtkRegressionTestImage's own default
+  bool Tamper = false;
+  bool ExpectMismatch = false;
+  std::string WriteBaseline;
+};
+
+Arguments ParseArguments(int argc, char* argv[], double reduction)
+{
+  Arguments args;
+  args.Reduction = reduction;
+  for (int i = 2; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--reduction" && i + 1 < argc)
+    {
+      args.Reduction = std::atof(argv[++i]);
+    }
+    else if (arg == "--threshold" && i + 1 < argc)
+    {
+      args.Threshold = std::atof(argv[++i]);
+    }
+    else if (arg == "--tamper")
+    {
+      args.Tamper = true;
+    }
+    else if (arg == "--expect-mismatch")
+    {
+      args.ExpectMismatch = true;
+    }
+    else if (arg == "--write-baseline" && i + 1 < argc)
+    {
+      args.WriteBaseline = argv[++i];
+    }
+  }
+  return args;
+}
+
+/// The window's picture written as the baseline `path`.
+int WriteBaseline(vtkRenderWindow* window, const std::string& path)
+{
+  vtkNew<vtkWindowToImageFilter> grabber;
+  grabber->SetInput(window);
+  grabber->SetInputBufferTypeToRGB();
+  grabber->ReadFrontBufferOff();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputConnection(grabber->GetOutputPort());
+  writer->Write();
+  std::cout << "wrote baseline " << path << "\n";
+  return writer->GetErrorCode() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+/// The window's picture against the baseline (-V); with --expect-mismatch, passing means the
+/// comparison failed.
+int CompareWithBaseline(int argc, char* argv[], vtkRenderWindow* window, const Arguments& args)
+{
+  const std::string baseline = ArgumentAfter(argc, argv, "-V");
+  if (baseline.empty() || !std::ifstream(baseline).good())
+  {
+    // Without a baseline vtkTesting fails too: an expected mismatch must not pass so.
+    std::cerr << "missing baseline (-V): '" << baseline << "'\n";
+    return EXIT_FAILURE;
+  }
+  const int result = vtkRegressionTestImageThreshold(window, args.Threshold);
+  if (args.ExpectMismatch)
+  {
+    if (result == vtkTesting::FAILED)
+    {
+      std::cout << "the changed picture was rejected, as expected\n";
+      return EXIT_SUCCESS;
+    }
+    std::cerr << "the changed picture was ACCEPTED: the image test cannot fail\n";
+    return EXIT_FAILURE;
+  }
+  return result == vtkTesting::PASSED ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -90,86 +171,25 @@ int main(int argc, char* argv[])
     std::cerr << "unknown scene " << argv[1] << "\n";
     return EXIT_FAILURE;
   }
-  double reduction = scene->Reduction;
-  double threshold = 0.15; // vtkRegressionTestImage's own default
-  bool tamper = false, expectMismatch = false;
-  std::string writeBaseline;
-  for (int i = 2; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if (arg == "--reduction" && i + 1 < argc)
-    {
-      reduction = std::atof(argv[++i]);
-    }
-    else if (arg == "--threshold" && i + 1 < argc)
-    {
-      threshold = std::atof(argv[++i]);
-    }
-    else if (arg == "--tamper")
-    {
-      tamper = true;
-    }
-    else if (arg == "--expect-mismatch")
-    {
-      expectMismatch = true;
-    }
-    else if (arg == "--write-baseline" && i + 1 < argc)
-    {
-      writeBaseline = argv[++i];
-    }
-  }
-
+  const Arguments args = ParseArguments(argc, argv, scene->Reduction);
   auto input = cr::MakeInput(*scene);
-  auto output = cr::Decimate(input, reduction);
+  auto output = cr::Decimate(input, args.Reduction);
   const double actual =
     1.0 - static_cast<double>(output->GetNumberOfPolys()) / input->GetNumberOfPolys();
   std::cout << scene->Name << ": " << input->GetNumberOfPolys() << " -> "
             << output->GetNumberOfPolys() << " triangles (reduction " << actual << ", target "
-            << reduction << "), " << (scene->Lit ? "lit" : "unlit") << "\n";
-  if (output->GetNumberOfPolys() == 0 || actual < reduction - 0.02)
+            << args.Reduction << "), " << (scene->Lit ? "lit" : "unlit") << "\n";
+  if (output->GetNumberOfPolys() == 0 || actual < args.Reduction - 0.02)
   {
     std::cerr << "the decimation did not reach its target\n";
     return EXIT_FAILURE;
   }
-
   auto window = cr::MakeWindow(input, output, scene->Lit);
-  if (tamper)
+  if (args.Tamper)
   {
     PaintRectangle(window);
   }
   window->Render();
-
-  if (!writeBaseline.empty())
-  {
-    vtkNew<vtkWindowToImageFilter> grabber;
-    grabber->SetInput(window);
-    grabber->SetInputBufferTypeToRGB();
-    grabber->ReadFrontBufferOff();
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetFileName(writeBaseline.c_str());
-    writer->SetInputConnection(grabber->GetOutputPort());
-    writer->Write();
-    std::cout << "wrote baseline " << writeBaseline << "\n";
-    return writer->GetErrorCode() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
-  }
-
-  const std::string baseline = ArgumentAfter(argc, argv, "-V");
-  if (baseline.empty() || !std::ifstream(baseline).good())
-  {
-    // Without a baseline vtkTesting fails too: an expected mismatch must not pass so.
-    std::cerr << "missing baseline (-V): '" << baseline << "'\n";
-    return EXIT_FAILURE;
-  }
-  const int result = vtkRegressionTestImageThreshold(window, threshold);
-  if (expectMismatch)
-  {
-    if (result == vtkTesting::FAILED)
-    {
-      std::cout << "the changed picture was rejected, as expected\n";
-      return EXIT_SUCCESS;
-    }
-    std::cerr << "the changed picture was ACCEPTED: the image test cannot fail\n";
-    return EXIT_FAILURE;
-  }
-  return result == vtkTesting::PASSED ? EXIT_SUCCESS : EXIT_FAILURE;
+  return args.WriteBaseline.empty() ? CompareWithBaseline(argc, argv, window, args)
+                                    : WriteBaseline(window, args.WriteBaseline);
 }
