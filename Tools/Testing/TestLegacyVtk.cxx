@@ -39,7 +39,6 @@
 
 #include <fstream>
 #include <iostream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -48,6 +47,7 @@ namespace
 using colordecimation::tools::CheckLegacyVtk;
 
 using colordecimation::tools::test::Expect;
+using colordecimation::tools::test::FileBytes;
 
 /// An array of `components` x `tuples` values i * 0.25 (as T's values).
 template <typename Array>
@@ -105,12 +105,6 @@ vtkSmartPointer<vtkPolyData> Everything()
   mesh->GetCellData()->SetScalars(scalars);
   mesh->GetCellData()->AddArray(Values<vtkDoubleArray>("Area", 1, cells));
   return mesh;
-}
-
-std::string Bytes(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 /// Where each section's values start: after the line of each keyword (and, for SCALARS,
@@ -187,7 +181,7 @@ void TestFile(vtkDataSet* data, vtkDataWriter* writer, bool binary, int version,
   reader->Update();
   auto* read = vtkDataSet::SafeDownCast(reader->GetOutput());
   Expect(read && read->GetNumberOfCells() == data->GetNumberOfCells(), name + ": VTK reads it");
-  const std::string file = Bytes(path);
+  const std::string file = FileBytes(path);
   const auto starts = ValueStarts(file);
   Expect(starts.size() >= sections,
          name + ": its sections found (" + std::to_string(starts.size()) + ")");
@@ -254,10 +248,9 @@ void TestHandWritten(const std::string& dir)
 
 int main(int argc, char* argv[])
 {
-  colordecimation::tools::test::Name = "TestLegacyVtk";
-  if (argc != 2)
+  const std::string dir = colordecimation::tools::test::Start(argc, argv, "TestLegacyVtk");
+  if (dir.empty())
   {
-    std::cerr << "Usage: TestLegacyVtk DIRECTORY" << std::endl;
     return 2;
   }
   auto mesh = Everything();
@@ -266,13 +259,13 @@ int main(int argc, char* argv[])
   {
     for (int version : { 42, 51 })
     {
-      TestFile(mesh, vtkNew<vtkPolyDataWriter>(), binary, version, argv[1], 17);
-      TestFile(grid, vtkNew<vtkUnstructuredGridWriter>(), binary, version, argv[1], 4);
+      TestFile(mesh, vtkNew<vtkPolyDataWriter>(), binary, version, dir, 17);
+      TestFile(grid, vtkNew<vtkUnstructuredGridWriter>(), binary, version, dir, 4);
     }
   }
-  TestHandWritten(argv[1]);
+  TestHandWritten(dir);
   std::string error;
-  Expect(CheckLegacyVtk(std::string(argv[1]) + "/none.vtk", error),
+  Expect(CheckLegacyVtk(dir + "/none.vtk", error),
          "a file that is not there is left to the reader");
   return colordecimation::tools::test::Finish();
 }

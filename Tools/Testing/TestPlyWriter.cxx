@@ -30,9 +30,7 @@
 #include "vtkVersionMacros.h"
 
 #include <cmath>
-#include <fstream>
 #include <iostream>
-#include <iterator>
 #include <string>
 #include <sys/stat.h>
 
@@ -41,12 +39,7 @@ namespace
 using colordecimation::tools::WritePly;
 
 using colordecimation::tools::test::Expect;
-
-std::string Bytes(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using colordecimation::tools::test::FileBytes;
 
 bool Exists(const std::string& path)
 {
@@ -127,9 +120,9 @@ void ExpectSameAsVtk(vtkPolyData* input, vtkUnsignedCharArray* pointColors,
   Expect(writer->Write() == 1, name + ": vtkPLYWriter wrote its file");
   std::string error;
   Expect(WritePly(mesh, ours, pointColors, faceColors, error), name + ": written (" + error + ")");
-  const std::string expected = Bytes(theirs);
+  const std::string expected = FileBytes(theirs);
   Expect(expected.size() > 200, name + ": vtkPLYWriter's file is there");
-  Expect(Bytes(ours) == expected, name + ": the same bytes as vtkPLYWriter's file");
+  Expect(FileBytes(ours) == expected, name + ": the same bytes as vtkPLYWriter's file");
 }
 
 void TestSameBytes(const std::string& dir)
@@ -258,7 +251,8 @@ void TestPointAndFaceColors(const std::string& dir)
   const std::string ours = dir + "/both.ours.ply";
   Expect(colordecimation::tools::WriteMesh(mesh, ours, "", error, nullptr),
          "both colours: written by WriteMesh (" + error + ")");
-  Expect(Bytes(theirs).find("element face") != std::string::npos && Bytes(ours) == Bytes(theirs),
+  Expect(FileBytes(theirs).find("element face") != std::string::npos &&
+           FileBytes(ours) == FileBytes(theirs),
          "both colours: the same bytes as vtkPLYWriter's file");
 }
 
@@ -302,13 +296,11 @@ void TestErrors(const std::string& dir)
 
 int main(int argc, char* argv[])
 {
-  colordecimation::tools::test::Name = "TestPlyWriter";
-  if (argc != 2)
+  const std::string dir = colordecimation::tools::test::Start(argc, argv, "TestPlyWriter");
+  if (dir.empty())
   {
-    std::cerr << "Usage: TestPlyWriter DIRECTORY" << std::endl;
     return 2;
   }
-  const std::string dir = argv[1];
   TestSameBytes(dir);
   TestDoublesKept(dir);
   TestPointAndFaceColors(dir);

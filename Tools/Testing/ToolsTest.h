@@ -1,12 +1,15 @@
 /**
  * @file ToolsTest.h
- * @brief The checks of the tools' unit tests (TestPlyWriter, TestLegacyVtk): a failed check
- * prints what failed and is counted; main returns Finish()'s status.
+ * @brief What the tools' unit tests (TestPlyWriter, TestLegacyVtk) share: the scratch folder
+ * from the command line (Start), checks that print what failed and are counted (Expect), a
+ * file's bytes, and the exit status (Finish).
  */
 #ifndef colordecimation_tools_ToolsTest_h
 #define colordecimation_tools_ToolsTest_h
 
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <string>
 
 namespace colordecimation
@@ -18,6 +21,25 @@ namespace test
 /// The test's name, for its messages (set by main).
 inline std::string Name = "test";
 inline int Failures = 0;
+
+/// The test's scratch folder, its only argument; empty (after the usage) when it is not given.
+inline std::string Start(int argc, char* argv[], const std::string& name)
+{
+  Name = name;
+  if (argc != 2)
+  {
+    std::cerr << "Usage: " << name << " DIRECTORY" << std::endl;
+    return std::string();
+  }
+  return argv[1];
+}
+
+/// The whole content of the file at `path` (empty if there is none).
+inline std::string FileBytes(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
 
 inline void Expect(bool ok, const std::string& what)
 {
