@@ -11,12 +11,12 @@
 //   --expect-mismatch    succeed only when the comparison FAILS (tests that the image
 //                        test can fail: a tampered picture, or another reduction)
 //   --write-baseline F   write the picture to F and compare nothing (refresh baselines)
+#include "ColorDecimationFidelity.h"
 #include "ColorDecimationRenderingScenes.h"
 
 #include "vtkActor2D.h"
 #include "vtkCellArray.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper2D.h"
@@ -25,7 +25,6 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <cstdlib>
 #include <cstring>
@@ -118,16 +117,9 @@ Arguments ParseArguments(int argc, char* argv[], double reduction)
 /// The window's picture written as the baseline `path`.
 int WriteBaseline(vtkRenderWindow* window, const std::string& path)
 {
-  vtkNew<vtkWindowToImageFilter> grabber;
-  grabber->SetInput(window);
-  grabber->SetInputBufferTypeToRGB();
-  grabber->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(path.c_str());
-  writer->SetInputConnection(grabber->GetOutputPort());
-  writer->Write();
+  const bool written = colordecimation::fidelity::SavePng(window, path);
   std::cout << "wrote baseline " << path << "\n";
-  return writer->GetErrorCode() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return written ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
 /// The window's picture against the baseline (-V); with --expect-mismatch, passing means the

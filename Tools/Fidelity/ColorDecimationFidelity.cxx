@@ -660,7 +660,8 @@ vtkSmartPointer<vtkRenderer> Panel(vtkPolyData* renderable, vtkCamera* camera, i
   return renderer;
 }
 
-/// Renders `window` and writes it as a PNG; false when it cannot be written.
+} // namespace
+
 bool SavePng(vtkRenderWindow* window, const std::string& path)
 {
   window->Render();
@@ -675,7 +676,6 @@ bool SavePng(vtkRenderWindow* window, const std::string& path)
   writer->Write();
   return writer->GetErrorCode() == 0;
 }
-} // namespace
 
 bool WriteSnapshot(vtkPolyData* original, vtkPolyData* simplified, const std::string& path,
                    int size, const SnapshotOptions& options, std::string* error)

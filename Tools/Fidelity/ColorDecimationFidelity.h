@@ -49,6 +49,7 @@
 #include <vector>
 
 class vtkCamera;
+class vtkRenderWindow;
 
 namespace colordecimation
 {
@@ -192,6 +193,10 @@ vtkSmartPointer<vtkPolyData> SimplifyWithQuadric(vtkPolyData* input, double redu
  * failure or when it has no triangles.
  */
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string* error = nullptr);
+
+/// Renders `window` and writes it as a PNG (RGB, from the back buffer); false when it cannot
+/// be written.
+bool SavePng(vtkRenderWindow* window, const std::string& path);
 
 /**
  * True when an OpenGL render window can be opened here. On X11 builds this checks that
