@@ -51,6 +51,7 @@ bool CheckProperties(vtkColorHalfEdgeDecimation* self)
                      { "ColorWeight", self->GetColorWeight() },
                      { "BoundaryWeight", self->GetBoundaryWeight() },
                      { "EdgeLengthWeight", self->GetEdgeLengthWeight() },
+                     { "PieceWeight", self->GetPieceWeight() },
                      { "MaximumError", self->GetMaximumError() } };
   for (const auto& property : properties)
   {
@@ -255,6 +256,7 @@ colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, 
   options.ColorWeight = self->GetColorWeight();
   options.BoundaryWeight = self->GetBoundaryWeight();
   options.EdgeLengthWeight = self->GetEdgeLengthWeight();
+  options.PieceWeight = self->GetPieceWeight();
   options.PreserveBoundary = self->GetPreserveBoundary() != 0;
   options.MaximumNormalAngle = self->GetMaximumNormalAngle();
   options.GeometryWeight = self->GetGeometryWeight();
@@ -317,8 +319,8 @@ void ReportBuild(vtkColorHalfEdgeDecimation* self,
                                     << " non-manifold or non-orientable edges and "
                                     << build.NonManifoldVertices << " non-manifold vertices; their "
                                     << build.LockedVertices
-                                    << " vertices are kept as they are (unless PruneComponents "
-                                       "removes their whole piece).");
+                                    << " vertices are kept as they are (unless their whole piece "
+                                       "is removed: PieceWeight, PruneComponents).");
   }
 }
 } // namespace
@@ -333,6 +335,7 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   , ColorWeight(1.0)
   , BoundaryWeight(50.0)
   , EdgeLengthWeight(0.0001)
+  , PieceWeight(30.0)
   , TargetReduction(0.9)
   , TargetNumberOfTriangles(0)
   , MaximumError(0.0)
@@ -372,6 +375,7 @@ void vtkColorHalfEdgeDecimation::SetPaperDefaults()
   this->SetCollapseSchedule(Greedy);
   this->SetBoundaryWeight(0.0);
   this->SetEdgeLengthWeight(0.0);
+  this->SetPieceWeight(0.0);
   this->SetGeometryWeight(1.0);
   this->SetColorSpace(RGB);
   this->SetColorWeight(1.0);
@@ -602,6 +606,7 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ColorWeight: " << this->ColorWeight << "\n";
   os << indent << "BoundaryWeight: " << this->BoundaryWeight << "\n";
   os << indent << "EdgeLengthWeight: " << this->EdgeLengthWeight << "\n";
+  os << indent << "PieceWeight: " << this->PieceWeight << "\n";
   os << indent << "TargetReduction: " << this->TargetReduction << "\n";
   os << indent << "TargetNumberOfTriangles: " << this->TargetNumberOfTriangles << "\n";
   os << indent << "MaximumError: " << this->MaximumError << "\n";

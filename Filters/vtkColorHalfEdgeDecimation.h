@@ -50,8 +50,8 @@
  *
  * Collapses keep the surface a 2-manifold where it was one (link condition), never flip a
  * triangle normal by more than MaximumNormalAngle, never create a degenerate triangle, and
- * keep the Euler characteristic of closed manifold input (unless PruneComponents removes a
- * whole piece). Triangles wound both ways are
+ * keep the Euler characteristic of closed manifold input (unless a whole piece is removed:
+ * see PieceWeight and PruneComponents). Triangles wound both ways are
  * decimated as their piece wound one way (see ConsistentOrientation). Vertices on non-manifold
  * edges, bow-tie vertices and the vertices of non-orientable places are kept, together with
  * their triangles. Attribute seams (open boundaries whose points have, bit for bit, the
@@ -148,7 +148,7 @@ public:
    * Set every property of the method to the paper's (Kim, Choi and Lee): the HalfEdgeColor
    * metric, the Greedy schedule, no boundary planes (BoundaryWeight 0), no edge-length term,
    * GeometryWeight 1, RGB colours, MaximumNormalAngle 90, PreserveBoundary off (and
-   * ColorWeight 1, OptimalPlacement off, which the paper's metric does not read).
+   * ColorWeight 1, OptimalPlacement off, which the paper's metric does not read; PieceWeight 0).
    * TargetReduction, TargetNumberOfTriangles, MaximumError, PruneComponents,
    * ConsistentOrientation, PreserveSeams, NumberOfThreads, the lock array and the original point
    * ids are left as they are.
@@ -235,6 +235,21 @@ public:
    */
   vtkSetClampMacro(EdgeLengthWeight, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(EdgeLengthWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get the weight of removing small connected pieces whole (AttributeQuadric metric
+   * only). The fragments of a scan stop collapsing at a few triangles each and would hold a
+   * large share of a strongly reduced mesh. Each piece but the largest is given a cost: the
+   * metric's cost of collapsing all its points into its best one, times PieceWeight; during the
+   * run a piece is removed when that cost is at most that of the collapses being made (and the
+   * target still holds). Pieces with a locked point (lock array, ghost points) or an attribute
+   * seam are kept. Removed pieces count in NumberOfPrunedComponents and are in the collapse
+   * record. Default 30; 0: pieces are never removed during the run (the paper's method).
+   */
+  vtkSetClampMacro(PieceWeight, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(PieceWeight, double);
   ///@}
 
   /**
@@ -367,7 +382,8 @@ public:
   ///@}
 
   /**
-   * The number of connected pieces PruneComponents removed in the last execution.
+   * The number of connected pieces removed whole in the last execution (by PieceWeight during
+   * the run, by PruneComponents after it).
    */
   vtkGetMacro(NumberOfPrunedComponents, vtkIdType);
 
@@ -391,7 +407,8 @@ public:
    * run to that target gives. Off (default): the second output is an empty table.
    *
    * Not with the ColorQuadric metric's OptimalPlacement (its collapses move the survivor): the
-   * record is then empty, with a warning. The pieces PruneComponents removes are not in the
+   * record is then empty, with a warning. The pieces PieceWeight removes are (a row for each
+   * of their points, with SurvivingPointId -1); those PruneComponents removes are not in the
    * record, and the levels keep their triangles' input winding (ConsistentOrientation applies
    * to this filter's own output).
    */
@@ -522,6 +539,7 @@ protected:
   double ColorWeight;
   double BoundaryWeight;
   double EdgeLengthWeight;
+  double PieceWeight;
   double TargetReduction;
   vtkIdType TargetNumberOfTriangles;
   double MaximumError;

@@ -270,6 +270,10 @@ void AddMetricOptions(CLI::App& app, Options& options)
                   "weight of the edge-length term that decimates flat parts evenly\n"
                   "(0: none; default " +
                     Number(d->GetEdgeLengthWeight()) + ")");
+  AddFilterWeight(app, options, "--piece-weight", &F::SetPieceWeight,
+                  "weight of the cost of removing a small connected piece whole during\n"
+                  "the run (attribute-quadric metric; 0: never; default " +
+                    Number(d->GetPieceWeight()) + ")");
   AddFilterChoice(app, options, "--color-space",
                   { { "rgb", F::RGB }, { "cielab", F::CIELab }, { "lab", F::CIELab } },
                   &F::SetColorSpace, "--color-space must be rgb or cielab",
@@ -859,7 +863,7 @@ void PrintFigures(vtkColorHalfEdgeDecimation* filter, const Options& options, co
   std::cout << line;
   if (filter->GetNumberOfPrunedComponents() > 0)
   {
-    std::snprintf(line, sizeof(line), "        %lld small pieces removed (--prune-components)\n",
+    std::snprintf(line, sizeof(line), "        %lld small pieces removed whole\n",
                   static_cast<long long>(filter->GetNumberOfPrunedComponents()));
     std::cout << line;
   }
@@ -878,6 +882,7 @@ Json Settings(vtkColorHalfEdgeDecimation* filter)
   Json settings;
   settings["boundary_weight"] = filter->GetBoundaryWeight();
   settings["edge_length_weight"] = filter->GetEdgeLengthWeight();
+  settings["piece_weight"] = filter->GetPieceWeight();
   settings["geometry_weight"] = filter->GetGeometryWeight();
   settings["color_weight"] = filter->GetColorWeight();
   settings["color_space"] =

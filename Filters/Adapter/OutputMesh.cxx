@@ -58,7 +58,7 @@ struct DecimatedFaces
 };
 
 /// The faces of a level of detail: each input triangle on its points' survivors (Where), kept
-/// if they are three different points.
+/// if they are three different points (none -1: gone with a removed piece).
 struct LevelFaces
 {
   const int32_t* Triangles;
@@ -71,7 +71,8 @@ struct LevelFaces
     {
       tri[k] = this->Where[this->Triangles[3 * size_t(f) + k]];
     }
-    return tri[0] != tri[1] && tri[1] != tri[2] && tri[2] != tri[0];
+    return tri[0] != tri[1] && tri[1] != tri[2] && tri[2] != tri[0] && tri[0] >= 0 && tri[1] >= 0 &&
+      tri[2] >= 0;
   }
 };
 

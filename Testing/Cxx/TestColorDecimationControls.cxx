@@ -409,6 +409,7 @@ CD_TEST_CASE(PruneComponents)
                       [&](vtkColorHalfEdgeDecimation* f)
                       {
                         f->SetCollapseSchedule(schedule);
+                        f->SetPieceWeight(0); // pruning after the run alone
                         f->SetPruneComponents(prune);
                         SelectLocks(f, locked ? "lock" : "");
                       });
@@ -443,6 +444,58 @@ CD_TEST_CASE(PruneComponents)
   const RunResult all =
     Decimate(single, 1.0, [](vtkColorHalfEdgeDecimation* f) { f->PruneComponentsOn(); });
   CD_CHECK(all.Filter->GetNumberOfPrunedComponents() == 0 && all.Output->GetNumberOfPolys() > 0);
+}
+
+//------------------------------------------------------------------------------
+CD_TEST_CASE(PieceWeight)
+{
+  // The grid and ten tetrahedra of edge 0.2 k (k = 1..10), away from it, to 99 %: at the
+  // defaults the tetrahedra go during the run as the collapses' cost reaches theirs, smallest
+  // first, never the grid (the largest piece); PieceWeight 0 removes none (the grid and the
+  // ten tetrahedra's 40 triangles are left); a larger weight removes no more than a smaller
+  // one; a locked point keeps its tetrahedron, not the others.
+  auto mesh = GridAndTetrahedra();
+  vtkNew<vtkUnsignedCharArray> lock;
+  lock->SetName("lock");
+  lock->SetNumberOfValues(mesh->GetNumberOfPoints());
+  lock->Fill(0);
+  lock->SetValue(441 + 4, 1); // the second smallest tetrahedron
+  mesh->GetPointData()->AddArray(lock);
+  for (const int schedule : Schedules)
+  {
+    auto run = [&](double weight, bool locked)
+    {
+      return Decimate(mesh, 0.99,
+                      [&](vtkColorHalfEdgeDecimation* f)
+                      {
+                        f->SetCollapseSchedule(schedule);
+                        f->SetPieceWeight(weight);
+                        SelectLocks(f, locked ? "lock" : "");
+                      });
+    };
+    const RunResult defaults = run(30, false);
+    const vtkIdType removed = defaults.Filter->GetNumberOfPrunedComponents();
+    const std::set<vtkIdType> ids = OriginalIds(defaults.Output);
+    std::cout << defaults.Filter->GetCollapseScheduleAsString() << ": " << removed
+              << " tetrahedra removed, " << defaults.Output->GetNumberOfPolys() << " triangles\n";
+    CD_CHECK(defaults.Errors == 0 && defaults.Warnings == 0);
+    CD_CHECK(removed > 0 && removed < 10);
+    for (vtkIdType k = 0; k < 10; ++k)
+    {
+      CD_CHECK_MSG(ids.count(441 + 4 * k) == (k < removed ? 0u : 1u), "tetrahedron " << k);
+    }
+    CD_CHECK(defaults.Output->GetNumberOfPolys() - 4 * (10 - removed) >= 1); // the grid
+    const RunResult none = run(0, false);
+    CD_CHECK(none.Filter->GetNumberOfPrunedComponents() == 0);
+    CD_CHECK(OriginalIds(none.Output).count(441) == 1);
+    const vtkIdType light = run(1, false).Filter->GetNumberOfPrunedComponents();
+    const vtkIdType heavy = run(1e6, false).Filter->GetNumberOfPrunedComponents();
+    CD_CHECK_MSG(light >= removed && removed >= heavy, light << " " << removed << " " << heavy);
+    const RunResult locked = run(30, true);
+    const std::set<vtkIdType> lockedIds = OriginalIds(locked.Output);
+    CD_CHECK(lockedIds.count(445) == 1 && lockedIds.count(441) == 0);
+    CD_CHECK(locked.Filter->GetNumberOfPrunedComponents() >= removed - 1);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -536,6 +589,7 @@ CD_TEST_CASE(LargeMeshControls)
     return [target, prune](vtkColorHalfEdgeDecimation* f)
     {
       f->SetTargetNumberOfTriangles(target);
+      f->SetPieceWeight(0); // pruning after the run alone
       f->SetPruneComponents(prune);
     };
   };

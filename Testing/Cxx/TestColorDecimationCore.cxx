@@ -2352,6 +2352,44 @@ CD_TEST_CASE(CollapseRecordByHand)
   CD_CHECK(!IsConsistent(bad, why) && why.find("out of range") != std::string::npos);
 }
 
+// A piece removed whole in the record, by hand: 9 points, 12 triangles; 0 -> 1 (2 triangles),
+// then the piece of points 5, 6, 7, 8 (4 triangles, a tetrahedron) removed, one entry a point
+// into -1, as one step with its largest error; then 1 -> 2. The piece's points resolve to -1,
+// and a level never ends inside the step.
+CD_TEST_CASE(CollapseRecordPiece)
+{
+  CollapseRecord record;
+  record.InputPoints = 9;
+  record.InputTriangles = 12;
+  std::vector<RecordedCollapse> made = {
+    { 0, 1, 2, 0, 0, 0.5, 1.0 },   { 5, -1, 4, 0, -1, 0.6, 4.0 }, { 6, -1, 0, 1, -1, 0.6, 9.0 },
+    { 7, -1, 0, 1, -1, 0.6, 1.0 }, { 8, -1, 0, 1, -1, 0.6, 0.0 }, { 1, 2, 2, 0, 0, 0.8, 1.0 }
+  };
+  record.Append(made.data(), made.size(), nullptr, 1.0);
+  CD_CHECK((record.Triangles == Buffer<int64_t>{ 10, 6, 6, 6, 6, 4 }));
+  CD_CHECK((record.Error == Buffer<double>{ 1.0, 3.0, 3.0, 3.0, 3.0, 1.0 }));
+  CD_CHECK((record.Survivor == Buffer<int32_t>{ 1, -1, -1, -1, -1, 2 }));
+  std::string why;
+  CD_CHECK_MSG(IsConsistent(record, why), why);
+  CD_CHECK(LevelLength(record, 9, 0.0) == 5); // 10 > 9: the whole step goes in
+  CD_CHECK(LevelLength(record, 6, 0.0) == 5);
+  CD_CHECK(LevelLength(record, 0, 2.0) == 1); // the step's error 3 stops it
+  std::vector<int32_t> where;
+  ResolveSurvivors(record, 6, where);
+  CD_CHECK((where == std::vector<int32_t>{ 2, 2, 2, 3, 4, -1, -1, -1, -1 }));
+  // Bad: a piece's first entry that removes nothing; a collapse into a removed piece's point;
+  // an id below -1.
+  CollapseRecord bad = record;
+  bad.Triangles[1] = 10;
+  CD_CHECK(!IsConsistent(bad, why) && why.find("decrease") != std::string::npos);
+  bad = record;
+  bad.Survivor[5] = 6;
+  CD_CHECK(!IsConsistent(bad, why) && why.find("earlier") != std::string::npos);
+  bad = record;
+  bad.Survivor[2] = -2;
+  CD_CHECK(!IsConsistent(bad, why) && why.find("out of range") != std::string::npos);
+}
+
 CD_TEST_CASE(SeamDetection)
 {
   // The roles by hand (mesh/Seams.h): a seam sphere of resolution r has r - 1 twinned pairs on

@@ -847,8 +847,8 @@ std::string CheckPhases(vtkColorHalfEdgeDecimation* filter, double wall)
 CD_TEST_CASE(PhaseTimes)
 {
   auto mesh = meshes::Icosphere(6, Pattern::SharpRegions);
-  const std::string setUp = "input spatial order connectivity frame reference normals metric state "
-                            "error planes first costing ";
+  const std::string setUp = "input spatial order connectivity frame reference normals pieces "
+                            "metric state error planes first costing ";
   const std::string greedy = setUp + "collapses restore order output";
   const std::string batched =
     setUp + "batch selection block collapses deferred collapses re-costing restore order output";

@@ -30,6 +30,7 @@
 #include "vtkXMLTableReader.h"
 #include "vtkXMLTableWriter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -251,6 +252,64 @@ CD_TEST_CASE(GreedyLevelsEqualDirectRuns)
       CD_CHECK_MSG(SameMesh(direct.Output, extracted, why),
                    "level " << level << " at " << l.Reduction << " / " << l.Triangles << " / "
                             << l.Error << ": " << why);
+    }
+  }
+}
+
+/// A sphere and twelve small tetrahedra around it (edges 0.01 k, k = 1..12): pieces that the
+/// defaults remove whole during the run.
+vtkSmartPointer<vtkPolyData> SphereWithFragments(int level)
+{
+  auto sphere = meshes::Icosphere(level, Pattern::SharpRegions);
+  std::vector<double> xyz;
+  std::vector<vtkIdType> triangles;
+  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    sphere->GetPoint(i, p);
+    xyz.insert(xyz.end(), p, p + 3);
+  }
+  for (const Tri& t : GetTriangles(sphere))
+  {
+    triangles.insert(triangles.end(), t.begin(), t.end());
+  }
+  for (int k = 1; k <= 12; ++k)
+  {
+    const auto first = static_cast<vtkIdType>(xyz.size() / 3);
+    const double e = 0.01 * k, a = 0.5 * k, x = 1.3 * std::cos(a), y = 1.3 * std::sin(a);
+    xyz.insert(xyz.end(), { x, y, 0, x + e, y, 0, x, y + e, 0, x, y, e });
+    for (const vtkIdType c : { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 })
+    {
+      triangles.push_back(first + c);
+    }
+  }
+  auto mesh = meshes::FromTriangles(xyz, triangles);
+  Decorate(mesh);
+  return mesh;
+}
+
+// Greedy with pieces removed whole: each removed piece is in the record (one row a point, with
+// SurvivingPointId -1, one step), and the levels are still the direct runs' outputs.
+CD_TEST_CASE(GreedyLevelsWithPieces)
+{
+  auto mesh = SphereWithFragments(3);
+  const Recorded all = RecordRun(mesh, 1.0, vtkColorHalfEdgeDecimation::Greedy);
+  const std::vector<double> survivors = ColumnValues(all.Record, "SurvivingPointId");
+  const auto pieceRows = std::count(survivors.begin(), survivors.end(), -1.0);
+  std::cout << pieceRows << " rows of removed pieces in " << survivors.size() << "\n";
+  CD_CHECK(pieceRows > 0 && pieceRows % 4 == 0);
+  for (const double reduction : { 0.5, 0.9, 0.97 })
+  {
+    const RunResult direct =
+      Decimate(mesh, reduction, [](auto* f) { f->SetCollapseScheduleToGreedy(); });
+    auto extracted = Extract(mesh, all.Record, [&](auto* f) { f->SetTargetReduction(reduction); });
+    std::string why;
+    CD_CHECK_MSG(SameMesh(direct.Output, extracted, why), reduction << ": " << why);
+    std::cout << reduction << ": " << direct.Filter->GetNumberOfPrunedComponents()
+              << " pieces removed\n";
+    if (reduction == 0.97)
+    {
+      CD_CHECK(direct.Filter->GetNumberOfPrunedComponents() > 0);
     }
   }
 }

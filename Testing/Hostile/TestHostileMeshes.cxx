@@ -1429,6 +1429,7 @@ CD_TEST_CASE(NaNProperties)
       { "MaximumNormalAngle",
         [nan](vtkColorHalfEdgeDecimation* f) { f->SetMaximumNormalAngle(nan); } },
       { "GeometryWeight", [nan](vtkColorHalfEdgeDecimation* f) { f->SetGeometryWeight(nan); } },
+      { "PieceWeight", [nan](vtkColorHalfEdgeDecimation* f) { f->SetPieceWeight(nan); } },
       { "ColorWeight",
         [nan](vtkColorHalfEdgeDecimation* f)
         {

@@ -898,6 +898,43 @@ CD_TEST_CASE(AttributeQuadricShift)
   }
 }
 
+CD_TEST_CASE(AttributeQuadricPieceCost)
+{
+  // The ramp triangle as a piece, with BoundaryWeight 7 and EdgeLengthWeight 2 (its colours
+  // lie on their linear field: no colour term). Summed over the three corners, at corner a:
+  // the boundary planes of the edges not through a, 7 * |edge|^2 * distance^2 each, and
+  // 2 * area * (|a - b|^2 + |a - c|^2). Corner 0: the hypotenuse's plane x + y = 1 (squared
+  // length 2, distance^2 1/2) twice, 14, plus 2 * 0.5 * 2 = 16; corners 1 and 2: the plane
+  // of a leg twice, 14, plus 2 * 0.5 * 3 = 17. The least is 16, at corner 0, as the merged
+  // quadric of collapsing the other two into it says.
+  RampTriangle t;
+  Buffer<HotVertex> hot;
+  hot.resize(3);
+  for (int v = 0; v < 3; ++v)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      hot[v].P[k] = t.Positions[3 * v + k];
+      hot[v].C[k] = t.Colors[3 * v + k];
+    }
+  }
+  DecimatorOptions options;
+  options.BoundaryWeight = 7.0;
+  options.EdgeLengthWeight = 2.0;
+  AttributeQuadricMetric metric(options);
+  metric.Initialize(t.Mesh, Frame(), hot, true, 1);
+  const int32_t piece[3] = { 0, 1, 2 };
+  int32_t best = -1;
+  CD_CHECK_NEAR(metric.PieceCost(piece, 3, best), 16.0, 1e-5);
+  CD_CHECK(best == 0);
+  const int32_t rotated[3] = { 2, 1, 0 };
+  CD_CHECK_NEAR(metric.PieceCost(rotated, 3, best), 16.0, 1e-5);
+  CD_CHECK(best == 0);
+  metric.Merge(1, 0, false, {});
+  metric.Merge(2, 0, false, {});
+  CD_CHECK_NEAR(metric.States[0].C, 16.0, 1e-5);
+}
+
 /// The area of the output's triangles whose corners' red channel differs (on both sides of a
 /// colour step), as a fraction of the output's area.
 double StraddlingArea(vtkPolyData* mesh)

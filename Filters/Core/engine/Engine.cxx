@@ -1,9 +1,11 @@
 #include "engine/Engine.h"
 
+#include "mesh/Components.h"
 #include "mesh/Orientation.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace colordecimation
@@ -69,6 +71,68 @@ void EngineBase::SetUp(const DecimatorInput& input, bool useColor, DecimatorStat
   this->Record.InputTriangles = input.NumberOfTriangles;
   this->Recorded.clear();
   this->ThreadsUsed = 1;
+}
+
+void EngineBase::FindRemovablePieces(DecimatorStatistics& stats)
+{
+  const HalfEdgeMesh& mesh = this->Mesh;
+  const SeamMap& seams = this->Seams;
+  this->Found = FindSmallPieces(
+    mesh, [&](int32_t v) { return mesh.IsFixed(v) || seams.GetRole(v) != SeamMap::None; });
+  this->SmallPieces = PieceQueue();
+  this->LargestPieceError = 0;
+  stats.Phases.Lap("pieces");
+}
+
+bool EngineBase::RemovePieces(double cost, int64_t target, DecimatorStatistics& stats)
+{
+  std::vector<int32_t> faces, vertices;
+  while (!this->SmallPieces.IsEmpty() && this->SmallPieces.NextCost() <= cost &&
+         this->Mesh.GetNumberOfLiveFaces() > target)
+  {
+    const double squared = this->SmallPieces.NextSquaredError();
+    const double bound = this->Errors.GetBound();
+    if (this->Options.MaximumError > 0 && squared > bound * bound)
+    {
+      stats.ErrorBoundReached = true;
+      return false;
+    }
+    const double pieceCost = this->SmallPieces.NextCost();
+    this->SmallPieces.Pop(this->Mesh, faces, vertices);
+    const auto n = static_cast<int64_t>(faces.size());
+    if (n == 0)
+    {
+      continue;
+    }
+    this->Mesh.RemoveComponent(faces.data(), static_cast<int32_t>(n));
+    for (const int32_t v : vertices)
+    {
+      this->Best[v] = -1;
+    }
+    if (this->Options.RecordCollapses)
+    {
+      this->RecordPiece(vertices, n, pieceCost, squared);
+    }
+    this->LargestPieceError = std::max(this->LargestPieceError, squared);
+    ++stats.PrunedComponents;
+    stats.PrunedTriangles += n;
+  }
+  return true;
+}
+
+void EngineBase::RecordPiece(const std::vector<int32_t>& vertices, int64_t faces, double cost,
+                             double squaredError)
+{
+  // One entry a vertex, into no survivor (-1); the faces shared out in chunks that fit the
+  // entries' 16 bits, all but the first marked as continuing the step (CollapseRecord::Append).
+  int64_t left = faces;
+  for (size_t i = 0; i < vertices.size(); ++i)
+  {
+    const auto share = static_cast<int16_t>(std::min<int64_t>(left, INT16_MAX));
+    left -= share;
+    this->Recorded.push_back(
+      { vertices[i], -1, share, static_cast<int16_t>(i > 0 ? 1 : 0), -1, cost, squaredError });
+  }
 }
 
 void EngineBase::InitializeErrors(DecimatorStatistics& stats)
@@ -151,7 +215,7 @@ void EngineBase::FindSeamsAndLocks(const DecimatorInput& input, DecimatorStatist
     {
       if (input.Fixed[source ? source[v] : v])
       {
-        this->Mesh.Lock(v);
+        this->Mesh.Fix(v);
       }
     }
   }

@@ -30,6 +30,7 @@
 #include "metric/Ring.h"
 #include "rules/CollapseRules.h"
 #include "rules/ErrorBound.h"
+#include "schedule/PieceQueue.h"
 #include "util/Buffer.h"
 #include "util/Parallel.h"
 #include "util/Prefetch.h"
@@ -73,6 +74,16 @@ public:
   void Finish(bool keepHot);
   /// The plane sums of the errors (rules/ErrorBound.h), under MaximumError or for a record.
   void InitializeErrors(DecimatorStatistics& stats);
+
+  /**
+   * Remove the small pieces whose cost is at most `cost` (schedule/PieceQueue.h) while more
+   * than `target` faces are left (the last may take the count below it, as a level of the
+   * record would). False when the next one exceeds MaximumError (stats.ErrorBoundReached): the
+   * run stops there, as at a collapse.
+   */
+  bool RemovePieces(double cost, int64_t target, DecimatorStatistics& stats);
+  /// The largest squared error (frame units) of the pieces removed so far.
+  double GetLargestPieceError() const { return this->LargestPieceError; }
 
   /// Threads worth starting for this many items of work: NumberOfThreads at most,
   /// MinimumThreadWork items per thread.
@@ -168,8 +179,18 @@ protected:
   std::vector<uint8_t> Flipped;          ///< per input triangle: reversed (empty: none was)
   CollapseRecord Record;                 ///< with RecordCollapses, after Finish
   mutable int ThreadsUsed = 1;
+  /// With PieceWeight: the pieces a run may remove, found before the metric's state (Found),
+  /// then costed (SmallPieces).
+  Pieces Found;
+  PieceQueue SmallPieces;
+  double LargestPieceError = 0;
+  /// The pieces that may be removed whole: none with a fixed or seam vertex.
+  void FindRemovablePieces(DecimatorStatistics& stats);
 
 private:
+  /// Append a removed piece's vertices to Recorded, as one step (section 16).
+  void RecordPiece(const std::vector<int32_t>& vertices, int64_t faces, double cost,
+                   double squaredError);
   void ComputeOrder(const DecimatorInput& input);
   void BuildMesh(const DecimatorInput& input, DecimatorStatistics& stats);
   /// The seams of the built mesh (section 15), then the input's fixed points locked.
@@ -217,11 +238,20 @@ public:
   void Start(const DecimatorInput& input, DecimatorStatistics& stats)
   {
     this->SetUp(input, Metric::ReadsColor && input.Colors, stats);
+    const bool pieces = Metric::CostsPieces && this->Options.PieceWeight > 0;
+    if (pieces)
+    {
+      this->FindRemovablePieces(stats); // before the metric's state, the larger memory
+    }
     this->TheMetric.Initialize(this->Mesh, this->Geometry, this->Hot, this->UseColor,
                                this->ThreadCount(3 * size_t(input.NumberOfTriangles)));
     this->Main.Rules.SetReferenceNormals(this->ReferenceNormals.data());
     stats.Phases.Lap("metric state");
     this->InitializeErrors(stats); // after the metric's: its pages come first (docs/BENCHMARK.md)
+    if (pieces)
+    {
+      this->CostPieces(stats);
+    }
   }
   /// After the schedule: the workers and input normals freed, the order restored.
   void Stop()
@@ -313,6 +343,8 @@ protected:
   }
 
 private:
+  /// The found pieces' costs and errors, into SmallPieces.
+  void CostPieces(DecimatorStatistics& stats);
   /// Costs of the ring of v0 into ws.Costs.
   void CostRing(int32_t v0, bool withColorError, Workspace& ws) const;
   Choice Cheapest(const Ring& ring, const std::vector<double>& costs) const;

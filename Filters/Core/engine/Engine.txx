@@ -383,4 +383,33 @@ double Engine<Metric>::CollapseCost(int32_t v0, int32_t v1)
   return -1;
 }
 
+template <typename Metric>
+void Engine<Metric>::CostPieces(DecimatorStatistics& stats)
+{
+  if constexpr (Metric::CostsPieces)
+  {
+    const size_t count = this->Found.Size();
+    std::vector<double> costs(count), errors(count, 0.0);
+    std::vector<int32_t> vertices;
+    for (size_t p = 0; p < count; ++p)
+    {
+      const int32_t first = this->Found.Start[p];
+      PieceVertices(this->Mesh, this->Found.Faces.data() + first,
+                    size_t(this->Found.Start[p + 1] - first), vertices);
+      int32_t best = vertices.front();
+      costs[p] = this->Options.PieceWeight *
+        this->TheMetric.PieceCost(vertices.data(), vertices.size(), best);
+      if (this->Errors.IsEnabled())
+      {
+        const float* x = this->Hot[best].P;
+        const double at[3] = { x[0], x[1], x[2] };
+        errors[p] = this->Errors.PieceSquaredError(vertices.data(), vertices.size(), at);
+      }
+    }
+    this->SmallPieces.Reset(std::move(this->Found), std::move(costs), std::move(errors));
+    this->Found = Pieces();
+    stats.Phases.Lap("pieces");
+  }
+}
+
 } // namespace colordecimation

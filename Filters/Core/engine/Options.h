@@ -85,6 +85,10 @@ struct DecimatorOptions
   /// Stop before the first collapse whose geometric error (rules/ErrorBound.h) exceeds this
   /// distance, in the input's units (section 14); <= 0: no bound.
   double MaximumError = 0.0;
+  /// Remove small connected pieces whole during the run, when their cost (the metric's cost of
+  /// collapsing each into one vertex) times this weight is at most that of the collapses being
+  /// made (schedule/PieceQueue.h; section 14). 0: never. With the AttributeQuadric metric only.
+  double PieceWeight = 0.0;
   /// When collapses alone leave more than the target, remove whole connected pieces, smallest
   /// area first (mesh/Components.h; section 14). Not after an abort or at MaximumError.
   bool PruneComponents = false;
@@ -133,7 +137,7 @@ struct DecimatorStatistics
   double ActualError = 0;
   bool ErrorBoundReached = false;
   int64_t ReorientedTriangles = 0; ///< reversed to wind their piece one way (section 10)
-  int64_t PrunedComponents = 0;    ///< pieces removed by PruneComponents
+  int64_t PrunedComponents = 0;    ///< pieces removed whole (PieceWeight, PruneComponents)
   int64_t PrunedTriangles = 0;     ///< their triangles
   int64_t SeamVertices = 0;        ///< vertices on attribute seams (section 15)
   int64_t SeamLockedVertices = 0;  ///< of those, locked (more than one twin)

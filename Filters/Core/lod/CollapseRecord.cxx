@@ -27,16 +27,28 @@ void CollapseRecord::Append(const RecordedCollapse* made, size_t madeCount, cons
     const RecordedCollapse& c = made[i];
     left -= c.RemovedFaces;
     this->Removed[start + i] = toInput ? toInput[c.V0] : c.V0;
-    this->Survivor[start + i] = toInput ? toInput[c.V1] : c.V1;
+    this->Survivor[start + i] = toInput && c.V1 >= 0 ? toInput[c.V1] : c.V1;
     this->Cost[start + i] = c.Cost;
     this->Error[start + i] = std::sqrt(c.SquaredError) / scale;
     this->Triangles[start + i] = left;
-    if (c.SecondOfPair && start + i > 0)
+  }
+  // A step of several entries (a seam pair, a removed piece) shows the count after it all and
+  // its largest error in each: backwards, each entry followed by one continuing its step takes
+  // that one's count and the larger error; forwards, each continuing entry the error before.
+  const size_t first = start > 0 ? start - 1 : 0;
+  for (size_t i = count; i-- > first + 1;)
+  {
+    if (made[i - start].SecondOfPair)
     {
-      // A pair is one step: both show the count after both, and the larger error.
-      this->Triangles[start + i - 1] = left;
-      const double larger = std::max(this->Error[start + i - 1], this->Error[start + i]);
-      this->Error[start + i - 1] = this->Error[start + i] = larger;
+      this->Triangles[i - 1] = this->Triangles[i];
+      this->Error[i - 1] = std::max(this->Error[i - 1], this->Error[i]);
+    }
+  }
+  for (size_t i = std::max(start, size_t(1)); i < count; ++i)
+  {
+    if (made[i - start].SecondOfPair)
+    {
+      this->Error[i] = this->Error[i - 1];
     }
   }
 }
@@ -72,22 +84,25 @@ bool IsConsistent(const CollapseRecord& record, std::string& why)
   bool paired = false; // the last collapse was the second of a pair
   for (size_t i = 0; i < n; ++i)
   {
+    // Survivor -1: the vertex went with its piece, removed whole (section 14).
     const int32_t v0 = record.Removed[i], v1 = record.Survivor[i];
-    if (v0 < 0 || v1 < 0 || v0 >= record.InputPoints || v1 >= record.InputPoints || v0 == v1)
+    if (v0 < 0 || v1 < -1 || v0 >= record.InputPoints || v1 >= record.InputPoints || v0 == v1)
     {
       why = "collapse " + std::to_string(i) + " names a point id out of range [0, " +
         std::to_string(record.InputPoints) + ") or the same point twice";
       return false;
     }
-    if (removed[v0] || removed[v1])
+    if (removed[v0] || (v1 >= 0 && removed[v1]))
     {
       why = "collapse " + std::to_string(i) + " names a point that an earlier one removed";
       return false;
     }
     removed[v0] = 1;
-    // Equal counts: the second collapse of a pair (not a third).
-    const bool second = i > 0 && record.Triangles[i] == left && !paired;
-    paired = second;
+    // Equal counts: the second collapse of a pair (not a third), or a further vertex of a
+    // removed piece.
+    const bool piece = v1 < 0 && i > 0 && record.Survivor[i - 1] < 0;
+    const bool second = i > 0 && record.Triangles[i] == left && (piece || (!paired && v1 >= 0));
+    paired = second && !piece;
     if ((record.Triangles[i] >= left && !second) || record.Triangles[i] < 0)
     {
       why = "its triangle counts do not decrease from the input's " +
@@ -107,15 +122,16 @@ void ResolveSurvivors(const CollapseRecord& record, size_t count, std::vector<in
   {
     where[record.Removed[i]] = record.Survivor[i];
   }
-  // Each chain of parents ends at a survivor; every vertex on it is pointed there at once.
+  // Each chain of parents ends at a survivor, or at -1 (a removed piece); every vertex on it
+  // is pointed there at once.
   for (size_t v = 0; v < where.size(); ++v)
   {
     int32_t root = where[v];
-    while (where[root] != root)
+    while (root >= 0 && where[root] != root)
     {
       root = where[root];
     }
-    for (int32_t u = static_cast<int32_t>(v); where[u] != root;)
+    for (int32_t u = static_cast<int32_t>(v); u >= 0 && where[u] != root;)
     {
       const int32_t next = where[u];
       where[u] = root;

@@ -25,7 +25,8 @@ namespace colordecimation
 
 /// One collapse as a schedule makes it (the run's own vertex ids; its squared error in the
 /// frame's units); Block orders the Batched schedule's parallel collapses; SecondOfPair marks
-/// the mirror collapse of a seam pair, made together with the collapse before it.
+/// an entry that continues the step before it: the mirror collapse of a seam pair, or a further
+/// vertex of a piece removed whole (V1 = -1 for each of those vertices).
 struct RecordedCollapse
 {
   int32_t V0;
@@ -40,7 +41,9 @@ struct RecordedCollapse
 /**
  * The record of a run, by input ids, in collapse order. The two collapses of a seam pair
  * (mesh/Seams.h), made together, follow each other with the same NumberOfTriangles (the count
- * after both) and the same Error (the larger): a level never ends between them.
+ * after both) and the same Error (the larger): a level never ends between them. A piece
+ * removed whole (schedule/PieceQueue.h) is one entry for each of its vertices, with Survivor
+ * -1, and likewise one step.
  */
 struct VTKCOLORDECIMATION_EXPORT CollapseRecord
 {
@@ -72,14 +75,15 @@ VTKCOLORDECIMATION_EXPORT size_t LevelLength(const CollapseRecord& record, int64
 /**
  * Whether the record is one of a mesh of `points` points: every id in range, no vertex
  * removed twice or collapsed into after its removal, the triangle counts decreasing (equal
- * only for the two collapses of a pair). On failure, `why` says what is wrong.
+ * only for the two collapses of a pair and the vertices of a removed piece). On failure, `why`
+ * says what is wrong.
  */
 VTKCOLORDECIMATION_EXPORT bool IsConsistent(const CollapseRecord& record, std::string& why);
 
 /**
  * Each vertex's vertex in the level of the first `count` collapses: itself if it survives
- * them, else the survivor it ended in (`where` has InputPoints entries). Linear in the points
- * and `count`.
+ * them, else the survivor it ended in, or -1 if that went with a removed piece (`where` has
+ * InputPoints entries). Linear in the points and `count`.
  */
 VTKCOLORDECIMATION_EXPORT void ResolveSurvivors(const CollapseRecord& record, size_t count,
                                                 std::vector<int32_t>& where);

@@ -12,13 +12,6 @@ namespace colordecimation
 {
 namespace
 {
-/// The pieces of the live faces: each face's piece, and each piece's faces in face order.
-struct Pieces
-{
-  std::vector<int32_t> Start; ///< piece p has faces Faces[Start[p] .. Start[p + 1])
-  std::vector<int32_t> Faces;
-};
-
 int32_t Root(std::vector<int32_t>& parent, int32_t v)
 {
   while (parent[v] != v)
@@ -29,7 +22,9 @@ int32_t Root(std::vector<int32_t>& parent, int32_t v)
   return v;
 }
 
-Pieces FindPieces(const HalfEdgeMesh& mesh)
+/// Each vertex's parent in the union of the live faces' vertices (Root: the lowest id of its
+/// piece).
+std::vector<int32_t> UnionOfFaces(const HalfEdgeMesh& mesh)
 {
   std::vector<int32_t> parent(static_cast<size_t>(mesh.GetNumberOfVertices()));
   std::iota(parent.begin(), parent.end(), 0);
@@ -47,19 +42,27 @@ Pieces FindPieces(const HalfEdgeMesh& mesh)
       }
     }
   }
-  // Number the pieces by their first face, then list each one's faces (in face order).
-  std::vector<int32_t> piece(parent.size(), -1), faceOf, faces;
-  int32_t count = 0;
+  return parent;
+}
+
+/// The live faces whose root has a piece number (numberOf[root] >= 0), listed by piece.
+Pieces ListPieces(const HalfEdgeMesh& mesh, std::vector<int32_t>& parent,
+                  const std::vector<int32_t>& numberOf, int32_t count)
+{
+  std::vector<int32_t> faceOf, faces;
+  const int32_t slots = mesh.GetNumberOfFaceSlots();
   for (int32_t f = 0; f < slots; ++f)
   {
     if (mesh.IsFaceAlive(f))
     {
       int32_t ids[3];
       mesh.GetFace(f, ids);
-      int32_t& p = piece[Root(parent, ids[0])];
-      p = p >= 0 ? p : count++;
-      faceOf.push_back(p);
-      faces.push_back(f);
+      const int32_t p = numberOf[Root(parent, ids[0])];
+      if (p >= 0)
+      {
+        faceOf.push_back(p);
+        faces.push_back(f);
+      }
     }
   }
   Pieces pieces;
@@ -68,6 +71,26 @@ Pieces FindPieces(const HalfEdgeMesh& mesh)
     faces.size(), static_cast<size_t>(count), 1, [&faceOf](size_t i) { return faceOf[i]; },
     [&faces, &pieces](size_t i, int32_t slot) { pieces.Faces[slot] = faces[i]; }, pieces.Start);
   return pieces;
+}
+
+/// Every piece of the live faces, numbered by its first face.
+Pieces FindPieces(const HalfEdgeMesh& mesh)
+{
+  std::vector<int32_t> parent = UnionOfFaces(mesh);
+  std::vector<int32_t> numberOf(parent.size(), -1);
+  int32_t count = 0;
+  const int32_t slots = mesh.GetNumberOfFaceSlots();
+  for (int32_t f = 0; f < slots; ++f)
+  {
+    if (mesh.IsFaceAlive(f))
+    {
+      int32_t ids[3];
+      mesh.GetFace(f, ids);
+      int32_t& p = numberOf[Root(parent, ids[0])];
+      p = p >= 0 ? p : count++;
+    }
+  }
+  return ListPieces(mesh, parent, numberOf, count);
 }
 
 double TriangleArea(const double* points, const int32_t ids[3])
@@ -82,6 +105,59 @@ double TriangleArea(const double* points, const int32_t ids[3])
   return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 }
 } // namespace
+
+Pieces FindSmallPieces(const HalfEdgeMesh& mesh, const std::function<bool(int32_t)>& keep)
+{
+  std::vector<int32_t> parent = UnionOfFaces(mesh);
+  const auto n = static_cast<int32_t>(parent.size());
+  // Faces per root, the root of the largest piece, the roots of pieces with a kept vertex.
+  std::vector<int32_t> numberOf(parent.size(), 0);
+  std::vector<uint8_t> kept(parent.size(), 0);
+  const int32_t slots = mesh.GetNumberOfFaceSlots();
+  for (int32_t f = 0; f < slots; ++f)
+  {
+    if (mesh.IsFaceAlive(f))
+    {
+      int32_t ids[3];
+      mesh.GetFace(f, ids);
+      ++numberOf[Root(parent, ids[0])];
+    }
+  }
+  int32_t largest = 0, roots = 0;
+  for (int32_t v = 0; v < n; ++v)
+  {
+    roots += numberOf[v] > 0 ? 1 : 0;
+    largest = numberOf[v] > numberOf[largest] ? v : largest;
+    kept[Root(parent, v)] |= keep(v) ? 1 : 0;
+  }
+  if (roots <= 1)
+  {
+    return Pieces();
+  }
+  int32_t count = 0;
+  for (int32_t v = 0; v < n; ++v)
+  {
+    numberOf[v] = numberOf[v] > 0 && v != largest && !kept[v] ? count++ : -1;
+  }
+  return ListPieces(mesh, parent, numberOf, count);
+}
+
+void PieceVertices(const HalfEdgeMesh& mesh, const int32_t* faces, size_t count,
+                   std::vector<int32_t>& vertices)
+{
+  vertices.clear();
+  for (size_t i = 0; i < count; ++i)
+  {
+    if (mesh.IsFaceAlive(faces[i]))
+    {
+      int32_t ids[3];
+      mesh.GetFace(faces[i], ids);
+      vertices.insert(vertices.end(), ids, ids + 3);
+    }
+  }
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+}
 
 PruneReport PruneComponents(HalfEdgeMesh& mesh, const double* points, const uint8_t* fixed,
                             int64_t target)

@@ -1,19 +1,43 @@
 /**
  * @file Components.h
- * @brief Removing whole connected pieces of a decimated mesh, for PruneComponents
- * (docs/ALGORITHM.md, section 14): the small fragments of a scan that collapses alone cannot
- * take below a few triangles each.
+ * @brief Whole connected pieces of a mesh: those a run may remove as it goes (PieceWeight), and
+ * their removal after it (PruneComponents; docs/ALGORITHM.md, section 14): the small fragments
+ * of a scan, which collapses alone cannot take below a few triangles each.
  */
 #ifndef colordecimation_Components_h
 #define colordecimation_Components_h
 
 #include "vtkColorDecimationModule.h" // for export macro
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <vector>
 
 namespace colordecimation
 {
 class HalfEdgeMesh;
+
+/// Connected pieces of a mesh: each piece's faces, in face order.
+struct Pieces
+{
+  std::vector<int32_t> Start; ///< piece p has faces Faces[Start[p] .. Start[p + 1])
+  std::vector<int32_t> Faces;
+  size_t Size() const { return this->Start.empty() ? 0 : this->Start.size() - 1; }
+};
+
+/**
+ * The connected pieces of the live faces (through shared vertices) that a run may remove:
+ * all but the one of most faces (ties: the one with the lowest vertex id), less those with a
+ * vertex `keep` marks. Numbered by their first face. Holds two ints and a byte per vertex
+ * while it runs.
+ */
+VTKCOLORDECIMATION_EXPORT Pieces FindSmallPieces(const HalfEdgeMesh& mesh,
+                                                 const std::function<bool(int32_t)>& keep);
+
+/// The distinct vertices of the live faces among faces[0 .. count), in increasing order.
+VTKCOLORDECIMATION_EXPORT void PieceVertices(const HalfEdgeMesh& mesh, const int32_t* faces,
+                                             size_t count, std::vector<int32_t>& vertices);
 
 /// What PruneComponents removed.
 struct PruneReport

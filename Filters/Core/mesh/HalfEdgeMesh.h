@@ -60,6 +60,7 @@ public:
   {
     Locked = 1,  ///< non-manifold neighbourhood: never collapsed
     Removed = 2, ///< collapsed away
+    Fixed = 4,   ///< locked because the input fixes it (lock array, ghost point)
   };
 
   /// Build from `numTriangles` triangles given as 3 vertex ids each. Triangles must not
@@ -113,6 +114,7 @@ public:
 
   bool IsLocked(int32_t v) const { return (this->Flags[v] & Locked) != 0; }
   bool IsRemoved(int32_t v) const { return (this->Flags[v] & Removed) != 0; }
+  bool IsFixed(int32_t v) const { return (this->Flags[v] & Fixed) != 0; }
   /// A vertex that still has triangles, is manifold and may take part in collapses.
   bool IsCollapsible(int32_t v) const { return this->Flags[v] == 0 && this->Out[v] >= 0; }
   /// Only meaningful for unlocked vertices.
@@ -169,6 +171,8 @@ public:
 
   /// Exclude v from every collapse (it and all its triangles' corners stay as they are).
   void Lock(int32_t v) { this->Flags[v] |= Locked; }
+  /// Lock v as a point the input fixes (its piece is never removed whole).
+  void Fix(int32_t v) { this->Flags[v] |= Locked | Fixed; }
 
   /// Number of neighbours of an unlocked vertex.
   int Valence(int32_t v) const;

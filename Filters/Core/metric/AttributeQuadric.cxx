@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 namespace colordecimation
 {
@@ -305,6 +306,31 @@ void AttributeQuadricMetric::CostRing(int32_t v0, bool, Ring& ring, double* cost
 {
   // (Q(v0) + Q(j))(xj): Q(j) is centred at xj, so it contributes its constant.
   CostAttributeRing(this->States[v0], (*this->Hot)[v0], this->ColorWeight, ring, costs);
+}
+
+double AttributeQuadricMetric::PieceCost(const int32_t* vertices, size_t count, int32_t& best) const
+{
+  const int32_t centre = vertices[0];
+  AttributeQuadric sum = this->States[centre];
+  double dx[3], ds[3];
+  for (size_t i = 1; i < count; ++i)
+  {
+    this->Offset(vertices[i], centre, dx, ds);
+    sum.AddShifted(this->States[vertices[i]], dx, ds);
+  }
+  double least = std::numeric_limits<double>::infinity();
+  best = centre;
+  for (size_t i = 0; i < count; ++i)
+  {
+    this->Offset(centre, vertices[i], dx, ds);
+    const double cost = sum.Evaluate(dx, ds);
+    if (cost < least)
+    {
+      least = cost;
+      best = vertices[i];
+    }
+  }
+  return least;
 }
 
 void AttributeQuadricMetric::Merge(int32_t v0, int32_t v1, bool, const Placement&)

@@ -86,6 +86,7 @@ public:
   {
   };
   static constexpr bool ReadsColor = true;
+  static constexpr bool CostsPieces = true;
 
   explicit AttributeQuadricMetric(const DecimatorOptions& options);
 
@@ -100,6 +101,10 @@ public:
   bool RingPlacement(int32_t, int, const Scratch&, double[3]) const { return false; }
   bool IsMoved(int32_t) const { return false; }
   bool AnyMoved() const { return false; }
+  /// The cost of removing a whole piece (section 14): its vertices' quadrics summed, at the
+  /// point of the one of them where that sum is least (into `best`), as if all collapsed
+  /// into it.
+  double PieceCost(const int32_t* vertices, size_t count, int32_t& best) const;
   /// v1 takes over v0's quadric, re-centred at v1's point.
   void Merge(int32_t v0, int32_t v1, bool, const Placement&);
 

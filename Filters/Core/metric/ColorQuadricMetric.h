@@ -43,6 +43,7 @@ public:
     std::vector<double> Placements;
   };
   static constexpr bool ReadsColor = true;
+  static constexpr bool CostsPieces = false; ///< see AttributeQuadricMetric::PieceCost
 
   explicit ColorQuadricMetric(const DecimatorOptions& options);
 

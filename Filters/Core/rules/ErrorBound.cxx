@@ -89,8 +89,35 @@ void ErrorBound::Initialize(const HalfEdgeMesh& mesh, const float* positions, in
     });
 }
 
+void ErrorBound::PlaneSum::Add(const PlaneSum& other)
+{
+  for (int k = 0; k < 6; ++k)
+  {
+    this->A[k] += other.A[k];
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    this->B[k] += other.B[k];
+  }
+  this->C += other.C;
+  this->Area += other.Area;
+}
+
+double ErrorBound::PlaneSum::Mean(const double x[3]) const
+{
+  const double* a = this->A;
+  const double ax0 = a[0] * x[0] + a[1] * x[1] + a[2] * x[2];
+  const double ax1 = a[1] * x[0] + a[3] * x[1] + a[4] * x[2];
+  const double ax2 = a[2] * x[0] + a[4] * x[1] + a[5] * x[2];
+  const double q = x[0] * ax0 + x[1] * ax1 + x[2] * ax2 +
+    2.0 * (this->B[0] * x[0] + this->B[1] * x[1] + this->B[2] * x[2]) + this->C;
+  return this->Area > 0.0 ? std::max(q, 0.0) / this->Area : 0.0;
+}
+
 double ErrorBound::SquaredError(int32_t v0, int32_t v1, const double x[3]) const
 {
+  // Summed term by term rather than through Add and Mean: the rounding of the bound's
+  // decisions stays that of the first version.
   const PlaneSum& q0 = this->Planes[v0];
   const PlaneSum& q1 = this->Planes[v1];
   double a[6];
@@ -108,20 +135,19 @@ double ErrorBound::SquaredError(int32_t v0, int32_t v1, const double x[3]) const
   return area > 0.0 ? std::max(q, 0.0) / area : 0.0;
 }
 
+double ErrorBound::PieceSquaredError(const int32_t* vertices, size_t count, const double x[3]) const
+{
+  PlaneSum sum{};
+  for (size_t i = 0; i < count; ++i)
+  {
+    sum.Add(this->Planes[vertices[i]]);
+  }
+  return sum.Mean(x);
+}
+
 void ErrorBound::Merge(int32_t v0, int32_t v1)
 {
-  PlaneSum& q1 = this->Planes[v1];
-  const PlaneSum& q0 = this->Planes[v0];
-  for (int k = 0; k < 6; ++k)
-  {
-    q1.A[k] += q0.A[k];
-  }
-  for (int k = 0; k < 3; ++k)
-  {
-    q1.B[k] += q0.B[k];
-  }
-  q1.C += q0.C;
-  q1.Area += q0.Area;
+  this->Planes[v1].Add(this->Planes[v0]);
 }
 
 } // namespace colordecimation

@@ -37,6 +37,9 @@ public:
 
   /// The squared error of collapsing v0 into v1 placed at x.
   double SquaredError(int32_t v0, int32_t v1, const double x[3]) const;
+  /// The squared error of collapsing all the listed vertices into one placed at x (a whole
+  /// piece removed, section 14).
+  double PieceSquaredError(const int32_t* vertices, size_t count, const double x[3]) const;
   /// v1 takes v0's planes.
   void Merge(int32_t v0, int32_t v1);
   /// Free the state.
@@ -60,6 +63,9 @@ private:
     double B[3];
     double C;
     double Area;
+    void Add(const PlaneSum& other);
+    /// Q(x) / Area (0 without area).
+    double Mean(const double x[3]) const;
   };
   Buffer<PlaneSum> Planes;
   double Bound = 0.0;

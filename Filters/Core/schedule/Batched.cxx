@@ -68,6 +68,12 @@ public:
     int32_t pass = 0;
     while (mesh.GetNumberOfLiveFaces() > stats.TargetTriangles && !stats.Aborted)
     {
+      // The pieces up to the cost the last pass reached go before the next batch is chosen.
+      if (!this->E.RemovePieces(this->BatchTop, stats.TargetTriangles, stats) ||
+          mesh.GetNumberOfLiveFaces() <= stats.TargetTriangles)
+      {
+        break;
+      }
       this->Pass = ++pass;
       if (this->SelectBatch(stats) == 0)
       {
@@ -99,7 +105,8 @@ public:
     }
     stats.CollapseThreads = this->CollapseThreadsUsed;
     stats.WideCollapseThreads = this->WideCollapseThreadsUsed;
-    stats.ActualError = this->E.ToInputDistance(this->LargestSquaredError);
+    stats.ActualError =
+      this->E.ToInputDistance(std::max(this->LargestSquaredError, this->E.GetLargestPieceError()));
     stats.Phases.Lap("batch selection"); // the last (empty) selection, or the last pass's end
   }
 
@@ -159,6 +166,7 @@ private:
   int CollapseThreadsUsed = 1;
   int WideCollapseThreadsUsed = 1;
   double LargestSquaredError = 0; ///< of the collapses made, under MaximumError
+  double BatchTop = 0;            ///< the largest key of the batches chosen so far
   int32_t Pass = 0;               ///< the pass under way (Gather stamps the stale twins with it)
 };
 
@@ -195,7 +203,7 @@ size_t BatchedSchedule<Metric>::SelectBatch(const DecimatorStatistics& stats)
   const int32_t* best = this->E.Best.data();
   const double* key = this->Keys.data();
   this->Batch.clear();
-  return SelectCheapest(
+  const size_t candidates = SelectCheapest(
     this->Live.size(), this->Live.data(),
     [best, key](int32_t v, double& k)
     {
@@ -210,6 +218,11 @@ size_t BatchedSchedule<Metric>::SelectBatch(const DecimatorStatistics& stats)
                           static_cast<int64_t>(std::ceil(fraction * static_cast<double>(count))))));
     },
     this->E.ThreadCount(this->Live.size()), this->Batch);
+  for (const Candidate& c : this->Batch)
+  {
+    this->BatchTop = std::max(this->BatchTop, c.Key);
+  }
+  return candidates;
 }
 
 template <typename Metric>

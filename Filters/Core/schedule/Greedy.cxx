@@ -35,6 +35,12 @@ public:
     while (this->E.GetMesh().GetNumberOfLiveFaces() > stats.TargetTriangles &&
            !this->Heap.Empty() && !stats.ErrorBoundReached)
     {
+      // The pieces cheaper than the collapse at the top go first (its key is a lower bound).
+      if (!this->E.RemovePieces(this->Heap.TopKey(), stats.TargetTriangles, stats) ||
+          this->E.GetMesh().GetNumberOfLiveFaces() <= stats.TargetTriangles)
+      {
+        break;
+      }
       if (!this->Step(stats))
       {
         continue; // progress is reported after collapses only
@@ -51,7 +57,8 @@ public:
         }
       }
     }
-    stats.ActualError = this->E.ToInputDistance(this->LargestSquaredError);
+    stats.ActualError =
+      this->E.ToInputDistance(std::max(this->LargestSquaredError, this->E.GetLargestPieceError()));
     stats.Phases.Lap("collapses");
   }
 
