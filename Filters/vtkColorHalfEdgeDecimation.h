@@ -242,11 +242,16 @@ public:
    * Set/Get the weight of removing small connected pieces whole (AttributeQuadric metric
    * only). The fragments of a scan stop collapsing at a few triangles each and would hold a
    * large share of a strongly reduced mesh. Each piece but the largest is given a cost: the
-   * metric's cost of collapsing all its points into its best one, times PieceWeight; during the
+   * metric's cost of collapsing all its points into its best one, plus the area they would
+   * move times the squared distance, times PieceWeight; during the
    * run a piece is removed when that cost is at most that of the collapses being made (and the
-   * target still holds). Pieces with a locked point (lock array, ghost points) or an attribute
-   * seam are kept. Removed pieces count in NumberOfPrunedComponents and are in the collapse
-   * record. Default 30; 0: pieces are never removed during the run (the paper's method).
+   * count is above the target: the last may take it below by its own triangles). Pieces with
+   * a locked point (lock array, ghost points), an attribute seam or, with PreserveBoundary, an
+   * open boundary are kept. The separate parts of a model made of several are pieces too: set
+   * 0 to keep every part. Removed pieces count in NumberOfPrunedComponents, their error in
+   * ActualError and MaximumError (the distance their surface would move), and they are in the
+   * collapse record. Default 10; 0: pieces are never removed during the run (the paper's
+   * method).
    */
   vtkSetClampMacro(PieceWeight, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(PieceWeight, double);
@@ -328,7 +333,10 @@ public:
    * input triangles that met at v1, at v0 and at every vertex merged into them before:
    * sqrt(sum_t A_t d_t^2 / sum_t A_t), each triangle counted once per such vertex it has
    * (Garland and Heckbert's quadric error divided by its area, in distance units). It does not
-   * depend on ErrorMetric, which still orders the collapses.
+   * depend on ErrorMetric, which still orders the collapses. A piece removed whole (PieceWeight)
+   * has the larger of that error for all its points merged into its best one and the
+   * root-mean-square distance its area would move there; the run stops at the first piece
+   * beyond the bound too.
    */
   vtkSetMacro(MaximumError, double);
   vtkGetMacro(MaximumError, double);
@@ -373,8 +381,9 @@ public:
    * collapses cannot take below a few triangles. Pieces with a locked point (lock array, ghost
    * points) are kept, and so is the last piece; non-manifold places do not keep a piece. Not
    * done after an abort, nor when MaximumError stopped the run. Off by default (as
-   * meshoptimizer's SimplifyPrune), since it removes parts of the surface: turn it on for scans
-   * decimated by 99 % or more.
+   * meshoptimizer's SimplifyPrune), since it removes parts of the surface. PieceWeight removes
+   * small pieces during the run already; this is for targets that collapses and PieceWeight
+   * still cannot reach.
    */
   vtkSetMacro(PruneComponents, vtkTypeBool);
   vtkGetMacro(PruneComponents, vtkTypeBool);
@@ -388,9 +397,10 @@ public:
   vtkGetMacro(NumberOfPrunedComponents, vtkIdType);
 
   /**
-   * The largest geometric error (see MaximumError) of the collapses of the last execution, in
-   * the input's units. Only tracked under a bound or with GenerateCollapseRecord: 0 otherwise
-   * (set MaximumError to VTK_DOUBLE_MAX to measure without a bound).
+   * The largest geometric error (see MaximumError) of the collapses and removed pieces of the
+   * last execution, in the input's units. Only tracked under a bound or with
+   * GenerateCollapseRecord: 0 otherwise (set MaximumError to VTK_DOUBLE_MAX to measure without a
+   * bound).
    */
   vtkGetMacro(ActualError, double);
 

@@ -327,7 +327,9 @@ bool vtkColorHalfEdgeLevelOfDetail::ExtractLevel(vtkPolyData* input, vtkDataObje
     std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads()), output);
   this->Cached->InputTriangles += collapses.InputTriangles;
   this->Cached->OutputTriangles += triangles;
-  this->NumberOfCollapses += static_cast<vtkIdType>(count);
+  this->NumberOfCollapses += static_cast<vtkIdType>(
+    std::count_if(collapses.Survivor.begin(), collapses.Survivor.begin() + count,
+                  [](int32_t survivor) { return survivor >= 0; }));
   this->NumberOfRecordedCollapses += static_cast<vtkIdType>(collapses.Size());
   if (count > 0)
   {

@@ -25,7 +25,8 @@
  * does). With the Greedy schedule a level is exactly the output of a direct run to that
  * target (same triangles, same order); with Batched it is the same prefix of the Batched run's
  * order. Levels are nested: the points of a coarser level are a subset of those of each finer
- * one, and RemovedPointId -> SurvivingPointId is each removed point's parent.
+ * one, and RemovedPointId -> SurvivingPointId is each removed point's parent (-1 for the
+ * points of a piece removed whole, see vtkColorHalfEdgeDecimation::SetPieceWeight).
  *
  * The level is the longest prefix that a run would make: up to the first collapse that leaves
  * at most the target (TargetNumberOfTriangles when > 0, else (1 - TargetReduction) of the
@@ -137,8 +138,9 @@ public:
   vtkGetMacro(ActualReduction, double);
   /// The largest geometric error of the last level's collapses (input units).
   vtkGetMacro(ActualError, double);
-  /// The number of collapses of the last level (the prefix of the record it takes; summed
-  /// over the meshes of a composite input).
+  /// The number of collapses of the last level (the rows of the prefix of the record it takes,
+  /// less those of pieces removed whole, as the decimation counts them; summed over the meshes
+  /// of a composite input).
   vtkGetMacro(NumberOfCollapses, vtkIdType);
   /// The number of collapses in the record (the finest-to-coarsest range of levels; summed).
   vtkGetMacro(NumberOfRecordedCollapses, vtkIdType);

@@ -5,11 +5,12 @@
  * it can be saved (e.g. vtkXMLTableWriter, .vtt), reloaded and checked against a mesh.
  *
  * Columns: RemovedPointId and SurvivingPointId (vtkIdType: the collapse v0 -> v1, by input
- * point id), Cost and Error (double: the schedule's cost, the geometric error in the input's
- * units) and NumberOfTriangles (vtkIdType: the triangles left after it). Field data:
- * InputNumberOfPoints, InputNumberOfTriangles (the triangles after polygons and strips are
- * triangulated), InputChecksum (a 64-bit hash of the points and those triangles, as 16 hex
- * digits), InputChecksumVersion (how that hash is computed: 2) and CollapseSchedule.
+ * point id; SurvivingPointId -1 for the points of a piece removed whole), Cost and Error (double:
+ * the schedule's cost, the geometric error in the input's units) and NumberOfTriangles (vtkIdType:
+ * the triangles left after it). Field data: InputNumberOfPoints, InputNumberOfTriangles (the
+ * triangles after polygons and strips are triangulated), InputChecksum (a 64-bit hash of the points
+ * and those triangles, as 16 hex digits), InputChecksumVersion (how that hash is computed: 2) and
+ * CollapseSchedule.
  */
 #ifndef colordecimation_RecordTable_h
 #define colordecimation_RecordTable_h

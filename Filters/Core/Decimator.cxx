@@ -82,10 +82,12 @@ DecimatorStatistics Decimator::RunWith(const DecimatorInput& input, int64_t targ
   engine->Start(input, stats);
   if (this->Options.RecordCollapses)
   {
-    // Every collapse removes a triangle at least: room made once, never moved (the pages
-    // not written to are never touched).
+    // Every collapse removes a triangle at least, a removed piece has a row for each of its
+    // points (at most three a face): room made once, never moved (the pages not written to
+    // are never touched).
     engine->Recorded.reserve(
-      size_t(std::max<int64_t>(input.NumberOfTriangles - stats.TargetTriangles, 0) + 64));
+      size_t(std::max<int64_t>(input.NumberOfTriangles - stats.TargetTriangles, 0) + 64) +
+      3 * engine->GetPieceFaces());
   }
   if (this->Options.Schedule == CollapseSchedule::Batched)
   {
@@ -103,20 +105,23 @@ DecimatorStatistics Decimator::RunWith(const DecimatorInput& input, int64_t targ
   {
     const PruneReport pruned =
       PruneComponents(engine->GetMesh(), input.Points, input.Fixed, stats.TargetTriangles);
-    stats.PrunedComponents = pruned.Components;
-    stats.PrunedTriangles = pruned.Triangles;
+    stats.PrunedComponents += pruned.Components; // after those PieceWeight removed
+    stats.PrunedTriangles += pruned.Triangles;
     stats.Phases.Lap("prune");
   }
   stats.OutputTriangles = engine->GetMesh().GetNumberOfLiveFaces();
   stats.MetricBytesPerVertex = Metric::BytesPerVertex();
-  stats.StateBytes = StateBytes(
-    this->Options, input, Metric::BytesPerVertex(), engine->GetMetric().MovesVertices(), renumbered,
-    stats.ReorientedTriangles > 0, stats.SeamVertices > stats.SeamLockedVertices);
+  const size_t pieceBytes = engine->GetPieceBytes();
+  stats.StateBytes =
+    StateBytes(this->Options, input, Metric::BytesPerVertex(), engine->GetMetric().MovesVertices(),
+               renumbered, stats.ReorientedTriangles > 0,
+               stats.SeamVertices > stats.SeamLockedVertices) +
+    pieceBytes;
   if (this->Options.RecordCollapses)
   {
-    // The record (32 B a collapse, and as much again while the schedule collects it) and the
+    // The record (32 B a row, and as much again while the schedule collects it) and the
     // error planes it measures with.
-    stats.StateBytes += 64 * size_t(stats.Collapses) +
+    stats.StateBytes += 64 * engine->GetRecord().Size() +
       (this->Options.MaximumError > 0 ? 0
                                       : ErrorBound::BytesPerVertex * size_t(input.NumberOfPoints));
   }

@@ -473,7 +473,7 @@ CD_TEST_CASE(PieceWeight)
                         SelectLocks(f, locked ? "lock" : "");
                       });
     };
-    const RunResult defaults = run(30, false);
+    const RunResult defaults = run(10, false);
     const vtkIdType removed = defaults.Filter->GetNumberOfPrunedComponents();
     const std::set<vtkIdType> ids = OriginalIds(defaults.Output);
     std::cout << defaults.Filter->GetCollapseScheduleAsString() << ": " << removed
@@ -491,10 +491,65 @@ CD_TEST_CASE(PieceWeight)
     const vtkIdType light = run(1, false).Filter->GetNumberOfPrunedComponents();
     const vtkIdType heavy = run(1e6, false).Filter->GetNumberOfPrunedComponents();
     CD_CHECK_MSG(light >= removed && removed >= heavy, light << " " << removed << " " << heavy);
-    const RunResult locked = run(30, true);
+    const RunResult locked = run(10, true);
     const std::set<vtkIdType> lockedIds = OriginalIds(locked.Output);
     CD_CHECK(lockedIds.count(445) == 1 && lockedIds.count(441) == 0);
     CD_CHECK(locked.Filter->GetNumberOfPrunedComponents() >= removed - 1);
+  }
+}
+
+CD_TEST_CASE(PieceWeightWithOtherControls)
+{
+  // The grid and ten tetrahedra again. PruneComponents after PieceWeight (a heavy one, which
+  // removes fewer): the count is the sum of both, every piece removed a tetrahedron. MaximumError:
+  // a bound below the smallest tetrahedron's error keeps every piece (the run stops there) and
+  // ActualError stays within it; an unreachable bound removes what the defaults remove, and
+  // ActualError counts the pieces' errors. A mesh large enough to be renumbered: the same rule,
+  // smallest first.
+  auto mesh = GridAndTetrahedra();
+  const vtkIdType target = 2;
+  const auto toTarget = [target](bool prune)
+  {
+    return [target, prune](vtkColorHalfEdgeDecimation* f)
+    {
+      f->SetTargetNumberOfTriangles(target);
+      f->SetPieceWeight(1e5); // only the smallest go during the run
+      f->SetPruneComponents(prune);
+    };
+  };
+  const vtkIdType removed =
+    Decimate(mesh, 0.99, toTarget(false)).Filter->GetNumberOfPrunedComponents();
+  const RunResult both = Decimate(mesh, 0.99, toTarget(true));
+  const vtkIdType all = both.Filter->GetNumberOfPrunedComponents();
+  const std::set<vtkIdType> left = OriginalIds(both.Output);
+  vtkIdType missing = 0;
+  for (vtkIdType k = 0; k < 10; ++k)
+  {
+    missing += left.count(441 + 4 * k) == 0 ? 1 : 0;
+  }
+  std::cout << "PieceWeight " << removed << ", with PruneComponents " << all << ", "
+            << both.Output->GetNumberOfPolys() << " triangles (target " << target << ")\n";
+  CD_CHECK(all > removed && all == missing && both.Output->GetNumberOfPolys() <= target);
+  const RunResult plain = Decimate(mesh, 0.99);
+  const vtkIdType removedAt99 = plain.Filter->GetNumberOfPrunedComponents();
+  const RunResult bounded =
+    Decimate(mesh, 0.99, [](vtkColorHalfEdgeDecimation* f) { f->SetMaximumError(1e-3); });
+  CD_CHECK(bounded.Filter->GetNumberOfPrunedComponents() == 0);
+  CD_CHECK(bounded.Filter->GetActualError() <= 1e-3);
+  const RunResult unbounded =
+    Decimate(mesh, 0.99, [](vtkColorHalfEdgeDecimation* f) { f->SetMaximumError(1e9); });
+  CD_CHECK(unbounded.Filter->GetNumberOfPrunedComponents() == removedAt99);
+  CD_CHECK_MSG(unbounded.Filter->GetActualError() > 0.05, unbounded.Filter->GetActualError());
+  auto large = GridAndTetrahedra(260);
+  const RunResult big = Decimate(large, 0.99);
+  const vtkIdType gone = big.Filter->GetNumberOfPrunedComponents();
+  const std::set<vtkIdType> ids = OriginalIds(big.Output);
+  const vtkIdType first = large->GetNumberOfPoints() - 40;
+  std::cout << "renumbered: " << gone << " tetrahedra removed\n";
+  CD_CHECK(gone > 0 && gone <= 10);
+  for (vtkIdType k = 0; k < 10; ++k)
+  {
+    CD_CHECK_MSG(ids.count(first + 4 * k) == (k < gone ? 0u : 1u), "tetrahedron " << k);
   }
 }
 

@@ -2377,10 +2377,14 @@ CD_TEST_CASE(CollapseRecordPiece)
   std::vector<int32_t> where;
   ResolveSurvivors(record, 6, where);
   CD_CHECK((where == std::vector<int32_t>{ 2, 2, 2, 3, 4, -1, -1, -1, -1 }));
-  // Bad: a piece's first entry that removes nothing; a collapse into a removed piece's point;
-  // an id below -1.
+  // Bad: a piece's first entry that removes nothing; a collapse after the piece that removes
+  // nothing (not the second of a pair); a collapse into a removed piece's point; an id below
+  // -1.
   CollapseRecord bad = record;
   bad.Triangles[1] = 10;
+  CD_CHECK(!IsConsistent(bad, why) && why.find("decrease") != std::string::npos);
+  bad = record;
+  bad.Triangles[5] = 6;
   CD_CHECK(!IsConsistent(bad, why) && why.find("decrease") != std::string::npos);
   bad = record;
   bad.Survivor[5] = 6;

@@ -905,8 +905,10 @@ CD_TEST_CASE(AttributeQuadricPieceCost)
   // the boundary planes of the edges not through a, 7 * |edge|^2 * distance^2 each, and
   // 2 * area * (|a - b|^2 + |a - c|^2). Corner 0: the hypotenuse's plane x + y = 1 (squared
   // length 2, distance^2 1/2) twice, 14, plus 2 * 0.5 * 2 = 16; corners 1 and 2: the plane
-  // of a leg twice, 14, plus 2 * 0.5 * 3 = 17. The least is 16, at corner 0, as the merged
-  // quadric of collapsing the other two into it says.
+  // of a leg twice, 14, plus 2 * 0.5 * 3 = 17 (the merged quadric of collapsing the other two
+  // into corner 0 says 16 too). The area each corner holds (0.5) travels to a: 0.5 * 2 = 1 at
+  // corner 0, 0.5 * 3 = 1.5 at the others. The least is 17, at corner 0; the mean squared
+  // distance moved 1 / 1.5.
   RampTriangle t;
   Buffer<HotVertex> hot;
   hot.resize(3);
@@ -925,10 +927,12 @@ CD_TEST_CASE(AttributeQuadricPieceCost)
   metric.Initialize(t.Mesh, Frame(), hot, true, 1);
   const int32_t piece[3] = { 0, 1, 2 };
   int32_t best = -1;
-  CD_CHECK_NEAR(metric.PieceCost(piece, 3, best), 16.0, 1e-5);
+  double spread = -1;
+  CD_CHECK_NEAR(metric.PieceCost(piece, 3, best, spread), 17.0, 1e-5);
   CD_CHECK(best == 0);
+  CD_CHECK_NEAR(spread, 1.0 / 1.5, 1e-6);
   const int32_t rotated[3] = { 2, 1, 0 };
-  CD_CHECK_NEAR(metric.PieceCost(rotated, 3, best), 16.0, 1e-5);
+  CD_CHECK_NEAR(metric.PieceCost(rotated, 3, best, spread), 17.0, 1e-5);
   CD_CHECK(best == 0);
   metric.Merge(1, 0, false, {});
   metric.Merge(2, 0, false, {});

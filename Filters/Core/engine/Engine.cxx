@@ -77,10 +77,16 @@ void EngineBase::FindRemovablePieces(DecimatorStatistics& stats)
 {
   const HalfEdgeMesh& mesh = this->Mesh;
   const SeamMap& seams = this->Seams;
-  this->Found = FindSmallPieces(
-    mesh, [&](int32_t v) { return mesh.IsFixed(v) || seams.GetRole(v) != SeamMap::None; });
+  const bool boundary = this->Options.PreserveBoundary;
+  this->Found = FindSmallPieces(mesh,
+                                [&](int32_t v)
+                                {
+                                  return mesh.IsFixed(v) || seams.GetRole(v) != SeamMap::None ||
+                                    (boundary && !mesh.IsLocked(v) && mesh.IsBoundaryVertex(v));
+                                });
   this->SmallPieces = PieceQueue();
   this->LargestPieceError = 0;
+  this->PieceBytes = 0;
   stats.Phases.Lap("pieces");
 }
 
@@ -100,9 +106,9 @@ bool EngineBase::RemovePieces(double cost, int64_t target, DecimatorStatistics& 
     const double pieceCost = this->SmallPieces.NextCost();
     this->SmallPieces.Pop(this->Mesh, faces, vertices);
     const auto n = static_cast<int64_t>(faces.size());
-    if (n == 0)
+    if (n == 0 || n > INT16_MAX * static_cast<int64_t>(vertices.size()))
     {
-      continue;
+      continue; // none left, or more faces than the record's rows can count (hostile input)
     }
     this->Mesh.RemoveComponent(faces.data(), static_cast<int32_t>(n));
     for (const int32_t v : vertices)

@@ -84,6 +84,9 @@ public:
   bool RemovePieces(double cost, int64_t target, DecimatorStatistics& stats);
   /// The largest squared error (frame units) of the pieces removed so far.
   double GetLargestPieceError() const { return this->LargestPieceError; }
+  /// The faces of the pieces that may be removed, and the bytes their queue held.
+  size_t GetPieceFaces() const { return this->SmallPieces.FaceTotal(); }
+  size_t GetPieceBytes() const { return this->PieceBytes; }
 
   /// Threads worth starting for this many items of work: NumberOfThreads at most,
   /// MinimumThreadWork items per thread.
@@ -184,6 +187,7 @@ protected:
   Pieces Found;
   PieceQueue SmallPieces;
   double LargestPieceError = 0;
+  size_t PieceBytes = 0;
   /// The pieces that may be removed whole: none with a fixed or seam vertex.
   void FindRemovablePieces(DecimatorStatistics& stats);
 
@@ -257,6 +261,7 @@ public:
   void Stop()
   {
     this->Workers.clear();
+    this->SmallPieces = PieceQueue();
     this->Main.Rules.SetReferenceNormals(nullptr);
     this->Finish(this->TheMetric.AnyMoved());
   }

@@ -397,17 +397,21 @@ void Engine<Metric>::CostPieces(DecimatorStatistics& stats)
       PieceVertices(this->Mesh, this->Found.Faces.data() + first,
                     size_t(this->Found.Start[p + 1] - first), vertices);
       int32_t best = vertices.front();
+      double spread = 0;
       costs[p] = this->Options.PieceWeight *
-        this->TheMetric.PieceCost(vertices.data(), vertices.size(), best);
+        this->TheMetric.PieceCost(vertices.data(), vertices.size(), best, spread);
       if (this->Errors.IsEnabled())
       {
+        // Removed, its surface is gone: at least as far as its points would travel.
         const float* x = this->Hot[best].P;
         const double at[3] = { x[0], x[1], x[2] };
-        errors[p] = this->Errors.PieceSquaredError(vertices.data(), vertices.size(), at);
+        errors[p] =
+          std::max(this->Errors.PieceSquaredError(vertices.data(), vertices.size(), at), spread);
       }
     }
     this->SmallPieces.Reset(std::move(this->Found), std::move(costs), std::move(errors));
     this->Found = Pieces();
+    this->PieceBytes = this->SmallPieces.Bytes();
     stats.Phases.Lap("pieces");
   }
 }

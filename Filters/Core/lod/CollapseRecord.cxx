@@ -101,7 +101,8 @@ bool IsConsistent(const CollapseRecord& record, std::string& why)
     // Equal counts: the second collapse of a pair (not a third), or a further vertex of a
     // removed piece.
     const bool piece = v1 < 0 && i > 0 && record.Survivor[i - 1] < 0;
-    const bool second = i > 0 && record.Triangles[i] == left && (piece || (!paired && v1 >= 0));
+    const bool second = i > 0 && record.Triangles[i] == left &&
+      (piece || (!paired && v1 >= 0 && record.Survivor[i - 1] >= 0));
     paired = second && !piece;
     if ((record.Triangles[i] >= left && !second) || record.Triangles[i] < 0)
     {

@@ -29,8 +29,8 @@ struct Pieces
 /**
  * The connected pieces of the live faces (through shared vertices) that a run may remove:
  * all but the one of most faces (ties: the one with the lowest vertex id), less those with a
- * vertex `keep` marks. Numbered by their first face. Holds two ints and a byte per vertex
- * while it runs.
+ * vertex `keep` marks. Numbered by their lowest vertex id. Holds two ints and a byte per
+ * vertex while it runs.
  */
 VTKCOLORDECIMATION_EXPORT Pieces FindSmallPieces(const HalfEdgeMesh& mesh,
                                                  const std::function<bool(int32_t)>& keep);

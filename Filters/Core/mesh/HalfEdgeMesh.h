@@ -60,7 +60,7 @@ public:
   {
     Locked = 1,  ///< non-manifold neighbourhood: never collapsed
     Removed = 2, ///< collapsed away
-    Fixed = 4,   ///< locked because the input fixes it (lock array, ghost point)
+    Fixed = 4,   ///< locked for more than its neighbourhood (lock array, ghost, seam corner)
   };
 
   /// Build from `numTriangles` triangles given as 3 vertex ids each. Triangles must not
@@ -171,7 +171,8 @@ public:
 
   /// Exclude v from every collapse (it and all its triangles' corners stay as they are).
   void Lock(int32_t v) { this->Flags[v] |= Locked; }
-  /// Lock v as a point the input fixes (its piece is never removed whole).
+  /// Lock v for more than its neighbourhood: the input fixes it (lock array, ghost point) or it
+  /// holds a seam together; its piece is never removed whole.
   void Fix(int32_t v) { this->Flags[v] |= Locked | Fixed; }
 
   /// Number of neighbours of an unlocked vertex.

@@ -103,7 +103,7 @@ void ClassifyGroup(HalfEdgeMesh& mesh, const std::vector<Member>& members,
     }
     else
     {
-      mesh.Lock(m.Vertex);
+      mesh.Fix(m.Vertex); // locked, and its piece is never removed whole
       ++report.LockedVertices;
     }
   }
@@ -162,7 +162,7 @@ SeamReport SeamMap::Detect(HalfEdgeMesh& mesh, const double* points, const int32
     }
     else if (roles[v] == Shared)
     {
-      mesh.Lock(v);
+      mesh.Fix(v);
       ++report.LockedVertices;
     }
   }

@@ -308,28 +308,47 @@ void AttributeQuadricMetric::CostRing(int32_t v0, bool, Ring& ring, double* cost
   CostAttributeRing(this->States[v0], (*this->Hot)[v0], this->ColorWeight, ring, costs);
 }
 
-double AttributeQuadricMetric::PieceCost(const int32_t* vertices, size_t count, int32_t& best) const
+double AttributeQuadricMetric::PieceCost(const int32_t* vertices, size_t count, int32_t& best,
+                                         double& spread) const
 {
   const int32_t centre = vertices[0];
   AttributeQuadric sum = this->States[centre];
   double dx[3], ds[3];
-  for (size_t i = 1; i < count; ++i)
+  // The moments of the area at the points, about the centre: sum W, sum W d, sum W |d|^2.
+  double area = 0, first[3] = { 0, 0, 0 }, second = 0;
+  for (size_t i = 0; i < count; ++i)
   {
-    this->Offset(vertices[i], centre, dx, ds);
-    sum.AddShifted(this->States[vertices[i]], dx, ds);
+    this->Offset(centre, vertices[i], dx, ds);
+    const double w = this->States[vertices[i]].W;
+    area += w;
+    second += w * (dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2]);
+    for (int k = 0; k < 3; ++k)
+    {
+      first[k] += w * dx[k];
+    }
+    if (i > 0)
+    {
+      this->Offset(vertices[i], centre, dx, ds);
+      sum.AddShifted(this->States[vertices[i]], dx, ds);
+    }
   }
-  double least = std::numeric_limits<double>::infinity();
+  double least = std::numeric_limits<double>::infinity(), travel = 0;
   best = centre;
   for (size_t i = 0; i < count; ++i)
   {
     this->Offset(centre, vertices[i], dx, ds);
-    const double cost = sum.Evaluate(dx, ds);
+    // sum of W_v |d_v - d|^2 = second - 2 d . first + |d|^2 area
+    const double moved = second - 2.0 * (dx[0] * first[0] + dx[1] * first[1] + dx[2] * first[2]) +
+      (dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2]) * area;
+    const double cost = std::max(sum.Evaluate(dx, ds), 0.0) + std::max(moved, 0.0);
     if (cost < least)
     {
       least = cost;
       best = vertices[i];
+      travel = std::max(moved, 0.0);
     }
   }
+  spread = area > 0 ? travel / area : 0.0;
   return least;
 }
 

@@ -40,6 +40,8 @@ public:
   const int32_t* Faces(size_t p) const { return this->P.Faces.data() + this->P.Start[p]; }
   size_t FaceCount(size_t p) const { return size_t(this->P.Start[p + 1] - this->P.Start[p]); }
   size_t Bytes() const;
+  /// The faces of all its pieces, removed or not.
+  size_t FaceTotal() const { return this->P.Faces.size(); }
 
 private:
   Pieces P;
