@@ -249,8 +249,8 @@ public:
    * a locked point (lock array, ghost points), an attribute seam or, with PreserveBoundary, an
    * open boundary are kept. The separate parts of a model made of several are pieces too: set
    * 0 to keep every part. Removed pieces count in NumberOfPrunedComponents, their error in
-   * ActualError and MaximumError (the distance their surface would move), and they are in the
-   * collapse record. Default 10; 0: pieces are never removed during the run (the paper's
+   * ActualError (see MaximumError: pieces beyond it are kept), and they are in the collapse
+   * record. Default 10; 0: pieces are never removed during the run (the paper's
    * method).
    */
   vtkSetClampMacro(PieceWeight, double, 0.0, VTK_DOUBLE_MAX);
@@ -335,8 +335,8 @@ public:
    * (Garland and Heckbert's quadric error divided by its area, in distance units). It does not
    * depend on ErrorMetric, which still orders the collapses. A piece removed whole (PieceWeight)
    * has the larger of that error for all its points merged into its best one and the
-   * root-mean-square distance its area would move there; the run stops at the first piece
-   * beyond the bound too.
+   * root-mean-square distance its area would move there; a piece beyond the bound is kept, and
+   * the run goes on.
    */
   vtkSetMacro(MaximumError, double);
   vtkGetMacro(MaximumError, double);

@@ -317,7 +317,7 @@ bool vtkColorHalfEdgeLevelOfDetail::ExtractLevel(vtkPolyData* input, vtkDataObje
   const int64_t target = colordecimation::adapter::TargetTriangles(
     this->TargetNumberOfTriangles, this->TargetReduction, collapses.InputTriangles);
   const size_t count = colordecimation::LevelLength(collapses, target, this->MaximumError);
-  colordecimation::ResolveSurvivors(collapses, count, cache.Where);
+  colordecimation::ResolveSurvivors(collapses, count, cache.Where, this->MaximumError);
   this->UpdateProgress(0.5);
 
   // 3. The output, as the decimation writes it; the statistics summed over the meshes.
@@ -327,15 +327,14 @@ bool vtkColorHalfEdgeLevelOfDetail::ExtractLevel(vtkPolyData* input, vtkDataObje
     std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads()), output);
   this->Cached->InputTriangles += collapses.InputTriangles;
   this->Cached->OutputTriangles += triangles;
-  this->NumberOfCollapses += static_cast<vtkIdType>(
-    std::count_if(collapses.Survivor.begin(), collapses.Survivor.begin() + count,
-                  [](int32_t survivor) { return survivor >= 0; }));
+  this->NumberOfCollapses += static_cast<vtkIdType>(count);
   this->NumberOfRecordedCollapses += static_cast<vtkIdType>(collapses.Size());
-  if (count > 0)
+  for (size_t i = 0; i < count; ++i)
   {
-    this->ActualError =
-      std::max(this->ActualError,
-               *std::max_element(collapses.Error.begin(), collapses.Error.begin() + count));
+    if (!colordecimation::IsSkippedPiece(collapses, i, this->MaximumError))
+    {
+      this->ActualError = std::max(this->ActualError, collapses.Error[i]);
+    }
   }
   return true;
 }

@@ -138,11 +138,10 @@ public:
   vtkGetMacro(ActualReduction, double);
   /// The largest geometric error of the last level's collapses (input units).
   vtkGetMacro(ActualError, double);
-  /// The number of collapses of the last level (the rows of the prefix of the record it takes,
-  /// less those of pieces removed whole, as the decimation counts them; summed over the meshes
-  /// of a composite input).
+  /// The number of rows of the record's prefix the last level takes (its collapses and a row
+  /// for each point of a piece removed whole; summed over the meshes of a composite input).
   vtkGetMacro(NumberOfCollapses, vtkIdType);
-  /// The number of collapses in the record (the finest-to-coarsest range of levels; summed).
+  /// The number of rows in the record (the finest-to-coarsest range of levels; summed).
   vtkGetMacro(NumberOfRecordedCollapses, vtkIdType);
 
 protected:

@@ -498,14 +498,64 @@ CD_TEST_CASE(PieceWeight)
   }
 }
 
+CD_TEST_CASE(PieceWeightKeeps)
+{
+  // Pieces that hold something together or that the user keeps are never removed whole: the
+  // six faces of a colour cube (its own points a face, joined by seams: twinned points along
+  // the edges for n > 1, only the locked corners for n = 1), even at a weight that makes
+  // removing them all but free; and, with PreserveBoundary, open pieces (a grid and ten single
+  // triangles away from it, which the defaults remove).
+  for (const int n : { 1, 8 })
+  {
+    // A weight so light that any piece not kept would go at once.
+    const RunResult cube = Decimate(meshes::ColorCube(n), 0.99,
+                                    [](vtkColorHalfEdgeDecimation* f) { f->SetPieceWeight(1e-9); });
+    CD_CHECK_MSG(cube.Filter->GetNumberOfPrunedComponents() == 0, "ColorCube(" << n << ")");
+  }
+  std::vector<double> xyz;
+  std::vector<vtkIdType> triangles;
+  const int m = 20;
+  for (int j = 0; j <= m; ++j)
+  {
+    for (int i = 0; i <= m; ++i)
+    {
+      xyz.insert(xyz.end(), { double(i), double(j), 0.0 });
+    }
+  }
+  for (vtkIdType j = 0; j < m; ++j)
+  {
+    for (vtkIdType i = 0; i < m; ++i)
+    {
+      const vtkIdType a = (m + 1) * j + i, b = a + 1, c = a + m + 2, d = a + m + 1;
+      triangles.insert(triangles.end(), { a, b, c, a, c, d });
+    }
+  }
+  for (int k = 1; k <= 10; ++k)
+  {
+    const auto first = static_cast<vtkIdType>(xyz.size() / 3);
+    const double e = 0.2 * k, x = m + 10.0 + 3.0 * k;
+    xyz.insert(xyz.end(), { x, 0, 0, x + e, 0, 0, x, e, 0 });
+    triangles.insert(triangles.end(), { first, first + 1, first + 2 });
+  }
+  auto mesh = meshes::FromTriangles(xyz, triangles);
+  const RunResult open = Decimate(mesh, 0.99);
+  const RunResult kept =
+    Decimate(mesh, 0.99, [](vtkColorHalfEdgeDecimation* f) { f->PreserveBoundaryOn(); });
+  std::cout << "open triangles: " << open.Filter->GetNumberOfPrunedComponents()
+            << " removed; with PreserveBoundary " << kept.Filter->GetNumberOfPrunedComponents()
+            << "\n";
+  CD_CHECK(open.Filter->GetNumberOfPrunedComponents() > 0);
+  CD_CHECK(kept.Filter->GetNumberOfPrunedComponents() == 0);
+}
+
 CD_TEST_CASE(PieceWeightWithOtherControls)
 {
   // The grid and ten tetrahedra again. PruneComponents after PieceWeight (a heavy one, which
   // removes fewer): the count is the sum of both, every piece removed a tetrahedron. MaximumError:
-  // a bound below the smallest tetrahedron's error keeps every piece (the run stops there) and
-  // ActualError stays within it; an unreachable bound removes what the defaults remove, and
-  // ActualError counts the pieces' errors. A mesh large enough to be renumbered: the same rule,
-  // smallest first.
+  // a bound below the smallest tetrahedron's error keeps every piece and the run goes on as
+  // without PieceWeight, ActualError within it; an unreachable bound removes what the defaults
+  // remove, and ActualError counts the pieces' errors. A mesh large enough to be renumbered: the
+  // same rule, smallest first.
   auto mesh = GridAndTetrahedra();
   const vtkIdType target = 2;
   const auto toTarget = [target](bool prune)
@@ -532,10 +582,21 @@ CD_TEST_CASE(PieceWeightWithOtherControls)
   CD_CHECK(all > removed && all == missing && both.Output->GetNumberOfPolys() <= target);
   const RunResult plain = Decimate(mesh, 0.99);
   const vtkIdType removedAt99 = plain.Filter->GetNumberOfPrunedComponents();
-  const RunResult bounded =
-    Decimate(mesh, 0.99, [](vtkColorHalfEdgeDecimation* f) { f->SetMaximumError(1e-3); });
+  CD_CHECK(removed > 0);
+  const auto withBound = [](double weight)
+  {
+    return [weight](vtkColorHalfEdgeDecimation* f)
+    {
+      f->SetMaximumError(1e-3);
+      f->SetPieceWeight(weight);
+    };
+  };
+  const RunResult bounded = Decimate(mesh, 0.99, withBound(10));
+  const RunResult keepAll = Decimate(mesh, 0.99, withBound(0));
   CD_CHECK(bounded.Filter->GetNumberOfPrunedComponents() == 0);
   CD_CHECK(bounded.Filter->GetActualError() <= 1e-3);
+  CD_CHECK(bounded.Output->GetNumberOfPolys() == keepAll.Output->GetNumberOfPolys() &&
+           OriginalIds(bounded.Output) == OriginalIds(keepAll.Output));
   const RunResult unbounded =
     Decimate(mesh, 0.99, [](vtkColorHalfEdgeDecimation* f) { f->SetMaximumError(1e9); });
   CD_CHECK(unbounded.Filter->GetNumberOfPrunedComponents() == removedAt99);

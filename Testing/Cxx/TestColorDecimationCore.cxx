@@ -2355,7 +2355,8 @@ CD_TEST_CASE(CollapseRecordByHand)
 // A piece removed whole in the record, by hand: 9 points, 12 triangles; 0 -> 1 (2 triangles),
 // then the piece of points 5, 6, 7, 8 (4 triangles, a tetrahedron) removed, one entry a point
 // into -1, as one step with its largest error; then 1 -> 2. The piece's points resolve to -1,
-// and a level never ends inside the step.
+// a level never ends inside the step, and a level under a bound below the piece's error skips
+// the piece and goes on.
 CD_TEST_CASE(CollapseRecordPiece)
 {
   CollapseRecord record;
@@ -2373,10 +2374,19 @@ CD_TEST_CASE(CollapseRecordPiece)
   CD_CHECK_MSG(IsConsistent(record, why), why);
   CD_CHECK(LevelLength(record, 9, 0.0) == 5); // 10 > 9: the whole step goes in
   CD_CHECK(LevelLength(record, 6, 0.0) == 5);
-  CD_CHECK(LevelLength(record, 0, 2.0) == 1); // the step's error 3 stops it
+  CD_CHECK(LevelLength(record, 0, 4.0) == 6);
   std::vector<int32_t> where;
   ResolveSurvivors(record, 6, where);
   CD_CHECK((where == std::vector<int32_t>{ 2, 2, 2, 3, 4, -1, -1, -1, -1 }));
+  // MaximumError 2: the piece (error 3) is skipped, not a stop; its 4 faces count as left, so
+  // a target of 8 still takes the last collapse (10 left before it), and its points stay.
+  CD_CHECK(LevelLength(record, 0, 2.0) == 6);
+  CD_CHECK(LevelLength(record, 8, 2.0) == 6);
+  CD_CHECK(LevelLength(record, 10, 2.0) == 1);
+  CD_CHECK(IsSkippedPiece(record, 2, 2.0) && !IsSkippedPiece(record, 2, 4.0) &&
+           !IsSkippedPiece(record, 5, 0.5) && !IsSkippedPiece(record, 2, 0.0));
+  ResolveSurvivors(record, 6, where, 2.0);
+  CD_CHECK((where == std::vector<int32_t>{ 2, 2, 2, 3, 4, 5, 6, 7, 8 }));
   // Bad: a piece's first entry that removes nothing; a collapse after the piece that removes
   // nothing (not the second of a pair); a collapse into a removed piece's point; an id below
   // -1.

@@ -289,9 +289,9 @@ vtkSmartPointer<vtkPolyData> SphereWithFragments(int level)
 }
 
 // Greedy with pieces removed whole: each removed piece is in the record (one row a point, with
-// SurvivingPointId -1, one step), and the levels are still the direct runs' outputs (and their
-// collapse counts). Batched: its record run's output is its last level, and a level's
-// statistics count the collapses, not the rows of removed pieces.
+// SurvivingPointId -1, one step), and the levels are still the direct runs' outputs (their
+// collapses the prefix's rows less the pieces'), also by MaximumError, under which the pieces
+// beyond it are kept. Batched: its record run's output is its last level.
 CD_TEST_CASE(GreedyLevelsWithPieces)
 {
   auto mesh = SphereWithFragments(3);
@@ -318,14 +318,40 @@ CD_TEST_CASE(GreedyLevelsWithPieces)
     lod->SetRecordData(all.Record);
     lod->SetTargetReduction(reduction);
     lod->Update();
-    CD_CHECK_MSG(lod->GetNumberOfCollapses() == direct.Filter->GetNumberOfCollapses(),
-                 lod->GetNumberOfCollapses() << " " << direct.Filter->GetNumberOfCollapses());
+    const auto rows = static_cast<size_t>(lod->GetNumberOfCollapses()); // the prefix's rows
+    CD_CHECK(rows <= survivors.size());
+    const auto collapses =
+      std::count_if(survivors.begin(), survivors.begin() + rows, [](double s) { return s >= 0; });
+    CD_CHECK_MSG(collapses == direct.Filter->GetNumberOfCollapses(),
+                 collapses << " " << direct.Filter->GetNumberOfCollapses());
   }
+  // Under MaximumError the pieces beyond it are kept and the run goes on; the level by error
+  // skips their rows.
+  const double bound = 0.01 * mesh->GetLength();
+  const RunResult bounded = Decimate(mesh, 0.99,
+                                     [bound](vtkColorHalfEdgeDecimation* f)
+                                     {
+                                       f->SetCollapseScheduleToGreedy();
+                                       f->SetMaximumError(bound);
+                                     });
+  std::cout << "bound " << bound << ": " << bounded.Filter->GetNumberOfPrunedComponents()
+            << " pieces removed, " << bounded.Output->GetNumberOfPolys() << " triangles\n";
+  CD_CHECK(bounded.Filter->GetNumberOfPrunedComponents() > 0 &&
+           bounded.Filter->GetNumberOfPrunedComponents() < 12);
+  CD_CHECK(bounded.Output->GetNumberOfPolys() < mesh->GetNumberOfPolys() / 2);
+  CD_CHECK(bounded.Filter->GetActualError() <= bound);
+  auto byError = Extract(mesh, all.Record,
+                         [bound](auto* f)
+                         {
+                           f->SetTargetReduction(0.99);
+                           f->SetMaximumError(bound);
+                         });
+  std::string why;
+  CD_CHECK_MSG(SameMesh(bounded.Output, byError, why), "by error: " << why);
   const Recorded batched = RecordRun(mesh, 1.0, vtkColorHalfEdgeDecimation::Batched);
   const std::vector<double> rows = ColumnValues(batched.Record, "SurvivingPointId");
   CD_CHECK(std::count(rows.begin(), rows.end(), -1.0) > 0);
   auto last = Extract(mesh, batched.Record, [](auto* f) { f->SetTargetReduction(1.0); });
-  std::string why;
   CD_CHECK_MSG(SameMesh(batched.Output, last, why), why);
 }
 

@@ -90,7 +90,7 @@ void EngineBase::FindRemovablePieces(DecimatorStatistics& stats)
   stats.Phases.Lap("pieces");
 }
 
-bool EngineBase::RemovePieces(double cost, int64_t target, DecimatorStatistics& stats)
+void EngineBase::RemovePieces(double cost, int64_t target, DecimatorStatistics& stats)
 {
   std::vector<int32_t> faces, vertices;
   while (!this->SmallPieces.IsEmpty() && this->SmallPieces.NextCost() <= cost &&
@@ -98,13 +98,12 @@ bool EngineBase::RemovePieces(double cost, int64_t target, DecimatorStatistics& 
   {
     const double squared = this->SmallPieces.NextSquaredError();
     const double bound = this->Errors.GetBound();
-    if (this->Options.MaximumError > 0 && squared > bound * bound)
-    {
-      stats.ErrorBoundReached = true;
-      return false;
-    }
     const double pieceCost = this->SmallPieces.NextCost();
     this->SmallPieces.Pop(this->Mesh, faces, vertices);
+    if (this->Options.MaximumError > 0 && squared > bound * bound)
+    {
+      continue; // kept
+    }
     const auto n = static_cast<int64_t>(faces.size());
     if (n == 0 || n > INT16_MAX * static_cast<int64_t>(vertices.size()))
     {
@@ -123,7 +122,6 @@ bool EngineBase::RemovePieces(double cost, int64_t target, DecimatorStatistics& 
     ++stats.PrunedComponents;
     stats.PrunedTriangles += n;
   }
-  return true;
 }
 
 void EngineBase::RecordPiece(const std::vector<int32_t>& vertices, int64_t faces, double cost,

@@ -78,10 +78,10 @@ public:
   /**
    * Remove the small pieces whose cost is at most `cost` (schedule/PieceQueue.h) while more
    * than `target` faces are left (the last may take the count below it, as a level of the
-   * record would). False when the next one exceeds MaximumError (stats.ErrorBoundReached): the
-   * run stops there, as at a collapse.
+   * record would). A piece beyond MaximumError is kept (a piece is apart from the rest: the
+   * run goes on, as a level of the record skips it).
    */
-  bool RemovePieces(double cost, int64_t target, DecimatorStatistics& stats);
+  void RemovePieces(double cost, int64_t target, DecimatorStatistics& stats);
   /// The largest squared error (frame units) of the pieces removed so far.
   double GetLargestPieceError() const { return this->LargestPieceError; }
   /// The faces of the pieces that may be removed, and the bytes their queue held.
@@ -188,7 +188,8 @@ protected:
   PieceQueue SmallPieces;
   double LargestPieceError = 0;
   size_t PieceBytes = 0;
-  /// The pieces that may be removed whole: none with a fixed or seam vertex.
+  /// The pieces that may be removed whole: none with a fixed or seam vertex, nor, with
+  /// PreserveBoundary, a boundary one.
   void FindRemovablePieces(DecimatorStatistics& stats);
 
 private:

@@ -53,18 +53,27 @@ void CollapseRecord::Append(const RecordedCollapse* made, size_t madeCount, cons
   }
 }
 
+bool IsSkippedPiece(const CollapseRecord& record, size_t i, double maximumError)
+{
+  return maximumError > 0 && record.Survivor[i] < 0 && record.Error[i] > maximumError;
+}
+
 size_t LevelLength(const CollapseRecord& record, int64_t targetTriangles, double maximumError)
 {
-  int64_t left = record.InputTriangles;
+  int64_t left = record.InputTriangles; // the record's count before row i
+  int64_t kept = 0;                     // the faces of the pieces the level skips
   size_t i = 0;
   for (; i < record.Size(); ++i)
   {
     const bool second = i > 0 && record.Triangles[i] == record.Triangles[i - 1];
+    const bool skipped = IsSkippedPiece(record, i, maximumError);
     if (!second &&
-        (left <= targetTriangles || (maximumError > 0 && record.Error[i] > maximumError)))
+        (left + kept <= targetTriangles ||
+         (!skipped && maximumError > 0 && record.Error[i] > maximumError)))
     {
       break;
     }
+    kept += skipped && !second ? left - record.Triangles[i] : 0;
     left = record.Triangles[i];
   }
   return i;
@@ -115,13 +124,17 @@ bool IsConsistent(const CollapseRecord& record, std::string& why)
   return true;
 }
 
-void ResolveSurvivors(const CollapseRecord& record, size_t count, std::vector<int32_t>& where)
+void ResolveSurvivors(const CollapseRecord& record, size_t count, std::vector<int32_t>& where,
+                      double maximumError)
 {
   where.resize(static_cast<size_t>(record.InputPoints));
   std::iota(where.begin(), where.end(), 0);
   for (size_t i = 0; i < count && i < record.Size(); ++i)
   {
-    where[record.Removed[i]] = record.Survivor[i];
+    if (!IsSkippedPiece(record, i, maximumError))
+    {
+      where[record.Removed[i]] = record.Survivor[i];
+    }
   }
   // Each chain of parents ends at a survivor, or at -1 (a removed piece); every vertex on it
   // is pointed there at once.

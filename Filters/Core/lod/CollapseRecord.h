@@ -67,7 +67,9 @@ struct VTKCOLORDECIMATION_EXPORT CollapseRecord
  * How many of the record's first collapses make the level that a run to `targetTriangles`
  * (and `maximumError`, when > 0) stops at: up to the first collapse that leaves at most
  * targetTriangles, and before the first whose error exceeds maximumError; all of them if
- * neither stops it first. The second collapse of a pair always goes with the first.
+ * neither stops it first. The second collapse of a pair always goes with the first. A removed
+ * piece whose error exceeds maximumError is in the prefix but not in the level (a bounded run
+ * keeps it and goes on): its faces count as left, and ResolveSurvivors skips its rows.
  */
 VTKCOLORDECIMATION_EXPORT size_t LevelLength(const CollapseRecord& record, int64_t targetTriangles,
                                              double maximumError);
@@ -83,10 +85,16 @@ VTKCOLORDECIMATION_EXPORT bool IsConsistent(const CollapseRecord& record, std::s
 /**
  * Each vertex's vertex in the level of the first `count` collapses: itself if it survives
  * them, else the survivor it ended in, or -1 if that went with a removed piece (`where` has
- * InputPoints entries). Linear in the points and `count`.
+ * InputPoints entries; the rows of pieces beyond `maximumError`, when > 0, skipped). Linear in
+ * the points and `count`.
  */
 VTKCOLORDECIMATION_EXPORT void ResolveSurvivors(const CollapseRecord& record, size_t count,
-                                                std::vector<int32_t>& where);
+                                                std::vector<int32_t>& where,
+                                                double maximumError = 0);
+
+/// Whether row i is a removed piece's that a level under `maximumError` (> 0) skips.
+VTKCOLORDECIMATION_EXPORT bool IsSkippedPiece(const CollapseRecord& record, size_t i,
+                                              double maximumError);
 
 } // namespace colordecimation
 

@@ -340,7 +340,8 @@ double AttributeQuadricMetric::PieceCost(const int32_t* vertices, size_t count, 
     // sum of W_v |d_v - d|^2 = second - 2 d . first + |d|^2 area
     const double moved = second - 2.0 * (dx[0] * first[0] + dx[1] * first[1] + dx[2] * first[2]) +
       (dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2]) * area;
-    const double cost = std::max(sum.Evaluate(dx, ds), 0.0) + std::max(moved, 0.0);
+    const double cost =
+      std::max(sum.Evaluate(dx, ds), 0.0) + this->Weights.Geometry * std::max(moved, 0.0);
     if (cost < least)
     {
       least = cost;

@@ -104,9 +104,9 @@ public:
   /**
    * The cost of removing a whole piece (section 14), as if all its vertices collapsed into
    * the best of them (into `best`): their quadrics summed, plus the area their points would
-   * travel, sum of W_v |x_v - x_best|^2 (the plane terms do not see a piece shrink within its
-   * plane), at the vertex where that is least, and never below 0. `spread`: that travel
-   * divided by the area, the mean squared distance moved.
+   * travel, GeometryWeight * sum of W_v |x_v - x_best|^2 (the plane terms do not see a piece
+   * shrink within its plane), at the vertex where that is least, and never below 0. `spread`: that
+   * travel divided by the area, the mean squared distance moved.
    */
   double PieceCost(const int32_t* vertices, size_t count, int32_t& best, double& spread) const;
   /// v1 takes over v0's quadric, re-centred at v1's point.

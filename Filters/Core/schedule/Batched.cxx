@@ -69,8 +69,8 @@ public:
     while (mesh.GetNumberOfLiveFaces() > stats.TargetTriangles && !stats.Aborted)
     {
       // The pieces up to the cost the last pass reached go before the next batch is chosen.
-      if (!this->E.RemovePieces(this->BatchTop, stats.TargetTriangles, stats) ||
-          mesh.GetNumberOfLiveFaces() <= stats.TargetTriangles)
+      this->E.RemovePieces(this->BatchTop, stats.TargetTriangles, stats);
+      if (mesh.GetNumberOfLiveFaces() <= stats.TargetTriangles)
       {
         break;
       }

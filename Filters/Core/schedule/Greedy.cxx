@@ -36,8 +36,8 @@ public:
            !this->Heap.Empty() && !stats.ErrorBoundReached)
     {
       // The pieces cheaper than the collapse at the top go first (its key is a lower bound).
-      if (!this->E.RemovePieces(this->Heap.TopKey(), stats.TargetTriangles, stats) ||
-          this->E.GetMesh().GetNumberOfLiveFaces() <= stats.TargetTriangles)
+      this->E.RemovePieces(this->Heap.TopKey(), stats.TargetTriangles, stats);
+      if (this->E.GetMesh().GetNumberOfLiveFaces() <= stats.TargetTriangles)
       {
         break;
       }

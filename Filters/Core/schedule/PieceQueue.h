@@ -4,12 +4,13 @@
  * (docs/ALGORITHM.md, section 14): the fragments of a scan, which collapses cannot take below a
  * few triangles each, go when removing one costs less than the collapses being made.
  *
- * The pieces (mesh/Components.h: all but the largest, none with a fixed or seam vertex) are
- * costed once, at the start, by the metric: the cost of collapsing every vertex of the piece
- * into its best one, times PieceWeight. A piece's vertices only ever collapse into each other,
- * so that sum, like the piece itself, stays what it was at the start. The schedules ask for the
- * pieces up to the cost they have reached (Greedy before each collapse, Batched before each
- * pass).
+ * The pieces (mesh/Components.h: all but the largest, none with a fixed or seam vertex, nor,
+ * with PreserveBoundary, a boundary one) are costed once, at the start, by the metric: the
+ * cost of collapsing every vertex of the piece into its best one and of the area moving there
+ * (AttributeQuadricMetric::PieceCost), times PieceWeight. A piece's vertices only ever collapse
+ * into each other, so those sums, like the piece itself, stay what they were at the start. The
+ * schedules ask for the pieces up to the cost they have reached (Greedy before each collapse,
+ * Batched before each pass); a piece beyond MaximumError is kept.
  */
 #ifndef colordecimation_PieceQueue_h
 #define colordecimation_PieceQueue_h
