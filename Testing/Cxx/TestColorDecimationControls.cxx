@@ -67,14 +67,9 @@ double PyramidError(double h)
   return std::sqrt(4.0 / 3.0) / std::sqrt(2.0 + 1.0 / (h * h));
 }
 
-/**
- * A flat grid of m x m quads over [0, m]^2 (m = 20: 441 points) and, beside it, ten separate
- * tetrahedra of edge 0.2 k (k = 1 .. 10), which no collapse can reduce: 2 m^2 + 40 triangles.
- */
-vtkSmartPointer<vtkPolyData> GridAndTetrahedra(int m = 20)
+/// The points and triangles of a flat m x m grid of unit quads at z = 0, appended.
+void AddGrid(int m, std::vector<double>& xyz, std::vector<vtkIdType>& triangles)
 {
-  std::vector<double> xyz;
-  std::vector<vtkIdType> triangles;
   for (int j = 0; j <= m; ++j)
   {
     for (int i = 0; i <= m; ++i)
@@ -90,6 +85,17 @@ vtkSmartPointer<vtkPolyData> GridAndTetrahedra(int m = 20)
       triangles.insert(triangles.end(), { a, b, c, a, c, d });
     }
   }
+}
+
+/**
+ * A flat grid of m x m quads over [0, m]^2 (m = 20: 441 points) and, beside it, ten separate
+ * tetrahedra of edge 0.2 k (k = 1 .. 10), which no collapse can reduce: 2 m^2 + 40 triangles.
+ */
+vtkSmartPointer<vtkPolyData> GridAndTetrahedra(int m = 20)
+{
+  std::vector<double> xyz;
+  std::vector<vtkIdType> triangles;
+  AddGrid(m, xyz, triangles);
   for (int k = 1; k <= 10; ++k)
   {
     const auto first = static_cast<vtkIdType>(xyz.size() / 3);
@@ -515,21 +521,7 @@ CD_TEST_CASE(PieceWeightKeeps)
   std::vector<double> xyz;
   std::vector<vtkIdType> triangles;
   const int m = 20;
-  for (int j = 0; j <= m; ++j)
-  {
-    for (int i = 0; i <= m; ++i)
-    {
-      xyz.insert(xyz.end(), { double(i), double(j), 0.0 });
-    }
-  }
-  for (vtkIdType j = 0; j < m; ++j)
-  {
-    for (vtkIdType i = 0; i < m; ++i)
-    {
-      const vtkIdType a = (m + 1) * j + i, b = a + 1, c = a + m + 2, d = a + m + 1;
-      triangles.insert(triangles.end(), { a, b, c, a, c, d });
-    }
-  }
+  AddGrid(m, xyz, triangles);
   for (int k = 1; k <= 10; ++k)
   {
     const auto first = static_cast<vtkIdType>(xyz.size() / 3);
