@@ -97,6 +97,9 @@ DecimatorStatistics Decimator::RunWith(const DecimatorInput& input, int64_t targ
   {
     CollapseGreedily(*engine, stats, progress);
   }
+  // The schedule's figure is its collapses'; the pieces removed whole count too.
+  stats.ActualError =
+    std::max(stats.ActualError, engine->ToInputDistance(engine->GetLargestPieceError()));
   stats.Threads = engine->GetThreadsUsed();
   const bool renumbered = engine->IsRenumbered();
   engine->Stop();

@@ -105,8 +105,7 @@ public:
     }
     stats.CollapseThreads = this->CollapseThreadsUsed;
     stats.WideCollapseThreads = this->WideCollapseThreadsUsed;
-    stats.ActualError =
-      this->E.ToInputDistance(std::max(this->LargestSquaredError, this->E.GetLargestPieceError()));
+    stats.ActualError = this->E.ToInputDistance(this->LargestSquaredError);
     stats.Phases.Lap("batch selection"); // the last (empty) selection, or the last pass's end
   }
 

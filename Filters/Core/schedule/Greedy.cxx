@@ -57,8 +57,7 @@ public:
         }
       }
     }
-    stats.ActualError =
-      this->E.ToInputDistance(std::max(this->LargestSquaredError, this->E.GetLargestPieceError()));
+    stats.ActualError = this->E.ToInputDistance(this->LargestSquaredError);
     stats.Phases.Lap("collapses");
   }
 
