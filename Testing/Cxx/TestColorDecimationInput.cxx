@@ -11,17 +11,21 @@
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkSOADataArrayTemplate.h"
+#include "vtkSphereSource.h"
 #include "vtkStripper.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <cmath>
+#include <cstring>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <sstream>
 
 using namespace colordecimation;
@@ -513,6 +517,126 @@ CD_TEST_CASE(VerticesAndLines)
   // The cell data of each triangle is its source triangle's (cell ids after the vertices
   // and lines).
   CheckDecimatedMesh(mesh, r.Output, Expectation{ true, 2, 0, nullptr, true }, "verts+lines");
+}
+
+// The generated meshes that the tests, the benchmarks and the CLI's demo read.
+
+namespace
+{
+// Points (as doubles) and triangles of two meshes, bit for bit.
+bool SameMesh(vtkPolyData* a, vtkPolyData* b)
+{
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints() ||
+      a->GetNumberOfPolys() != b->GetNumberOfPolys())
+  {
+    return false;
+  }
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    a->GetPoint(i, p);
+    b->GetPoint(i, q);
+    if (std::memcmp(p, q, sizeof(p)) != 0)
+    {
+      return false;
+    }
+  }
+  vtkNew<vtkIdList> ca, cb;
+  for (vtkIdType c = 0; c < a->GetNumberOfPolys(); ++c)
+  {
+    a->GetCellPoints(c, ca);
+    b->GetCellPoints(c, cb);
+    if (ca->GetNumberOfIds() != 3 || cb->GetNumberOfIds() != 3 ||
+        !std::equal(ca->begin(), ca->end(), cb->begin()))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+} // namespace
+
+// The demo's and the benchmark's UV spheres are made on all cores, as vtkSphereSource makes
+// them: the same points bit for bit, the same triangles in the same order, also where it repeats
+// the first meridian (39, 78: 360 / r * r < 360).
+CD_TEST_CASE(GeneratedUVSphere)
+{
+  for (int r : { 4, 5, 8, 39, 78, 100, 161, 700 })
+  {
+    vtkNew<vtkSphereSource> source;
+    source->SetThetaResolution(r);
+    source->SetPhiResolution(r);
+    source->SetRadius(1.0);
+    source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+    source->Update();
+    auto generated = meshes::UVSphere(r, Pattern::SharpRegions);
+    CD_CHECK(SameMesh(generated, source->GetOutput()));
+    CD_CHECK(generated->GetNumberOfPolys() == 2 * r * (r - 2));
+    auto* rgb = RGB(generated);
+    CD_CHECK(rgb && rgb->GetNumberOfTuples() == generated->GetNumberOfPoints());
+    for (vtkIdType i = 0; rgb && i < generated->GetNumberOfPoints(); i += 97)
+    {
+      double p[3];
+      generated->GetPoint(i, p);
+      unsigned char expected[3];
+      meshes::PatternColor(Pattern::SharpRegions, p, expected);
+      CD_CHECK(std::equal(expected, expected + 3, rgb->GetPointer(3 * i)));
+    }
+  }
+}
+
+// The icosphere numbers each new point where the triangles, in order, first reach its edge:
+// the same mesh as subdividing with a map of the edges (written out here as the reference).
+CD_TEST_CASE(GeneratedIcosphere)
+{
+  auto coarse = meshes::Icosphere(0, Pattern::Constant);
+  CD_CHECK(coarse->GetNumberOfPoints() == 12 && coarse->GetNumberOfPolys() == 20);
+  std::vector<double> xyz(3 * 12);
+  std::vector<vtkIdType> tris;
+  for (vtkIdType i = 0; i < 12; ++i)
+  {
+    coarse->GetPoint(i, &xyz[3 * i]);
+  }
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < 20; ++c)
+  {
+    coarse->GetCellPoints(c, ids);
+    tris.insert(tris.end(), ids->begin(), ids->end());
+  }
+  for (int level = 1; level <= 5; ++level)
+  {
+    std::map<std::pair<vtkIdType, vtkIdType>, vtkIdType> midpoints;
+    auto midpoint = [&](vtkIdType a, vtkIdType b)
+    {
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      const auto found = midpoints.find(key);
+      if (found != midpoints.end())
+      {
+        return found->second;
+      }
+      const vtkIdType m = static_cast<vtkIdType>(xyz.size() / 3);
+      double p[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = 0.5 * (xyz[3 * a + k] + xyz[3 * b + k]);
+      }
+      const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+      xyz.insert(xyz.end(), { p[0] / r, p[1] / r, p[2] / r });
+      return midpoints[key] = m;
+    };
+    std::vector<vtkIdType> next;
+    for (size_t f = 0; f < tris.size(); f += 3)
+    {
+      const vtkIdType a = tris[f], b = tris[f + 1], c = tris[f + 2];
+      const vtkIdType ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+      next.insert(next.end(), { a, ab, ca, b, bc, ab, c, ca, bc, ab, bc, ca });
+    }
+    tris.swap(next);
+    auto reference = meshes::FromTriangles(xyz, tris);
+    auto generated = meshes::Icosphere(level, Pattern::Constant);
+    CD_CHECK(SameMesh(generated, reference));
+    CD_CHECK(generated->GetNumberOfPolys() == 20 * (1 << (2 * level)));
+  }
 }
 
 } // namespace

@@ -1,18 +1,18 @@
 #include "ColorDecimationMeshes.h"
 
 #include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
-#include "vtkSphereSource.h"
+#include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -68,16 +68,10 @@ vtkSmartPointer<vtkPolyData> FromTriangles(const std::vector<double>& xyz,
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(xyz.size() / 3));
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
-  {
-    points->SetPoint(i, &xyz[3 * i]);
-  }
+  std::copy(xyz.begin(), xyz.end(), vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0));
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfValues(static_cast<vtkIdType>(triangles.size()));
-  for (size_t i = 0; i < triangles.size(); ++i)
-  {
-    connectivity->SetValue(static_cast<vtkIdType>(i), triangles[i]);
-  }
+  std::copy(triangles.begin(), triangles.end(), connectivity->GetPointer(0));
   vtkNew<vtkCellArray> polys;
   polys->SetData(3, connectivity);
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
@@ -136,14 +130,19 @@ void ApplyPattern(vtkPolyData* mesh, Pattern pattern)
   colors->SetName("RGB");
   colors->SetNumberOfComponents(3);
   colors->SetNumberOfTuples(mesh->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    mesh->GetPoint(i, p);
-    unsigned char rgb[3];
-    PatternColor(pattern, p, rgb);
-    colors->SetTypedTuple(i, rgb);
-  }
+  vtkDataArray* points = mesh->GetPoints() ? mesh->GetPoints()->GetData() : nullptr;
+  unsigned char* rgb = colors->GetPointer(0);
+  // Each point's colour depends on its position only: on all cores (demo:sphere80M has 40M).
+  vtkSMPTools::For(0, mesh->GetNumberOfPoints(),
+                   [points, pattern, rgb](vtkIdType begin, vtkIdType end)
+                   {
+                     for (vtkIdType i = begin; i < end; ++i)
+                     {
+                       double p[3];
+                       points->GetTuple(i, p);
+                       PatternColor(pattern, p, rgb + 3 * i);
+                     }
+                   });
   mesh->GetPointData()->SetScalars(colors);
 }
 
@@ -168,24 +167,35 @@ vtkSmartPointer<vtkPolyData> Icosphere(int level, Pattern pattern)
   {
     normalize(i);
   }
+  const size_t finalPoints = 10 * (size_t(1) << (2 * level)) + 2;
+  xyz.reserve(3 * finalPoints);
   for (int l = 0; l < level; ++l)
   {
-    std::map<std::pair<vtkIdType, vtkIdType>, vtkIdType> midpoints;
+    // Each edge's midpoint is kept at the edge's lower vertex (valence at most 6), so the
+    // points are numbered in the order the triangles first reach the edges.
+    const size_t n = xyz.size() / 3;
+    std::vector<vtkIdType> other(6 * n, -1), middle(6 * n);
     auto midpoint = [&](vtkIdType a, vtkIdType b)
     {
-      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-      auto it = midpoints.find(key);
-      if (it != midpoints.end())
+      const vtkIdType lo = std::min(a, b), hi = std::max(a, b);
+      vtkIdType* slot = &other[6 * lo];
+      int k = 0;
+      while (k < 5 && slot[k] >= 0 && slot[k] != hi)
       {
-        return it->second;
+        ++k;
+      }
+      if (slot[k] == hi)
+      {
+        return middle[6 * lo + k];
       }
       const vtkIdType m = static_cast<vtkIdType>(xyz.size() / 3);
-      for (int k = 0; k < 3; ++k)
+      for (int c = 0; c < 3; ++c)
       {
-        xyz.push_back(0.5 * (xyz[3 * a + k] + xyz[3 * b + k]));
+        xyz.push_back(0.5 * (xyz[3 * a + c] + xyz[3 * b + c]));
       }
       normalize(m);
-      midpoints[key] = m;
+      slot[k] = hi;
+      middle[6 * lo + k] = m;
       return m;
     };
     std::vector<vtkIdType> next;
@@ -204,17 +214,94 @@ vtkSmartPointer<vtkPolyData> Icosphere(int level, Pattern pattern)
   return mesh;
 }
 
+namespace
+{
+/// The points of UVSphere: the poles, then each meridian from north to south, with the same
+/// floating-point steps as vtkSphereSource (so the same doubles bit for bit).
+vtkSmartPointer<vtkPoints> UVSpherePoints(int r, int meridians)
+{
+  const int perMeridian = r - 2;
+  const double startTheta = 0.0 * (Pi / 180.0);
+  const double endTheta = (360.0 / r * r) * (Pi / 180.0);
+  const double deltaTheta = (endTheta - startTheta) / r;
+  const double deltaPhi = (180.0 * (Pi / 180.0) - 0.0 * (Pi / 180.0)) / (r - 1);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(2 + static_cast<vtkIdType>(meridians) * perMeridian);
+  double* xyz = vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0);
+  const double poles[6] = { 0, 0, 1, 0, 0, -1 };
+  std::copy(poles, poles + 6, xyz);
+  vtkSMPTools::For(0, meridians,
+                   [=](vtkIdType begin, vtkIdType end)
+                   {
+                     for (vtkIdType i = begin; i < end; ++i)
+                     {
+                       const double theta = 0.0 * Pi / 180.0 + i * deltaTheta;
+                       double* p = xyz + 3 * (2 + i * perMeridian);
+                       for (int j = 1; j <= perMeridian; ++j, p += 3)
+                       {
+                         const double phi = 0.0 + j * deltaPhi;
+                         const double radius = 1.0 * std::sin(phi);
+                         p[0] = radius * std::cos(theta);
+                         p[1] = radius * std::sin(theta);
+                         p[2] = 1.0 * std::cos(phi);
+                       }
+                     }
+                   });
+  return points;
+}
+
+/// The triangles of UVSphere in vtkSphereSource's order: the fans around the north and the
+/// south pole, then two triangles per quad of the bands, meridian by meridian.
+vtkSmartPointer<vtkCellArray> UVSphereTriangles(int r, int meridians, int columns)
+{
+  const vtkIdType m = r - 2, base = m * meridians, bands = columns * (m - 1);
+  const vtkIdType triangles = 2 * columns + 2 * bands;
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(3 * triangles);
+  vtkIdType* c = connectivity->GetPointer(0);
+  for (vtkIdType i = 0; i < columns; ++i)
+  {
+    vtkIdType* north = c + 3 * i;
+    vtkIdType* south = c + 3 * (columns + i);
+    north[0] = m * i + 2;
+    north[1] = (m * (i + 1)) % base + 2;
+    north[2] = 0;
+    south[0] = m * i + m + 1;
+    south[1] = 1;
+    south[2] = (m * (i + 1)) % base + m + 1;
+  }
+  vtkIdType* band = c + 6 * columns;
+  vtkSMPTools::For(0, columns,
+                   [=](vtkIdType begin, vtkIdType end)
+                   {
+                     for (vtkIdType i = begin; i < end; ++i)
+                     {
+                       vtkIdType* t = band + 6 * (m - 1) * i;
+                       for (vtkIdType j = 0; j < m - 1; ++j, t += 6)
+                       {
+                         const vtkIdType a = m * i + j + 2;
+                         const vtkIdType d = (m * (i + 1) + j) % base + 3;
+                         const vtkIdType quad[6] = { a, a + 1, d, a, d, d - 1 };
+                         std::copy(quad, quad + 6, t);
+                       }
+                     }
+                   });
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(3, connectivity);
+  return polys;
+}
+} // namespace
+
 vtkSmartPointer<vtkPolyData> UVSphere(int resolution, Pattern pattern)
 {
-  vtkNew<vtkSphereSource> source;
-  source->SetThetaResolution(resolution);
-  source->SetPhiResolution(resolution);
-  source->SetRadius(1.0);
-  source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-  source->Update();
+  const int r = std::max(resolution, 3);
+  // vtkSphereSource repeats the first meridian at the end when r steps of 360 / r fall short
+  // of 360 (no triangle uses it then).
+  const int meridians = (std::fabs(0.0 - 360.0 / r * r) < 360.0) ? r + 1 : r;
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->ShallowCopy(source->GetOutput());
-  mesh->GetPointData()->Initialize(); // drop the normals: colour only
+  mesh->SetPoints(UVSpherePoints(r, meridians));
+  mesh->SetPolys(UVSphereTriangles(r, meridians, r));
   ApplyPattern(mesh, pattern);
   return mesh;
 }
