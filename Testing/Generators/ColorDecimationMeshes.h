@@ -6,7 +6,7 @@
  * the active scalars. Shapes:
  * - Icosphere: closed, genus 0, valence 5/6 (subdivided icosahedron), radius 1;
  * - UVSphere: vtkSphereSource's latitude-longitude sphere (closed, two high-valence poles),
- *   the benchmark's "coloured sphere";
+ *   the benchmark's "coloured sphere", made here on all cores (the same points and triangles);
  * - Torus: closed, genus 1 (radii 1 and 0.35);
  * - Grid: an open, gently waved square sheet in [-1,1]^2 with one boundary loop;
  * - FlatGrid: the same sheet, flat (z = 0).
@@ -45,7 +45,8 @@ void ApplyPattern(vtkPolyData* mesh, Pattern pattern);
 
 /// 20 * 4^level triangles.
 vtkSmartPointer<vtkPolyData> Icosphere(int level, Pattern pattern);
-/// vtkSphereSource with theta and phi resolution `resolution`: 2 r (r - 2) triangles.
+/// vtkSphereSource's sphere of theta and phi resolution `resolution`, bit for bit (made on all
+/// cores, with 32-bit cell ids where they fit): 2 r (r - 2) triangles.
 vtkSmartPointer<vtkPolyData> UVSphere(int resolution, Pattern pattern);
 /// 2 nu nv triangles.
 vtkSmartPointer<vtkPolyData> Torus(int nu, int nv, Pattern pattern);
