@@ -17,7 +17,7 @@
  * area-weighted, at the kept vertex), with Garland and Heckbert's boundary planes holding
  * open boundaries in place, an edge-length term that decimates flat parts evenly, and the
  * Batched schedule on all cores: the setting that measured best on real scans
- * (docs/RESULTS.md). SetPaperDefaults() sets every property to the method of Kim, Choi and
+ * (docs/RESULTS.md). SetPaperDefaults() sets every property of the method to that of Kim, Choi and
  * Lee, "Mesh Simplification with Vertex Color": the cost (1 + quadric error) x (1 + visual
  * importance of v0) x (1 + colour error of the collapse) in the Greedy order. Costs are
  * measured in a frame where the mean edge length is 1, so that the result does not depend on
@@ -150,8 +150,8 @@ public:
    * GeometryWeight 1, RGB colours, MaximumNormalAngle 90, PreserveBoundary off (and
    * ColorWeight 1, OptimalPlacement off, which the paper's metric does not read; PieceWeight 0).
    * TargetReduction, TargetNumberOfTriangles, MaximumError, PruneComponents,
-   * ConsistentOrientation, PreserveSeams, NumberOfThreads, the lock array and the original point
-   * ids are left as they are.
+   * ConsistentOrientation, PreserveSeams, NumberOfThreads, the lock array, the original point
+   * ids and GenerateCollapseRecord are left as they are.
    */
   void SetPaperDefaults();
 
