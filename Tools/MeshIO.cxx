@@ -214,6 +214,11 @@ std::string DemoHelp()
 
 namespace
 {
+/// The most triangles the filter takes (their corners are counted in 32 bits), and the largest
+/// UV sphere within that: 2 r (r - 2) <= MaximumTriangles.
+constexpr long long MaximumTriangles = 715827882;
+constexpr int MaximumSphereResolution = 18919;
+
 // The demo mesh of one shape and size (n < 0: the shape's default size), or null with error.
 vtkSmartPointer<vtkPolyData> MakeDemoShape(const std::string& shapeText, const std::string& shape,
                                            long long n, Pattern pattern, std::string& what,
@@ -234,9 +239,10 @@ vtkSmartPointer<vtkPolyData> MakeDemoShape(const std::string& shapeText, const s
   else if (shape == "uv")
   {
     n = n < 0 ? 700 : n;
-    if (n < 4 || n > 20000)
+    if (n < 4 || n > MaximumSphereResolution)
     {
-      error = "demo UV sphere resolution must be 4 to 20000";
+      error = "demo UV sphere resolution must be 4 to " + std::to_string(MaximumSphereResolution) +
+        " (the filter takes at most " + WithThousands(MaximumTriangles) + " triangles)";
       return nullptr;
     }
     mesh = meshes::UVSphere(static_cast<int>(n), pattern);
@@ -245,6 +251,13 @@ vtkSmartPointer<vtkPolyData> MakeDemoShape(const std::string& shapeText, const s
   else if (shape == "sphere")
   {
     n = n < 0 ? 1000000 : n;
+    const long long largest = 2LL * MaximumSphereResolution * (MaximumSphereResolution - 2);
+    if (n > largest)
+    {
+      error = "demo UV sphere of at most " + WithThousands(largest) +
+        " triangles (the largest the filter takes)";
+      return nullptr;
+    }
     mesh = meshes::UVSphereWithTriangles(n, pattern);
     what = "UV sphere of about " + WithThousands(n) + " triangles";
   }

@@ -558,7 +558,7 @@ bool SameMesh(vtkPolyData* a, vtkPolyData* b)
 
 // The demo's and the benchmark's UV spheres are made on all cores, as vtkSphereSource makes
 // them: the same points bit for bit, the same triangles in the same order, also where it repeats
-// the first meridian (39, 78: 360 / r * r < 360).
+// the first meridian (39, 78: 360 / r * r < 360), with 32-bit and with 64-bit cell ids.
 CD_TEST_CASE(GeneratedUVSphere)
 {
   for (int r : { 4, 5, 8, 39, 78, 100, 161, 700 })
@@ -571,6 +571,9 @@ CD_TEST_CASE(GeneratedUVSphere)
     source->Update();
     auto generated = meshes::UVSphere(r, Pattern::SharpRegions);
     CD_CHECK(SameMesh(generated, source->GetOutput()));
+    CD_CHECK(!generated->GetPolys()->IsStorage64Bit());
+    auto wide = meshes::UVSphere(r, Pattern::SharpRegions, false); // the ids of huge spheres
+    CD_CHECK(SameMesh(wide, source->GetOutput()) && wide->GetPolys()->IsStorage64Bit());
     CD_CHECK(generated->GetNumberOfPolys() == 2 * r * (r - 2));
     auto* rgb = RGB(generated);
     CD_CHECK(rgb && rgb->GetNumberOfTuples() == generated->GetNumberOfPoints());

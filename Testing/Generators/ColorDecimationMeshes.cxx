@@ -71,7 +71,8 @@ vtkSmartPointer<vtkPolyData> FromTriangles(const std::vector<double>& xyz,
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(xyz.size() / 3));
-  std::copy(xyz.begin(), xyz.end(), vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0));
+  std::copy(xyz.begin(), xyz.begin() + 3 * points->GetNumberOfPoints(),
+            vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0));
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfValues(static_cast<vtkIdType>(triangles.size()));
   std::copy(triangles.begin(), triangles.end(), connectivity->GetPointer(0));
@@ -151,6 +152,7 @@ void ApplyPattern(vtkPolyData* mesh, Pattern pattern)
 
 vtkSmartPointer<vtkPolyData> Icosphere(int level, Pattern pattern)
 {
+  level = std::max(level, 0);
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
   std::vector<double> xyz = { -1, t,  0,  1, t, 0,  -1, -t, 0,  1, -t, 0, 0,  -1, t,  0,  1, t,
                               0,  -1, -t, 0, 1, -t, t,  0,  -1, t, 0,  1, -t, 0,  -1, -t, 0, 1 };
@@ -309,7 +311,7 @@ vtkSmartPointer<vtkCellArray> UVSphereTriangles(int r, int meridians, int column
 }
 } // namespace
 
-vtkSmartPointer<vtkPolyData> UVSphere(int resolution, Pattern pattern)
+vtkSmartPointer<vtkPolyData> UVSphere(int resolution, Pattern pattern, bool compactIds)
 {
   const int r = std::max(resolution, 3);
   // vtkSphereSource repeats the first meridian at the end when r steps of 360 / r fall short
@@ -317,7 +319,7 @@ vtkSmartPointer<vtkPolyData> UVSphere(int resolution, Pattern pattern)
   const int meridians = (std::fabs(0.0 - 360.0 / r * r) < 360.0) ? r + 1 : r;
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->SetPoints(UVSpherePoints(r, meridians));
-  const bool small = 6.0 * r * (r - 2) <= std::numeric_limits<int32_t>::max();
+  const bool small = compactIds && 6.0 * r * (r - 2) <= std::numeric_limits<int32_t>::max();
   mesh->SetPolys(small ? UVSphereTriangles<int32_t, vtkTypeInt32Array>(r, meridians, r)
                        : UVSphereTriangles<vtkIdType, vtkIdTypeArray>(r, meridians, r));
   ApplyPattern(mesh, pattern);

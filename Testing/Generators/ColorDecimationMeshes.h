@@ -46,8 +46,9 @@ void ApplyPattern(vtkPolyData* mesh, Pattern pattern);
 /// 20 * 4^level triangles.
 vtkSmartPointer<vtkPolyData> Icosphere(int level, Pattern pattern);
 /// vtkSphereSource's sphere of theta and phi resolution `resolution`, bit for bit (made on all
-/// cores, with 32-bit cell ids where they fit): 2 r (r - 2) triangles.
-vtkSmartPointer<vtkPolyData> UVSphere(int resolution, Pattern pattern);
+/// cores; cells with 32-bit ids where they fit, unless `compactIds` is false): 2 r (r - 2)
+/// triangles.
+vtkSmartPointer<vtkPolyData> UVSphere(int resolution, Pattern pattern, bool compactIds = true);
 /// 2 nu nv triangles.
 vtkSmartPointer<vtkPolyData> Torus(int nu, int nv, Pattern pattern);
 /// 2 nx ny triangles.
