@@ -67,6 +67,10 @@ struct Options
   std::vector<double> Levels; ///< --lod: the reductions, in the order given
   std::string SaveRecord;
   std::string FromRecord;
+  /// --max-error P%: P percent of the input's bounding-box diagonal, set once it is read (-1:
+  /// a distance, or none).
+  double MaximumErrorPercent = -1;
+  bool ReductionGiven = false; ///< --reduction on the command line
   /// Set once the input is read: its colour array's mapping to bytes, for every PLY file
   /// written (each file's own range would give the same point other bytes in each).
   ColorMapping PlyColors;
@@ -347,12 +351,9 @@ void AddStopOptions(CLI::App& app, Options& options)
       {
         return false;
       }
-      options.Settings.push_back(
-        [percent, value](vtkColorHalfEdgeDecimation* f)
-        {
-          vtkPolyData* input = vtkPolyData::SafeDownCast(f->GetInput());
-          f->SetMaximumError(percent && input ? value / 100.0 * input->GetLength() : value);
-        });
+      options.MaximumErrorPercent = percent ? value : -1;
+      options.Settings.push_back([percent, value](vtkColorHalfEdgeDecimation* f)
+                                 { f->SetMaximumError(percent ? 0.0 : value); });
       return true;
     },
     RuleComplaint("--max-error must be a distance >= 0, or a percentage such as 0.1%"),
@@ -587,6 +588,10 @@ std::string CheckFiles(Options& options)
   if (!options.SaveRecord.empty() && !options.FromRecord.empty())
   {
     return "--save-record and --from-record cannot be combined";
+  }
+  if (options.ReductionGiven && !options.Levels.empty())
+  {
+    return "--lod gives the levels' reductions: not with --reduction";
   }
   if ((!options.Levels.empty() || !options.FromRecord.empty()) && options.Output.empty())
   {
@@ -929,14 +934,18 @@ Json Statistics(vtkColorHalfEdgeDecimation* filter, const Options& options, cons
   Json stats;
   stats["input"] = input.Name;
   stats["output"] = options.Output;
-  stats["metric"] = MetricName(filter->GetErrorMetric());
-  stats["schedule"] = ScheduleName(filter->GetCollapseSchedule());
+  // Levels from a saved record: its run's method is not known here.
+  const bool fromRecord = !options.FromRecord.empty();
+  stats["metric"] = fromRecord ? Json() : Json(MetricName(filter->GetErrorMetric()));
+  stats["schedule"] = fromRecord ? Json() : Json(ScheduleName(filter->GetCollapseSchedule()));
   stats["threads"] = filter->GetNumberOfThreadsUsed();
   stats["target_reduction"] = filter->GetTargetReduction();
-  stats["paper"] = options.Paper;
-  stats["settings"] = Settings(filter);
+  stats["paper"] = fromRecord ? Json() : Json(options.Paper);
+  stats["settings"] = fromRecord ? Json() : Settings(filter);
   stats["reduction"] = filter->GetActualReduction();
-  stats["actual_error"] = filter->GetActualError();
+  // Measured only under a bound or with the record (null: not measured).
+  const bool measured = filter->GetMaximumError() > 0 || filter->GetGenerateCollapseRecord();
+  stats["actual_error"] = measured ? Json(filter->GetActualError()) : Json();
   stats["pruned_components"] = static_cast<long long>(filter->GetNumberOfPrunedComponents());
   stats["input_points"] = input.Points;
   stats["input_triangles"] = input.Triangles;
@@ -1211,6 +1220,10 @@ int Run(const Options& given)
   // The settings first, so that combinations the levels cannot honour fail before any reading.
   vtkNew<vtkColorHalfEdgeDecimation> filter;
   Configure(filter, options);
+  if (options.ReductionGiven && filter->GetTargetNumberOfTriangles() > 0)
+  {
+    return Fail("--reduction and --target-triangles each set the target: give one", 2);
+  }
   int status = CheckLevelOptions(filter, options);
   status = status == Continue ? PrepareRecordRun(filter, options) : status;
   if (status != Continue)
@@ -1230,6 +1243,10 @@ int Run(const Options& given)
     return status;
   }
   filter->SetInputData(input.Mesh);
+  if (options.MaximumErrorPercent >= 0)
+  {
+    filter->SetMaximumError(options.MaximumErrorPercent / 100.0 * input.Mesh->GetLength());
+  }
   Figures figures;
   vtkSmartPointer<vtkTable> record;
   status = DecimateOrLoad(filter, options, record, figures);
@@ -1285,6 +1302,7 @@ int main(int argc, char* argv[])
   {
     return status;
   }
+  options.ReductionGiven = app.count("--reduction") > 0;
   const std::string error = CheckFiles(options);
   return error.empty() ? Run(options) : ReportUsageError(app, error);
 }

@@ -37,7 +37,8 @@ private:
  * The arguments as App::parse() wants them (in reverse order, without the program). A long
  * option that takes one value is joined to a next argument that starts with '-'
  * ("--view=-Y"), which CLI11 would take for an option, so that a value may start with '-'
- * as it always could; such an option at the end is an error.
+ * as it always could; such an option at the end, or followed by another option (a value
+ * forgotten: "--stats --quiet"), is an error.
  */
 std::vector<std::string> Arguments(const CLI::App& app, int argc, char* argv[])
 {
@@ -50,7 +51,8 @@ std::vector<std::string> Arguments(const CLI::App& app, int argc, char* argv[])
     const CLI::Option* option = bareLong ? app.get_option_no_throw(arg) : nullptr;
     if (option && option->get_items_expected_max() == 1)
     {
-      if (i + 1 == argc)
+      // Its value may start with '-' (a negative number, "-1%"), but is never another option.
+      if (i + 1 == argc || app.get_option_no_throw(argv[i + 1]))
       {
         throw UsageError("option " + arg + " needs a value");
       }
