@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <new>
 
 vtkStandardNewMacro(vtkColorHalfEdgeDecimation);
 
@@ -84,6 +85,14 @@ bool CheckInput(vtkColorHalfEdgeDecimation* self, vtkPolyData* input)
   {
     vtkErrorWithObjectMacro(self, << "Too many points (" << numPoints
                                   << "); at most 2^31 - 1 are supported.");
+    return false;
+  }
+  // Before any copy: a triangle a polygon at least, as many as the core counts in 32 bits.
+  if (input->GetNumberOfPolys() > std::numeric_limits<int32_t>::max() / 3)
+  {
+    vtkErrorWithObjectMacro(self, << "Too many triangles (" << input->GetNumberOfPolys()
+                                  << " polygons); at most "
+                                  << std::numeric_limits<int32_t>::max() / 3 << " are supported.");
     return false;
   }
   return true;
@@ -431,6 +440,32 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   {
     return 1;
   }
+  // 2.-4. (Decimate): a memory allocation that fails ends the run with an error and an empty
+  // output, not with the application.
+  try
+  {
+    this->Decimate(inputVector, outputVector, input, output);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro(<< "Out of memory decimating " << input->GetNumberOfCells()
+                  << " cells: empty output.");
+    output->Initialize();
+    output->GetFieldData()->PassData(input->GetFieldData());
+    if (vtkTable* record = vtkTable::GetData(outputVector, 1))
+    {
+      record->Initialize();
+    }
+    this->ResetStatistics();
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkColorHalfEdgeDecimation::Decimate(vtkInformationVector** inputVector,
+                                          vtkInformationVector* outputVector, vtkPolyData* input,
+                                          vtkPolyData* output)
+{
   // Threads: as many as asked, or as vtkSMPTools runs (VTK_SMP_MAX_THREADS, ParaView's settings).
   const int threads = this->NumberOfThreads > 0
     ? this->NumberOfThreads
@@ -441,7 +476,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   if (!colordecimation::adapter::ReadGeometry(this, input, threads, mesh) ||
       !this->ReadPointArrays(inputVector, input, threads, mesh))
   {
-    return 1;
+    return;
   }
   FixSharedPoints(this, NumberOfPieces(inputVector, outputVector), mesh);
   this->Phases->Lap("input");
@@ -479,7 +514,6 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   {
     this->UpdateProgress(1.0); // after an abort, the progress stays where the run stopped
   }
-  return 1;
 }
 
 //------------------------------------------------------------------------------

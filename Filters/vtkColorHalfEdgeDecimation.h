@@ -537,6 +537,10 @@ protected:
   bool ReadPointArrays(vtkInformationVector** inputVector, vtkPolyData* input, int threads,
                        colordecimation::adapter::InputMesh& mesh);
 
+  /// RequestData's phases on a checked input: read, decimate, write the output.
+  void Decimate(vtkInformationVector** inputVector, vtkInformationVector* outputVector,
+                vtkPolyData* input, vtkPolyData* output);
+
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

@@ -196,11 +196,14 @@ bool TryPlainTriangles(vtkPolyData* input, vtkIdType firstCell, int threads, Tri
   }
   const vtkIdType nt = polyCells->GetNumberOfCells();
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  return polyCells->IsStorage64Bit()
-    ? CopyPlainTriangles(polyCells->GetConnectivityArray64()->GetPointer(0), nt, numPoints,
-                         firstCell, threads, soup)
-    : CopyPlainTriangles(polyCells->GetConnectivityArray32()->GetPointer(0), nt, numPoints,
-                         firstCell, threads, soup);
+  // The ids in one 64- or 32-bit array; any other storage (newer VTK) goes cell by cell.
+  auto* ids64 = polyCells->IsStorage64Bit() ? polyCells->GetConnectivityArray64() : nullptr;
+  auto* ids32 = polyCells->IsStorage64Bit() ? nullptr : polyCells->GetConnectivityArray32();
+  if (ids64)
+  {
+    return CopyPlainTriangles(ids64->GetPointer(0), nt, numPoints, firstCell, threads, soup);
+  }
+  return ids32 && CopyPlainTriangles(ids32->GetPointer(0), nt, numPoints, firstCell, threads, soup);
 }
 
 /// A polygon of more than 3 points, by ear cutting (a fan when ear cutting gives up).
@@ -489,17 +492,23 @@ vtkIdType ConvertColors(vtkDataArray* array, Buffer<float>& rgb, double mapping[
     return 0;
   }
 
+  // Bytes in another layout (structure of arrays, implicit) are /255 too; other types are
+  // taken as they are in [0, 1], otherwise mapped by their range.
+  const bool bytes = array->GetDataType() == VTK_UNSIGNED_CHAR;
   double lo = 0.0, hi = 0.0;
-  FiniteRange(array, used, threads, lo, hi);
-  const bool unit = lo >= 0.0 && hi <= 1.0;
-  const double offset = unit ? 0.0 : lo;
-  const double scale = unit ? 1.0 : (hi > lo ? 1.0 / (hi - lo) : 0.0);
+  if (!bytes)
+  {
+    FiniteRange(array, used, threads, lo, hi);
+  }
+  const bool unit = !bytes && lo >= 0.0 && hi <= 1.0;
+  const double offset = bytes || unit ? 0.0 : lo;
+  const double scale = bytes ? 1.0 / 255.0 : unit ? 1.0 : (hi > lo ? 1.0 / (hi - lo) : 0.0);
   mapping[0] = offset;
   mapping[1] = scale;
   std::vector<vtkIdType> nonFinite(size_t(threads), 0);
   vtkIdType* counts = nonFinite.data();
   ParallelFor(n, threads,
-              [array, used, offset, scale, out, counts](size_t begin, size_t end, int t)
+              [array, used, bytes, offset, scale, out, counts](size_t begin, size_t end, int t)
               {
                 vtkIdType bad = 0;
                 for (size_t i = begin; i < end; ++i)
@@ -510,8 +519,12 @@ vtkIdType ConvertColors(vtkDataArray* array, Buffer<float>& rgb, double mapping[
                     const double x =
                       array->GetComponent(static_cast<vtkIdType>(i), used == 3 ? k : 0);
                     finite = finite && std::isfinite(x);
-                    out[3 * i + k] =
-                      std::isfinite(x) ? static_cast<float>((x - offset) * scale) : 0.0f;
+                    // Bytes as the contiguous ones above; a range too wide for a double
+                    // (beyond 1.8e308) maps to 0, not NaN.
+                    const double mapped = (x - offset) * scale;
+                    out[3 * i + k] = bytes    ? static_cast<float>(x) / 255.0f
+                      : std::isfinite(mapped) ? static_cast<float>(mapped)
+                                              : 0.0f;
                   }
                   bad += finite ? 0 : 1;
                 }

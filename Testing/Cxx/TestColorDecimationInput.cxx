@@ -188,6 +188,61 @@ CD_TEST_CASE(ColorFloatAndDouble)
   CD_CHECK(CheckPointDataCopied(asDouble, rd.Output) == 0);
 }
 
+// Bytes are /255 in any memory layout: a structure-of-arrays copy of the RGB array (whose
+// values span 30..240 only, so a mapping by the range would stretch them) gives the same
+// decimation as the array itself.
+CD_TEST_CASE(ColorUnsignedCharLayouts)
+{
+  auto mesh = meshes::Torus(80, 30, Pattern::SharpRegions);
+  const RunResult reference = Decimate(mesh, 0.9);
+  CD_CHECK(RGB(mesh)->GetRange(0)[0] > 0 && RGB(mesh)->GetRange(0)[1] < 255);
+  auto split = Copy(mesh);
+  vtkNew<vtkSOADataArrayTemplate<unsigned char>> soa;
+  soa->SetName("Colour");
+  soa->SetNumberOfComponents(3);
+  soa->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < 3 * mesh->GetNumberOfPoints(); ++i)
+  {
+    soa->SetValue(i, RGB(mesh)->GetValue(i));
+  }
+  SetColors(split, soa);
+  const RunResult r = Decimate(split, 0.9);
+  CD_CHECK(r.Errors == 0 && r.Warnings == 0);
+  CD_CHECK(Result(r) == Result(reference));
+  CD_CHECK(CheckPointDataCopied(split, r.Output) == 0);
+}
+
+// Double colours whose range is wider than a double holds (-1e308 .. 1e308) cannot be mapped
+// to [0, 1]: they are taken as one colour (0), never as NaN, so the decimation is that of an
+// all-zero colour array, with every point array carried.
+CD_TEST_CASE(ColorRangeOverflow)
+{
+  auto mesh = meshes::Icosphere(4, Pattern::SmoothGradient);
+  auto huge = Copy(mesh);
+  auto zero = Copy(mesh);
+  vtkNew<vtkDoubleArray> d, z;
+  d->SetName("Huge");
+  z->SetName("Zero");
+  for (vtkDoubleArray* a : { d.Get(), z.Get() })
+  {
+    a->SetNumberOfComponents(3);
+    a->SetNumberOfTuples(mesh->GetNumberOfPoints());
+    a->Fill(0.0);
+  }
+  for (vtkIdType i = 0; i < 3 * mesh->GetNumberOfPoints(); ++i)
+  {
+    d->SetValue(i, (i % 2 ? 1e308 : -1e308) * (RGB(mesh)->GetValue(i) / 255.0));
+  }
+  SetColors(huge, d);
+  SetColors(zero, z);
+  const RunResult r = Decimate(huge, 0.9);
+  CD_CHECK(r.Errors == 0 && r.Warnings == 0);
+  CD_CHECK(std::abs(r.ActualReduction - 0.9) < 0.01);
+  CD_CHECK(Result(r) == Result(Decimate(zero, 0.9)));
+  CheckDecimatedMesh(huge, r.Output, Expectation{ true, 2, 0, nullptr, false }, "huge range");
+  CD_CHECK(CheckPointDataCopied(huge, r.Output) == 0);
+}
+
 CD_TEST_CASE(ColorFloatRange)
 {
   // Colours quantised to multiples of 1/8 (exact in float), with black and white present.
