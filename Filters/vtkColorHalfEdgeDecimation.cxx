@@ -175,21 +175,36 @@ bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int assoc
 }
 
 /// The points to lock, from the lock array if one is selected; false (with an error) for a
-/// bad one. A name the input does not have is a warning: nothing is locked.
+/// bad one. A name the input does not have, an array that is not numeric, or a selection by
+/// attribute type rather than by name is a warning: nothing is locked.
 bool ReadLocks(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int association,
-               vtkIdType numPoints, InputMesh& mesh)
+               vtkPolyData* input, InputMesh& mesh)
 {
   const char* name = self->GetLockArrayName();
   if (!name)
   {
+    vtkInformationVector* arrays =
+      self->GetInformation()->Get(vtkAlgorithm::INPUT_ARRAYS_TO_PROCESS());
+    vtkInformation* selection = arrays && arrays->GetNumberOfInformationObjects() > 1
+      ? arrays->GetInformationObject(1)
+      : nullptr;
+    if (selection && selection->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE()))
+    {
+      vtkWarningWithObjectMacro(self, << "The lock array is selected by attribute type; select "
+                                         "it by name (SetInputArrayToProcess(1, 0, 0, "
+                                         "FIELD_ASSOCIATION_POINTS, name)): no point is locked.");
+    }
     return true;
   }
   if (!array)
   {
-    vtkWarningWithObjectMacro(self, << "No lock array named '" << name
-                                    << "' (SetInputArrayToProcess(1, ...)): no point is locked.");
+    const bool other = input->GetPointData()->GetAbstractArray(name) != nullptr;
+    vtkWarningWithObjectMacro(self, << (other ? "The lock array '" : "No lock array named '")
+                                    << name << (other ? "' is not numeric" : "'")
+                                    << " (SetInputArrayToProcess(1, ...)): no point is locked.");
     return true;
   }
+  const vtkIdType numPoints = input->GetNumberOfPoints();
   if (!IsPointArray(self, "lock", name, array, association, numPoints))
   {
     return false;
@@ -611,7 +626,7 @@ bool vtkColorHalfEdgeDecimation::ReadPointArrays(vtkInformationVector** inputVec
   return (this->ErrorMetric == Geometry ||
           ReadColors(this, colors, association, numPoints, threads,
                      input->GetPointData()->GetScalars(), mesh)) &&
-    ReadLocks(this, locks, lockAssociation, numPoints, mesh);
+    ReadLocks(this, locks, lockAssociation, input, mesh);
 }
 
 //------------------------------------------------------------------------------

@@ -11,11 +11,13 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataObject.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <array>
@@ -358,6 +360,26 @@ CD_TEST_CASE(LockArrayBadInput)
     Decimate(grid, 0.9, [](vtkColorHalfEdgeDecimation* f) { SelectLocks(f, "nothere"); });
   CD_CHECK(missing.Errors == 0 && missing.Warnings == 1 && missing.HasWarning("'nothere'"));
   CD_CHECK(GetOriginalTriangles(missing.Output) == GetOriginalTriangles(plain.Output));
+  // A string array of that name, or a selection by attribute type rather than by name: a
+  // warning saying so, nothing locked.
+  auto withText = Copy(grid);
+  vtkNew<vtkStringArray> text;
+  text->SetName("labels");
+  text->SetNumberOfValues(withText->GetNumberOfPoints());
+  withText->GetPointData()->AddArray(text);
+  const RunResult textual =
+    Decimate(withText, 0.9, [](vtkColorHalfEdgeDecimation* f) { SelectLocks(f, "labels"); });
+  CD_CHECK(textual.Errors == 0 && textual.Warnings == 1 && textual.HasWarning("not numeric"));
+  CD_CHECK(GetOriginalTriangles(textual.Output) == GetOriginalTriangles(plain.Output));
+  const RunResult byType =
+    Decimate(grid, 0.9,
+             [](vtkColorHalfEdgeDecimation* f)
+             {
+               f->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+                                         vtkDataSetAttributes::SCALARS);
+             });
+  CD_CHECK(byType.Errors == 0 && byType.Warnings == 1 && byType.HasWarning("attribute type"));
+  CD_CHECK(GetOriginalTriangles(byType.Output) == GetOriginalTriangles(plain.Output));
   // No selection ("" or ParaView's "None"): quiet, nothing locked.
   for (const char* none : { "", "None" })
   {
