@@ -303,7 +303,13 @@ void AddStrips(vtkPolyData* input, vtkIdType firstCell, TriangleSoup& soup)
       vtkIdType n3;
       const vtkIdType* ids;
       tris->GetCurrentCell(n3, ids);
-      soup.Add(ids, cell, numPoints);
+      // A repeated point is how strips swap or join (a b c c d): legitimate, left out quietly.
+      const bool join = ids[0] == ids[1] || ids[1] == ids[2] || ids[0] == ids[2];
+      soup.StripJoins += join ? 1 : 0;
+      if (!join)
+      {
+        soup.Add(ids, cell, numPoints);
+      }
     }
   }
 }
@@ -595,6 +601,11 @@ bool ReadGeometry(vtkObject* self, vtkPolyData* input, int threads, InputMesh& m
                                     << vtkDataSetAttributes::GhostArrayName()
                                     << ") does not hold one value for each point or cell; it is "
                                        "ignored: no point or cell is taken for a ghost.");
+  }
+  if (soup.StripJoins > 0)
+  {
+    vtkDebugWithObjectMacro(self, << "Left out the " << soup.StripJoins
+                                  << " zero-area triangles of the strips' swaps and joins.");
   }
   if (soup.Degenerate > 0 || soup.BadCells > 0)
   {

@@ -37,6 +37,7 @@ struct TriangleSoup
   vtkIdType Polygons = 0;    ///< cells with more than 3 points that were triangulated
   vtkIdType Strips = 0;      ///< strips decomposed
   vtkIdType Degenerate = 0;  ///< triangles with a repeated point, dropped
+  vtkIdType StripJoins = 0;  ///< the zero-area triangles of strips (swaps, joins), left out
   vtkIdType BadCells = 0;    ///< cells with fewer than 3 points, dropped
   vtkIdType GhostCells = 0;  ///< ghost cells (another piece's), left out
   vtkIdType GhostPoints = 0; ///< ghost (duplicate) points, fixed

@@ -543,6 +543,24 @@ CD_TEST_CASE(TriangleStrips)
   CD_CHECK(std::abs(r.ActualReduction - 0.9) <= 0.01);
   CD_CHECK(r.Output->GetNumberOfStrips() == 0);
   CheckDecimatedMesh(strips, r.Output, Expectation{ true, 2, 0, nullptr, false }, "strips");
+
+  // Two ribbons of two triangles joined into one strip by repeated points (0 1 2 3 3 4 4 5 6
+  // 7), as strip writers do: the four zero-area joining triangles are no input error.
+  vtkNew<vtkPoints> points;
+  for (const double x : { 0.0, 1.0, 3.0, 4.0 })
+  {
+    points->InsertNextPoint(x, 0, 0);
+    points->InsertNextPoint(x, 1, 0);
+  }
+  vtkNew<vtkCellArray> joined;
+  const vtkIdType ids[10] = { 0, 1, 2, 3, 3, 4, 4, 5, 6, 7 };
+  joined->InsertNextCell(10, ids);
+  vtkNew<vtkPolyData> ribbons;
+  ribbons->SetPoints(points);
+  ribbons->SetStrips(joined);
+  r = Decimate(ribbons, 0.0);
+  CD_CHECK(r.Warnings == 0 && r.Errors == 0);
+  CD_CHECK(r.Output->GetNumberOfPolys() == 4);
 }
 
 CD_TEST_CASE(VerticesAndLines)
