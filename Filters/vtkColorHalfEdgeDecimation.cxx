@@ -125,8 +125,10 @@ bool IsPointArray(vtkColorHalfEdgeDecimation* self, const char* role, const char
 /// point scalars) and no point scalars; with a warning when an array selected by name is not
 /// there, or an empty name leaves the input's point scalars `scalars` unused.
 bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int association,
-                vtkIdType numPoints, int threads, vtkDataArray* scalars, InputMesh& mesh)
+                vtkPolyData* input, int threads, InputMesh& mesh)
 {
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  vtkDataArray* scalars = input->GetPointData()->GetScalars();
   const char* name = array && array->GetName() ? array->GetName() : "";
   if (!array)
   {
@@ -136,8 +138,10 @@ bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int assoc
       : nullptr;
     if (asked && *asked)
     {
-      vtkWarningWithObjectMacro(self, << "No colour array named '" << asked
-                                      << "' (SetInputArrayToProcess): decimating by geometry "
+      const bool other = input->GetPointData()->GetAbstractArray(asked) != nullptr;
+      vtkWarningWithObjectMacro(self, << (other ? "The colour array '" : "No colour array named '")
+                                      << asked << (other ? "' is not numeric" : "'")
+                                      << " (SetInputArrayToProcess): decimating by geometry "
                                          "alone.");
     }
     else if (asked && scalars)
@@ -622,10 +626,8 @@ bool vtkColorHalfEdgeDecimation::ReadPointArrays(vtkInformationVector** inputVec
     ? this->GetInputArrayToProcess(0, inputVector, association)
     : nullptr;
   vtkDataArray* locks = this->GetLockArray(inputVector, lockAssociation);
-  const vtkIdType numPoints = input->GetNumberOfPoints();
   return (this->ErrorMetric == Geometry ||
-          ReadColors(this, colors, association, numPoints, threads,
-                     input->GetPointData()->GetScalars(), mesh)) &&
+          ReadColors(this, colors, association, input, threads, mesh)) &&
     ReadLocks(this, locks, lockAssociation, input, mesh);
 }
 

@@ -18,6 +18,7 @@
 #include "vtkPointData.h"
 #include "vtkSOADataArrayTemplate.h"
 #include "vtkSphereSource.h"
+#include "vtkStringArray.h"
 #include "vtkStripper.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -437,6 +438,19 @@ CD_TEST_CASE(ColorArrayByName)
   CD_CHECK(missing.Warnings == 1 && missing.Errors == 0);
   CD_CHECK(missing.WarningText().find("No colour array named 'Nope'") != std::string::npos);
   CD_CHECK(std::abs(missing.ActualReduction - 0.9) <= 0.01);
+  // A name that holds text, not numbers: a warning that says so, geometry alone.
+  auto labelled = Copy(mesh);
+  vtkNew<vtkStringArray> labels;
+  labels->SetName("Labels");
+  labels->SetNumberOfValues(labelled->GetNumberOfPoints());
+  labelled->GetPointData()->AddArray(labels);
+  const RunResult textual = Decimate(
+    labelled, 0.9,
+    [](vtkColorHalfEdgeDecimation* f)
+    { f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Labels"); });
+  CD_CHECK(textual.Warnings == 1 && textual.Errors == 0);
+  CD_CHECK(textual.HasWarning("The colour array 'Labels' is not numeric"));
+  CD_CHECK(Result(textual) == Result(missing));
 
   // An empty name (ParaView's Colors when the input has no point scalars) selects none:
   // geometry alone, quietly on a mesh without point scalars, with a warning on one that has
