@@ -138,7 +138,8 @@ bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int assoc
       : nullptr;
     if (asked && *asked)
     {
-      const bool other = input->GetPointData()->GetAbstractArray(asked) != nullptr;
+      vtkAbstractArray* found = input->GetPointData()->GetAbstractArray(asked);
+      const bool other = found && !found->IsNumeric();
       vtkWarningWithObjectMacro(self, << (other ? "The colour array '" : "No colour array named '")
                                       << asked << (other ? "' is not numeric" : "'")
                                       << " (SetInputArrayToProcess): decimating by geometry "
@@ -202,7 +203,8 @@ bool ReadLocks(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int associ
   }
   if (!array)
   {
-    const bool other = input->GetPointData()->GetAbstractArray(name) != nullptr;
+    vtkAbstractArray* found = input->GetPointData()->GetAbstractArray(name);
+    const bool other = found && !found->IsNumeric();
     vtkWarningWithObjectMacro(self, << (other ? "The lock array '" : "No lock array named '")
                                     << name << (other ? "' is not numeric" : "'")
                                     << " (SetInputArrayToProcess(1, ...)): no point is locked.");

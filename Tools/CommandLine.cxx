@@ -52,7 +52,7 @@ std::vector<std::string> Arguments(const CLI::App& app, int argc, char* argv[])
     if (option && option->get_items_expected_max() == 1)
     {
       // Its value may start with '-' (a negative number, "-1%"), but is never another option.
-      if (i + 1 == argc || app.get_option_no_throw(argv[i + 1]))
+      if (i + 1 == argc || (argv[i + 1][0] == '-' && app.get_option_no_throw(argv[i + 1])))
       {
         throw UsageError("option " + arg + " needs a value");
       }

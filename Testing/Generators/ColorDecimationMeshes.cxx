@@ -315,7 +315,8 @@ vtkSmartPointer<vtkPolyData> UVSphere(int resolution, Pattern pattern, bool comp
 {
   const int r = std::max(resolution, 3);
   // vtkSphereSource repeats the first meridian at the end when r steps of 360 / r fall short
-  // of 360 (no triangle uses it then).
+  // of 360 (the last band then joins the copy, not the first meridian: an open seam of
+  // near-coincident points, as in vtkSphereSource's own output).
   const int meridians = (std::fabs(0.0 - 360.0 / r * r) < 360.0) ? r + 1 : r;
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->SetPoints(UVSpherePoints(r, meridians));

@@ -5,7 +5,8 @@
  * Every mesh is a vtkPolyData of triangles with an unsigned char "RGB" point array set as
  * the active scalars. Shapes:
  * - Icosphere: closed, genus 0, valence 5/6 (subdivided icosahedron), radius 1;
- * - UVSphere: vtkSphereSource's latitude-longitude sphere (closed, two high-valence poles),
+ * - UVSphere: vtkSphereSource's latitude-longitude sphere (two high-valence poles; closed unless
+ *   360 / r * r falls short of 360, as for r = 700: then a seam of near-coincident points),
  *   the benchmark's "coloured sphere", made here on all cores (the same points and triangles);
  * - Torus: closed, genus 1 (radii 1 and 0.35);
  * - Grid: an open, gently waved square sheet in [-1,1]^2 with one boundary loop;
