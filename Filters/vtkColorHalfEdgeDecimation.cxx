@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <limits>
 #include <new>
 
@@ -461,16 +462,16 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   {
     return 1;
   }
-  // 2.-4. (Decimate): a memory allocation that fails ends the run with an error and an empty
-  // output, not with the application.
+  // 2.-4. (Decimate): a memory allocation (or a thread's start) that fails ends the run with an
+  // error and an empty output, not with the application.
   try
   {
     this->Decimate(inputVector, outputVector, input, output);
   }
-  catch (const std::bad_alloc&)
+  catch (const std::exception& e)
   {
-    vtkErrorMacro(<< "Out of memory decimating " << input->GetNumberOfCells()
-                  << " cells: empty output.");
+    vtkErrorMacro(<< (dynamic_cast<const std::bad_alloc*>(&e) ? "Out of memory" : e.what())
+                  << " decimating " << input->GetNumberOfCells() << " cells: empty output.");
     output->Initialize();
     output->GetFieldData()->PassData(input->GetFieldData());
     if (vtkTable* record = vtkTable::GetData(outputVector, 1))

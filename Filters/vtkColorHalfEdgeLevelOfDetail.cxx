@@ -33,8 +33,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <iterator>
 #include <map>
+#include <new>
 #include <string>
 #include <utility>
 #include <vector>
@@ -459,19 +461,35 @@ int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(reques
   auto* compositeOutput = vtkCompositeDataSet::SafeDownCast(output);
   auto* mesh = vtkPolyData::SafeDownCast(input);
   auto* level = vtkPolyData::SafeDownCast(output);
-  if (composite && compositeOutput)
+  // A memory allocation (or a thread's start) that fails ends the extraction with an error
+  // and an empty output, not the application.
+  try
   {
-    this->ExtractBlocks(composite, record, compositeOutput);
-  }
-  else if (mesh && level)
-  {
-    // A single mesh has the cache at 0, the flat index of a composite's root, never a leaf's.
-    std::map<unsigned int, Cache>& blocks = this->Cached->ByBlock;
-    for (auto it = blocks.begin(); it != blocks.end();)
+    if (composite && compositeOutput)
     {
-      it = it->first == 0 ? std::next(it) : blocks.erase(it);
+      this->ExtractBlocks(composite, record, compositeOutput);
     }
-    this->ExtractSingle(mesh, record, blocks[0], level);
+    else if (mesh && level)
+    {
+      // A single mesh has the cache at 0, the flat index of a composite's root, never a leaf's.
+      std::map<unsigned int, Cache>& blocks = this->Cached->ByBlock;
+      for (auto it = blocks.begin(); it != blocks.end();)
+      {
+        it = it->first == 0 ? std::next(it) : blocks.erase(it);
+      }
+      this->ExtractSingle(mesh, record, blocks[0], level);
+    }
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< (dynamic_cast<const std::bad_alloc*>(&e) ? "Out of memory" : e.what())
+                  << " extracting the level: empty output.");
+    output->Initialize();
+    output->GetFieldData()->PassData(input->GetFieldData());
+    this->Cached->ByBlock.clear();
+    this->Cached->InputTriangles = this->Cached->OutputTriangles = 0;
+    this->NumberOfCollapses = this->NumberOfRecordedCollapses = 0;
+    this->ActualError = 0.0;
   }
   const Caches& sums = *this->Cached;
   this->ActualReduction = sums.InputTriangles > 0

@@ -9,10 +9,12 @@
 #include "Core/util/Buffer.h"
 
 #include "vtkAbstractArray.h"
+#include "vtkIdList.h"
 #include "vtkType.h"
 
 #include <cstddef>
 #include <cstdlib>
+#include <new>
 
 namespace colordecimation
 {
@@ -48,13 +50,35 @@ inline void* AdoptFreeable(vtkAbstractArray* array, vtkIdType values, size_t val
   return memory;
 }
 
-/// `values` unwritten values for `array` (a vtkAOSDataArrayTemplate), on huge pages when large.
+/// Throws std::bad_alloc when `array` holds fewer than `values` values: VTK reports a failed
+/// allocation (SetNumberOfValues, SetNumberOfTuples) with an error and an empty array, and the
+/// filter ends its run on that exception instead of writing through a null pointer.
+inline void RequireValues(vtkAbstractArray* array, vtkIdType values)
+{
+  if (array->GetNumberOfValues() < values)
+  {
+    throw std::bad_alloc();
+  }
+}
+
+/// Throws std::bad_alloc when `ids` (just sized to `count`) holds no memory for them.
+inline void RequireIds(vtkIdList* ids, vtkIdType count)
+{
+  if (count > 0 && (ids->GetNumberOfIds() < count || !ids->GetPointer(0)))
+  {
+    throw std::bad_alloc();
+  }
+}
+
+/// `values` unwritten values for `array` (a vtkAOSDataArrayTemplate), on huge pages when large;
+/// std::bad_alloc when there is no memory for them.
 template <typename Array>
 void AllocateValues(Array* array, vtkIdType values)
 {
   if (!AdoptFreeable(array, values, sizeof(typename Array::ValueType)))
   {
     array->SetNumberOfValues(values);
+    RequireValues(array, values);
   }
 }
 

@@ -182,6 +182,7 @@ vtkSmartPointer<vtkIdList> IdList(const vtkIdType* ids, vtkIdType count)
 {
   auto list = vtkSmartPointer<vtkIdList>::New();
   list->SetNumberOfIds(count);
+  RequireIds(list, count);
   std::copy(ids, ids + count, list->GetPointer(0));
   return list;
 }
@@ -225,6 +226,7 @@ vtkSmartPointer<vtkAbstractArray> Gather(vtkAbstractArray* in, const vtkIdType* 
   if (!memory)
   {
     out->SetNumberOfTuples(count);
+    RequireValues(out, count * in->GetNumberOfComponents());
     in->GetTuples(IdList(source, count), out);
     return out;
   }
@@ -278,6 +280,7 @@ void WritePoints(vtkPolyData* input, const Decimator* decimator, const UsedPoint
     // described as the input's.
     outPoints->SetDataType(in->GetDataType());
     outPoints->SetNumberOfPoints(used.Points);
+    RequireValues(outPoints->GetData(), 3 * used.Points);
     in->GetTuples(IdList(used.Source.data(), used.Points), outPoints->GetData());
     CopyDescription(in, outPoints->GetData());
   }
@@ -316,6 +319,8 @@ void WriteTriangles(const Faces& faces, const TriangleSoup& soup, const UsedPoin
   {
     sourceCells->SetNumberOfIds(used.Triangles);
     targetCells->SetNumberOfIds(used.Triangles);
+    RequireIds(sourceCells, used.Triangles);
+    RequireIds(targetCells, used.Triangles);
     source = sourceCells->GetPointer(0);
     target = targetCells->GetPointer(0);
   }

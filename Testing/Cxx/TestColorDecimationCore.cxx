@@ -25,9 +25,12 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <new>
 #include <numeric>
 #include <random>
 #include <set>
+#include <stdexcept>
+#include <string>
 
 using namespace colordecimation;
 using namespace colordecimation::testing;
@@ -729,6 +732,61 @@ CD_TEST_CASE(SortByKey)
       CD_CHECK_MSG(same, "size " << size << " pattern " << pattern);
     }
   }
+}
+
+CD_TEST_CASE(ParallelForException)
+{
+  // An exception in any range (the calling thread's or a started one's) reaches the caller
+  // after every range has run to its end or its throw: the lowest throwing range's, its type
+  // kept; without one, each range is run once.
+  for (const int threads : { 1, 2, 3 })
+  {
+    for (int thrower = -1; thrower < threads; ++thrower)
+    {
+      std::vector<int> ran(static_cast<size_t>(threads), 0);
+      int* r = ran.data();
+      int caught = -1; // the range named by the exception caught, -1: none
+      try
+      {
+        ParallelFor(size_t(30), threads,
+                    [r, thrower, threads](size_t, size_t, int t)
+                    {
+                      r[t] = 1;
+                      if (t == thrower || (thrower >= 0 && t == threads - 1))
+                      {
+                        throw std::out_of_range(std::to_string(t));
+                      }
+                    });
+      }
+      catch (const std::out_of_range& e)
+      {
+        caught = std::stoi(e.what());
+      }
+      CD_CHECK_MSG(std::count(ran.begin(), ran.end(), 1) == threads,
+                   "threads " << threads << " thrower " << thrower);
+      CD_CHECK_MSG(caught == thrower,
+                   "threads " << threads << " thrower " << thrower << " caught " << caught);
+    }
+  }
+  // ParallelAll runs on ParallelFor: a std::bad_alloc in a range comes out as one.
+  bool badAlloc = false;
+  try
+  {
+    ParallelAll(size_t(10), 2,
+                [](size_t begin, size_t) -> bool
+                {
+                  if (begin > 0)
+                  {
+                    throw std::bad_alloc();
+                  }
+                  return true;
+                });
+  }
+  catch (const std::bad_alloc&)
+  {
+    badAlloc = true;
+  }
+  CD_CHECK(badAlloc);
 }
 
 CD_TEST_CASE(CollectInOrder)

@@ -7,6 +7,7 @@
  *
  * Usage: TestHostileMeshes CASE (or "all", or "--list").
  */
+#include "ColorDecimationInvariants.h"
 #include "ColorDecimationMeshes.h"
 #include "ColorDecimationTestUtilities.h"
 
@@ -14,23 +15,28 @@
 #include "vtkCellData.h"
 #include "vtkCharArray.h"
 #include "vtkColorHalfEdgeDecimation.h"
+#include "vtkColorHalfEdgeLevelOfDetail.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
+#include "vtkLogger.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <limits>
@@ -40,6 +46,13 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using namespace colordecimation::testing;
 using colordecimation::meshes::Pattern;
@@ -1507,6 +1520,162 @@ CD_TEST_CASE(ColorType_float)
 CD_TEST_CASE(ColorType_double)
 {
   ColorType(VTK_DOUBLE);
+}
+
+//------------------------------------------------------------------------------
+// Running out of memory.
+
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define CD_SANITIZER_OWNS_MEMORY 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define CD_SANITIZER_OWNS_MEMORY 1
+#endif
+#endif
+
+/// The address space this process maps now, in bytes (/proc/self/statm), 0 when unknown.
+size_t MappedBytes()
+{
+  std::ifstream statm("/proc/self/statm");
+  size_t pages = 0;
+  statm >> pages;
+  return pages * static_cast<size_t>(sysconf(_SC_PAGESIZE));
+}
+
+/// Limit the address space to what is mapped now plus `budget` bytes (0: lift the limit to
+/// where it was, `old`).
+void LimitAddressSpace(size_t budget, const rlimit& old)
+{
+  rlimit limited = old;
+  if (budget > 0)
+  {
+    limited.rlim_cur = static_cast<rlim_t>(MappedBytes() + budget);
+    if (old.rlim_cur != RLIM_INFINITY && limited.rlim_cur > old.rlim_cur)
+    {
+      limited.rlim_cur = old.rlim_cur;
+    }
+  }
+  setrlimit(RLIMIT_AS, &limited);
+}
+
+/// The output after a run that failed for want of memory: empty, and said so.
+bool IsEmptyWithError(vtkPolyData* output, const EventRecorder& events)
+{
+  return events.Errors > 0 && output->GetNumberOfPoints() == 0 && output->GetNumberOfCells() == 0;
+}
+
+/// Outcomes of a run under a limit (OutOfMemory), as a child process's exit status.
+enum MemoryOutcome
+{
+  DecimationFailed = 1, ///< the decimation ended with an error and an empty output
+  LevelFailed = 2,      ///< the level's extraction did
+  Wrong = 4,            ///< an output neither complete nor empty with an error
+  Escaped = 8           ///< an exception came out of Update()
+};
+
+/// The decimation with the collapse record, then a level from it, with at most `budget`,
+/// then `levelBudget`, bytes more address space than the process maps when each starts (0: no
+/// limit): a MemoryOutcome mask.
+int DecimateUnderLimit(vtkPolyData* mesh, size_t budget, size_t levelBudget)
+{
+  rlimit old{};
+  getrlimit(RLIMIT_AS, &old);
+  vtkNew<vtkColorHalfEdgeDecimation> filter;
+  filter->SetInputData(mesh);
+  filter->SetTargetReduction(0.9);
+  filter->SetNumberOfThreads(2);
+  filter->GenerateCollapseRecordOn();
+  EventRecorder events;
+  events.Watch(filter);
+  LimitAddressSpace(budget, old);
+  filter->Update();
+  LimitAddressSpace(0, old);
+  vtkPolyData* output = filter->GetOutput();
+  if (IsEmptyWithError(output, events))
+  {
+    return DecimationFailed;
+  }
+  if (events.Errors > 0 || output->GetNumberOfPolys() != 2048 ||
+      !CheckInvariants(mesh, filter, output, false).empty())
+  {
+    std::cout << "  " << budget << " bytes: " << output->GetNumberOfPolys() << " triangles, "
+              << events.ErrorText() << "\n";
+    return Wrong;
+  }
+  vtkNew<vtkColorHalfEdgeLevelOfDetail> lod;
+  lod->SetInputData(mesh);
+  lod->SetRecordData(filter->GetCollapseRecord());
+  lod->SetTargetReduction(0.5);
+  EventRecorder lodEvents;
+  lodEvents.Watch(lod);
+#ifdef __GLIBC__
+  malloc_trim(0); // the decimation's freed memory unmapped: the level's must be mapped anew
+#endif
+  LimitAddressSpace(levelBudget, old);
+  lod->Update();
+  LimitAddressSpace(0, old);
+  vtkPolyData* level = lod->GetOutput();
+  if (IsEmptyWithError(level, lodEvents))
+  {
+    return LevelFailed;
+  }
+  return lodEvents.Errors == 0 && level->GetNumberOfPolys() == 10240 ? 0 : Wrong;
+}
+
+CD_TEST_CASE(OutOfMemory)
+{
+  // The decimation (with the collapse record, on 2 threads), then a level's extraction, in a
+  // child process (which has not decimated before: little freed memory to reuse), one or the
+  // other under an address-space limit of 1 KiB to 256 MiB above what the process maps: each
+  // ends as without the limit or with an error and an empty output, never with the process;
+  // some of each, so that the limit is known to bite.
+#ifdef CD_SANITIZER_OWNS_MEMORY
+  std::cout << "  skipped: the sanitizer's runtime reserves the address space\n";
+#else
+  auto mesh = colordecimation::meshes::Icosphere(5, Pattern::FineDetail);
+  int counts[4] = {};
+  // The decimation's budget from 64 KiB up, the level's unlimited; then the other way round,
+  // from 1 KiB.
+  for (const bool level : { false, true })
+  {
+    for (double kib = level ? 1 : 64; kib <= 256 * 1024; kib *= 1.5)
+    {
+      const auto budget = static_cast<size_t>(kib * 1024);
+      std::cout.flush();
+      const pid_t child = fork();
+      if (child == 0)
+      {
+#ifdef __GLIBC__
+        mallopt(M_ARENA_MAX, 1); // no arenas reserved ahead for the threads the filter starts
+#endif
+        vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // VTK's arrays' own errors
+        int outcome = Escaped;
+        try
+        {
+          outcome = DecimateUnderLimit(mesh, level ? 0 : budget, level ? budget : 0);
+        }
+        catch (...)
+        {
+        }
+        std::_Exit(outcome);
+      }
+      int status = 0;
+      CD_CHECK(child > 0 && waitpid(child, &status, 0) == child);
+      const bool exited = WIFEXITED(status);
+      const int outcome = exited ? WEXITSTATUS(status) : Wrong;
+      CD_CHECK_MSG(exited && !(outcome & (Wrong | Escaped)),
+                   kib << " KiB" << (level ? " for the level" : "") << ": "
+                       << (!exited               ? "the process ended on a signal"
+                             : outcome & Escaped ? "an exception escaped"
+                                                 : "wrong output"));
+      counts[outcome & 3] += 1;
+    }
+  }
+  std::cout << "  runs: decimation out of memory " << counts[DecimationFailed]
+            << ", level out of memory " << counts[LevelFailed] << ", both complete " << counts[0]
+            << "\n";
+  CD_CHECK(counts[DecimationFailed] > 0 && counts[LevelFailed] > 0 && counts[0] > 0);
+#endif
 }
 
 } // namespace

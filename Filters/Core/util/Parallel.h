@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <thread>
 #include <vector>
 
@@ -38,6 +39,8 @@ inline int ThreadsFor(size_t count, int limit, size_t grain)
  * one), [begin, end) being the t-th of `threads` contiguous ranges splitting [0, count).
  * Returns when all have returned. The body is copied for each thread: let it capture by value
  * what its loop reads (pointers rather than references to the caller's vectors).
+ * An exception thrown by a body (std::bad_alloc, say), or by starting a thread, is thrown again
+ * on the calling thread once every started thread has ended: the lowest range's first.
  */
 template <typename Body>
 void ParallelFor(size_t count, int threads, Body&& body)
@@ -51,17 +54,43 @@ void ParallelFor(size_t count, int threads, Body&& body)
   // Each thread calls its own copy of the body: what it captured is read from memory no other
   // thread writes to (a shared copy on the caller's stack would share cache lines with the
   // caller's own frames, and they would bounce between the cores).
+  std::vector<std::exception_ptr> errors(static_cast<size_t>(threads));
+  std::exception_ptr* error = errors.data();
   std::vector<std::thread> pool;
-  pool.reserve(threads - 1);
-  for (int t = 1; t < threads; ++t)
+  try
   {
-    pool.emplace_back([body, count, threads, t]() mutable
-                      { body(count * t / threads, count * (t + 1) / threads, t); });
+    pool.reserve(threads - 1);
+    for (int t = 1; t < threads; ++t)
+    {
+      pool.emplace_back(
+        [body, count, threads, t, error]() mutable
+        {
+          try
+          {
+            body(count * t / threads, count * (t + 1) / threads, t);
+          }
+          catch (...)
+          {
+            error[t] = std::current_exception();
+          }
+        });
+    }
+    body(size_t(0), count / threads, 0);
   }
-  body(size_t(0), count / threads, 0);
+  catch (...)
+  {
+    error[0] = std::current_exception();
+  }
   for (std::thread& thread : pool)
   {
     thread.join();
+  }
+  for (const std::exception_ptr& e : errors)
+  {
+    if (e)
+    {
+      std::rethrow_exception(e);
+    }
   }
 }
 
