@@ -507,35 +507,41 @@ vtkIdType ConvertColors(vtkDataArray* array, Buffer<float>& rgb, double mapping[
     FiniteRange(array, used, threads, lo, hi);
   }
   const bool unit = !bytes && lo >= 0.0 && hi <= 1.0;
+  // A range wider than a double holds (beyond 1.8e308) is mapped by halves: x/2 - lo/2 never
+  // overflows, and 2 * scale = 1 / (hi/2 - lo/2) stays finite.
+  const bool wide = !unit && !std::isfinite(hi - lo);
   const double offset = bytes || unit ? 0.0 : lo;
-  const double scale = bytes ? 1.0 / 255.0 : unit ? 1.0 : (hi > lo ? 1.0 / (hi - lo) : 0.0);
+  const double scale = bytes ? 1.0 / 255.0
+    : unit                   ? 1.0
+    : wide                   ? 0.5 / (0.5 * hi - 0.5 * lo)
+                             : (hi > lo ? 1.0 / (hi - lo) : 0.0);
   mapping[0] = offset;
   mapping[1] = scale;
   std::vector<vtkIdType> nonFinite(size_t(threads), 0);
   vtkIdType* counts = nonFinite.data();
-  ParallelFor(n, threads,
-              [array, used, bytes, offset, scale, out, counts](size_t begin, size_t end, int t)
-              {
-                vtkIdType bad = 0;
-                for (size_t i = begin; i < end; ++i)
-                {
-                  bool finite = true;
-                  for (int k = 0; k < 3; ++k)
-                  {
-                    const double x =
-                      array->GetComponent(static_cast<vtkIdType>(i), used == 3 ? k : 0);
-                    finite = finite && std::isfinite(x);
-                    // Bytes as the contiguous ones above; a range too wide for a double
-                    // (beyond 1.8e308) maps to 0, not NaN.
-                    const double mapped = (x - offset) * scale;
-                    out[3 * i + k] = bytes    ? static_cast<float>(x) / 255.0f
-                      : std::isfinite(mapped) ? static_cast<float>(mapped)
-                                              : 0.0f;
-                  }
-                  bad += finite ? 0 : 1;
-                }
-                counts[t] = bad;
-              });
+  ParallelFor(
+    n, threads,
+    [array, used, bytes, wide, offset, scale, out, counts](size_t begin, size_t end, int t)
+    {
+      vtkIdType bad = 0;
+      for (size_t i = begin; i < end; ++i)
+      {
+        bool finite = true;
+        for (int k = 0; k < 3; ++k)
+        {
+          const double x = array->GetComponent(static_cast<vtkIdType>(i), used == 3 ? k : 0);
+          finite = finite && std::isfinite(x);
+          // Bytes as the contiguous ones above; NaN and infinite values map to 0.
+          const double mapped =
+            wide ? (0.5 * x - 0.5 * offset) * (2.0 * scale) : (x - offset) * scale;
+          out[3 * i + k] = bytes    ? static_cast<float>(x) / 255.0f
+            : std::isfinite(mapped) ? static_cast<float>(mapped)
+                                    : 0.0f;
+        }
+        bad += finite ? 0 : 1;
+      }
+      counts[t] = bad;
+    });
   return std::accumulate(nonFinite.begin(), nonFinite.end(), vtkIdType(0));
 }
 
@@ -549,9 +555,12 @@ void WriteColor(vtkDataArray* array, vtkIdType i, const double rgb[3], const dou
   const bool integral = array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE;
   const double lo = array->GetDataTypeMin();
   const double hi = array->GetDataTypeMax();
+  // A range wider than a double holds (ConvertColors) is walked by halves.
+  const double half = 0.5 / mapping[1];
+  const bool wide = !std::isfinite(1.0 / mapping[1]);
   auto value = [&](double c)
   {
-    double x = mapping[0] + c / mapping[1];
+    double x = wide ? (mapping[0] + c * half) + c * half : mapping[0] + c / mapping[1];
     if (integral)
     {
       x = std::min(std::max(std::round(x), lo), hi);

@@ -218,30 +218,53 @@ CD_TEST_CASE(ColorUnsignedCharLayouts)
 // all-zero colour array, with every point array carried.
 CD_TEST_CASE(ColorRangeOverflow)
 {
+  // Colours spanning -1e308..1e308 (a range wider than a double holds): (2 c - 1) 1e308 for
+  // colours c quantised to eighths, black and white present, map back to c, as the same
+  // colours in [0, 1] give: the same decimation (before: every colour 0, the geometry's).
   auto mesh = meshes::Icosphere(4, Pattern::SmoothGradient);
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  auto unit = Copy(mesh);
   auto huge = Copy(mesh);
-  auto zero = Copy(mesh);
-  vtkNew<vtkDoubleArray> d, z;
+  vtkNew<vtkDoubleArray> u, d;
+  u->SetName("Unit");
   d->SetName("Huge");
-  z->SetName("Zero");
-  for (vtkDoubleArray* a : { d.Get(), z.Get() })
+  for (vtkDoubleArray* a : { u.Get(), d.Get() })
   {
     a->SetNumberOfComponents(3);
-    a->SetNumberOfTuples(mesh->GetNumberOfPoints());
-    a->Fill(0.0);
+    a->SetNumberOfTuples(n);
   }
-  for (vtkIdType i = 0; i < 3 * mesh->GetNumberOfPoints(); ++i)
+  for (vtkIdType i = 0; i < 3 * n; ++i)
   {
-    d->SetValue(i, (i % 2 ? 1e308 : -1e308) * (RGB(mesh)->GetValue(i) / 255.0));
+    int q = static_cast<int>(std::lround(RGB(mesh)->GetValue(i) / 255.0 * 8));
+    q = i < 3 ? 0 : (i < 6 ? 8 : q);
+    u->SetValue(i, q / 8.0);
+    d->SetValue(i, (q / 4.0 - 1.0) * 1e308);
   }
+  SetColors(unit, u);
   SetColors(huge, d);
-  SetColors(zero, z);
+  CD_CHECK(!std::isfinite(d->GetRange(0)[1] - d->GetRange(0)[0]));
   const RunResult r = Decimate(huge, 0.9);
   CD_CHECK(r.Errors == 0 && r.Warnings == 0);
   CD_CHECK(std::abs(r.ActualReduction - 0.9) < 0.01);
-  CD_CHECK(Result(r) == Result(Decimate(zero, 0.9)));
+  const RunResult ru = Decimate(unit, 0.9);
+  CD_CHECK(Result(ru) != Result(Decimate(mesh, 0.9, SetGeometry)));
+  CD_CHECK(Result(r) == Result(ru));
   CheckDecimatedMesh(huge, r.Output, Expectation{ true, 2, 0, nullptr, false }, "huge range");
   CD_CHECK(CheckPointDataCopied(huge, r.Output) == 0);
+  // Colours written back (the colour quadric's placement moves vertices) stay finite, in range.
+  const RunResult moved = Decimate(huge, 0.9,
+                                   [](vtkColorHalfEdgeDecimation* filter)
+                                   {
+                                     filter->SetErrorMetricToColorQuadric();
+                                     filter->OptimalPlacementOn();
+                                   });
+  vtkDataArray* out = moved.Output->GetPointData()->GetArray("Huge");
+  CD_CHECK(moved.Errors == 0 && out && out->GetNumberOfTuples() > 0);
+  for (vtkIdType i = 0; out && i < 3 * out->GetNumberOfTuples(); ++i)
+  {
+    const double v = out->GetComponent(i / 3, static_cast<int>(i % 3));
+    CD_CHECK_MSG(std::isfinite(v) && v >= -1e308 && v <= 1e308, "value " << i << ": " << v);
+  }
 }
 
 CD_TEST_CASE(ColorFloatRange)
