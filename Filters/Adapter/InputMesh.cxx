@@ -303,8 +303,10 @@ void AddStrips(vtkPolyData* input, vtkIdType firstCell, TriangleSoup& soup)
       vtkIdType n3;
       const vtkIdType* ids;
       tris->GetCurrentCell(n3, ids);
-      // A repeated point is how strips swap or join (a b c c d): legitimate, left out quietly.
-      const bool join = ids[0] == ids[1] || ids[1] == ids[2] || ids[0] == ids[2];
+      // A repeated point is how strips swap or join (a b c c d): legitimate, left out quietly
+      // (an id out of range in it is not: Add reports it).
+      const bool join = (ids[0] == ids[1] || ids[1] == ids[2] || ids[0] == ids[2]) &&
+        std::all_of(ids, ids + 3, [numPoints](vtkIdType id) { return id >= 0 && id < numPoints; });
       soup.StripJoins += join ? 1 : 0;
       if (!join)
       {

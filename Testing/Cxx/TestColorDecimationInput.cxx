@@ -598,6 +598,15 @@ CD_TEST_CASE(TriangleStrips)
   r = Decimate(ribbons, 0.0);
   CD_CHECK(r.Warnings == 0 && r.Errors == 0);
   CD_CHECK(r.Output->GetNumberOfPolys() == 4);
+
+  // A joining triangle with an id out of range (0 1 2 3 3 8, eight points) is an input error.
+  vtkNew<vtkCellArray> broken;
+  const vtkIdType bad[6] = { 0, 1, 2, 3, 3, 8 };
+  broken->InsertNextCell(6, bad);
+  ribbons->SetStrips(broken);
+  r = RunFilter(ribbons, 0.0);
+  CD_CHECK_MSG(r.HasError("point ids outside [0, 8)") && r.Output->GetNumberOfPoints() == 0,
+               r.ErrorText());
 }
 
 CD_TEST_CASE(VerticesAndLines)
