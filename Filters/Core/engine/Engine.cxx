@@ -245,7 +245,7 @@ void EngineBase::Finish(bool keepHot)
   // copy made while mapping back is smaller than what they held. Without KeepVertexState the
   // output needs the mesh and the moved vertices' records only.
   this->Best = LargeVector<int32_t>();
-  this->Bounded = LargeVector<uint8_t>();
+  this->KeyKinds = LargeVector<uint8_t>();
   if (!this->Options.KeepVertexState)
   {
     this->ReleaseMetric();

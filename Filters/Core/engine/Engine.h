@@ -130,8 +130,14 @@ public:
 
   /// Each vertex's chosen target, -1 if none (the schedules read it).
   LargeVector<int32_t> Best;
-  /// Each vertex: its key is a lower bound, to be made exact (Greedy).
-  LargeVector<uint8_t> Bounded;
+  /// What each vertex's key is (Best's cost, a bound or the cost of the cheapest legal one).
+  enum KeyKind : uint8_t
+  {
+    CheapestKey = 0, ///< the cost of the cheapest admissible collapse
+    BoundKey = 1,    ///< a lower bound of it, to be made exact (Greedy)
+    LegalKey = 2     ///< the cost of the cheapest legal collapse (an exact evaluation)
+  };
+  LargeVector<uint8_t> KeyKinds;
   /// With RecordCollapses: the collapses made, in order (the schedules append to it); Finish
   /// turns them into the record.
   LargeVector<RecordedCollapse> Recorded;
@@ -230,6 +236,10 @@ public:
     std::vector<double> MirrorCosts;
     typename Metric::Scratch MirrorScratch;
     std::vector<int32_t> SeamScratch;
+    Ring PairRing; ///< ChooseNewNeighbor's one candidate
+    double PairCosts[4] = {};
+    int64_t NewNeighborChoices = 0;    ///< made by EvaluateAll through ChooseNewNeighbor
+    int64_t NewNeighborMismatches = 0; ///< of them, unlike Evaluate's (VerifyNewNeighbors)
   };
 
   explicit Engine(const DecimatorOptions& options)
@@ -286,12 +296,18 @@ public:
    */
   Choice Evaluate(int32_t v0, bool exact, bool allowBound, Workspace& ws) const;
   /**
-   * Evaluate each listed vertex (none twice) into Best, Bounded and keys[v], on up to
-   * ThreadCount threads; locked and removed vertices get no choice.
+   * Evaluate each listed vertex (none twice) into Best, KeyKinds and keys[v], on up to
+   * ThreadCount threads; locked and removed vertices get no choice. A vertex v for which
+   * newNeighbor(v) gives a vertex v1 (not -1) is first offered to ChooseNewNeighbor(v, v1).
    */
-  void EvaluateAll(const int32_t* vertices, size_t count, bool exact, bool allowBound,
-                   double* keys);
-  /// Every vertex's choice into Best and Bounded; returns the keys (by vertex).
+  template <typename NewNeighbor>
+  void EvaluateAll(const int32_t* vertices, size_t count, bool exact, bool allowBound, double* keys,
+                   const NewNeighbor& newNeighbor);
+  void EvaluateAll(const int32_t* vertices, size_t count, bool exact, bool allowBound, double* keys)
+  {
+    this->EvaluateAll(vertices, count, exact, allowBound, keys, [](int32_t) { return -1; });
+  }
+  /// Every vertex's choice into Best and KeyKinds; returns the keys (by vertex).
   LargeVector<double> EvaluateEveryVertex(bool allowBound);
   /// Fetch what evaluating vertices[i + a few] reads into the cache.
   void PrefetchEvaluation(const int32_t* vertices, size_t i, size_t end) const;
@@ -334,7 +350,23 @@ public:
                     bool counted);
   /// The vertices whose chosen collapse or its cost the collapse into v1 may have changed.
   template <typename Function>
-  void ForEachAffected(int32_t v1, const std::vector<int32_t>& formerNeighbors, Function&& f) const;
+  void ForEachAffected(int32_t v1, const std::vector<int32_t>& formerNeighbors, Function&& f) const
+  {
+    this->ForEachAffected(v1, formerNeighbors, f, f);
+  }
+  /// The same, v0's former neighbours (other than v1) given to `former`, the others to `f`.
+  template <typename Function, typename Former>
+  void ForEachAffected(int32_t v1, const std::vector<int32_t>& formerNeighbors, Function&& f,
+                       Former&& former) const;
+  /**
+   * For u, a former neighbour of a v0 just collapsed into v1 and nothing else changed around it
+   * since its last evaluation: when the metric's costs are by pair (CostsByPair), u's key is
+   * its cheapest collapse's cost (CheapestKey), u is not on a boundary nor a seam, and its choice
+   * was neither v0 nor v1, its choice is updated with
+   * the cost of u -> v1 alone (the other candidates' costs have not changed), as Evaluate would
+   * choose; returns whether it was. Writes only u's Best and keys[u].
+   */
+  bool ChooseNewNeighbor(int32_t u, int32_t v1, double* keys, Workspace& ws);
 
   double CollapseCost(int32_t v0, int32_t v1) override;
   bool IsMoved(int32_t v) const override { return this->TheMetric.IsMoved(v); }

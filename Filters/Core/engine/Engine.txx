@@ -118,11 +118,15 @@ void Engine<Metric>::AddMirrorCosts(int32_t v0, Workspace& ws) const
 template <typename Metric>
 Choice Engine<Metric>::Cheapest(const Ring& ring, const std::vector<double>& costs) const
 {
+  // Equal costs go to the lowest vertex id, not to the first in the fan: the choice does not
+  // depend on where the walk around v0 starts (which a neighbour's collapse may move), and
+  // ChooseNewNeighbor can update it without the walk.
   Choice choice;
   double best = std::numeric_limits<double>::infinity();
   for (int j = 0; j < ring.Size; ++j)
   {
-    if (ring.IsCandidate[j] && costs[j] < best)
+    if (ring.IsCandidate[j] &&
+        (costs[j] < best || (costs[j] == best && ring.Vertex[j] < choice.Target)))
     {
       best = costs[j];
       choice.Target = ring.Vertex[j];
@@ -170,24 +174,37 @@ Choice Engine<Metric>::CheapestLegal(int32_t v0, Workspace& ws) const
 }
 
 template <typename Metric>
+template <typename NewNeighbor>
 void Engine<Metric>::EvaluateAll(const int32_t* vertices, size_t count, bool exact, bool allowBound,
-                                 double* keys)
+                                 double* keys, const NewNeighbor& newNeighbor)
 {
   // Each evaluation reads the mesh and the per-vertex state, and writes its own vertex's
   // entries only: the vertices can be shared among threads in any way, with the same result.
-  auto evaluate = [this, vertices, exact, allowBound, keys](Workspace& ws, size_t begin, size_t end)
+  auto evaluate =
+    [this, vertices, exact, allowBound, keys, newNeighbor](Workspace& ws, size_t begin, size_t end)
   {
     for (size_t i = begin; i < end; ++i)
     {
       this->PrefetchEvaluation(vertices, i, end);
       const int32_t v = vertices[i];
+      const int32_t v1 = newNeighbor(v);
+      if (v1 >= 0 && this->ChooseNewNeighbor(v, v1, keys, ws))
+      {
+        ++ws.NewNeighborChoices;
+        if (this->Options.VerifyNewNeighbors)
+        {
+          const Choice full = this->Evaluate(v, false, false, ws);
+          ws.NewNeighborMismatches += full.Target != this->Best[v] || full.Cost != keys[v];
+        }
+        continue;
+      }
       Choice choice;
       if (!this->Mesh.IsLocked(v) && !this->Mesh.IsRemoved(v))
       {
         choice = this->Evaluate(v, exact, allowBound, ws);
       }
       this->Best[v] = choice.Target;
-      this->Bounded[v] = choice.Bound ? 1 : 0;
+      this->KeyKinds[v] = choice.Bound ? BoundKey : exact ? LegalKey : CheapestKey;
       keys[v] = choice.Cost;
     }
   };
@@ -206,7 +223,7 @@ LargeVector<double> Engine<Metric>::EvaluateEveryVertex(bool allowBound)
 {
   const int32_t n = this->Mesh.GetNumberOfVertices();
   this->Best.assign(n, -1);
-  this->Bounded.assign(n, 0);
+  this->KeyKinds.assign(n, CheapestKey);
   std::vector<int32_t> all(n);
   for (int32_t v = 0; v < n; ++v)
   {
@@ -325,9 +342,9 @@ int Engine<Metric>::ApplyCollapse(int32_t v0, int32_t v1, bool moves, const Plac
 }
 
 template <typename Metric>
-template <typename Function>
+template <typename Function, typename Former>
 void Engine<Metric>::ForEachAffected(int32_t v1, const std::vector<int32_t>& formerNeighbors,
-                                     Function&& f) const
+                                     Function&& f, Former&& former) const
 {
   // v1 and v0's former neighbours have a new 1-ring. The other neighbours of v1 only saw their
   // cost towards v1 grow: only those whose choice was v1 are affected. After a full collapse
@@ -343,7 +360,7 @@ void Engine<Metric>::ForEachAffected(int32_t v1, const std::vector<int32_t>& for
   {
     if (u != v1)
     {
-      f(u);
+      former(u);
     }
   }
   this->Mesh.ForEachNeighbor(v1,
@@ -356,6 +373,38 @@ void Engine<Metric>::ForEachAffected(int32_t v1, const std::vector<int32_t>& for
                                  f(u);
                                }
                              });
+}
+
+template <typename Metric>
+bool Engine<Metric>::ChooseNewNeighbor(int32_t u, int32_t v1, double* keys, Workspace& ws)
+{
+  const int32_t best = this->Best[u];
+  if (!Metric::CostsByPair || best < 0 || best == v1 || this->Mesh.IsRemoved(best) ||
+      this->KeyKinds[u] != CheapestKey || !this->Mesh.IsCollapsible(u) ||
+      this->Mesh.IsBoundaryVertex(u) || this->IsTwinned(u))
+  {
+    return false; // v0 was its choice, its cost towards v1 grew, or its ring decides
+  }
+  if (this->Mesh.IsLocked(v1))
+  {
+    return true; // no candidate of u: its choice stands
+  }
+  // The one cost, by the code that costs whole rings (the same arithmetic, bit for bit).
+  Ring& ring = ws.PairRing;
+  ring.Clear();
+  const HotVertex& hot = this->Hot[v1];
+  const double p[3] = { hot.P[0], hot.P[1], hot.P[2] };
+  const double c[3] = { hot.C[0], hot.C[1], hot.C[2] };
+  ring.Add(v1, p, c, true, hot.QC);
+  ring.Pad();
+  this->TheMetric.CostRing(u, true, ring, ws.PairCosts, ws.Scratch);
+  const double cost = ws.PairCosts[0];
+  if (cost < keys[u] || (cost == keys[u] && v1 < best)) // as Cheapest breaks ties
+  {
+    this->Best[u] = v1;
+    keys[u] = cost;
+  }
+  return true;
 }
 
 template <typename Metric>

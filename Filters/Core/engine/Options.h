@@ -79,6 +79,9 @@ struct DecimatorOptions
   /// Batched, for tests: after each pass, count the block flags that differ from flags
   /// computed afresh (DecimatorStatistics::StaleBlockFlags).
   bool VerifyBlockFlags = false;
+  /// Batched, for tests: check each choice made by ChooseNewNeighbor against a full evaluation
+  /// (DecimatorStatistics::NewNeighborMismatches).
+  bool VerifyNewNeighbors = false;
   /// Threads of the parallel phases; 0: one per hardware thread. The result is the same for
   /// any number.
   int NumberOfThreads = 0;
@@ -124,13 +127,15 @@ struct DecimatorStatistics
   int64_t TargetTriangles = 0;
   int64_t OutputTriangles = 0;
   int64_t Collapses = 0;
-  int64_t RejectedPops = 0;    ///< chosen collapses that failed the rules and were re-costed
-  int64_t Passes = 0;          ///< Batched: re-costing passes
-  int Threads = 1;             ///< the most threads that costed vertices at once
-  int CollapseThreads = 1;     ///< Batched: the most threads that collapsed blocks at once
-  int WideCollapseThreads = 1; ///< Batched: the same for the wide blocks
-  int64_t StaleBlockFlags = 0; ///< Batched with VerifyBlockFlags: should be 0
-  double MeanEdgeLength = 0;   ///< of the input, in its own units (the frame's unit)
+  int64_t RejectedPops = 0;          ///< chosen collapses that failed the rules and were re-costed
+  int64_t Passes = 0;                ///< Batched: re-costing passes
+  int Threads = 1;                   ///< the most threads that costed vertices at once
+  int CollapseThreads = 1;           ///< Batched: the most threads that collapsed blocks at once
+  int WideCollapseThreads = 1;       ///< Batched: the same for the wide blocks
+  int64_t StaleBlockFlags = 0;       ///< Batched with VerifyBlockFlags: should be 0
+  int64_t NewNeighborChoices = 0;    ///< Batched: re-costings by one new neighbour's cost alone
+  int64_t NewNeighborMismatches = 0; ///< of them, with VerifyNewNeighbors: should be 0
+  double MeanEdgeLength = 0;         ///< of the input, in its own units (the frame's unit)
   bool Aborted = false;
   /// With MaximumError: the largest geometric error of the collapses made (input units), and
   /// whether the run stopped at the bound.

@@ -87,6 +87,8 @@ public:
   };
   static constexpr bool ReadsColor = true;
   static constexpr bool CostsPieces = true;
+  /// The cost of v0 -> v1 reads the states of v0 and v1 alone, not v0's ring (ChooseNewNeighbor).
+  static constexpr bool CostsByPair = true;
 
   explicit AttributeQuadricMetric(const DecimatorOptions& options);
 

@@ -44,6 +44,7 @@ public:
   };
   static constexpr bool ReadsColor = true;
   static constexpr bool CostsPieces = false; ///< see AttributeQuadricMetric::PieceCost
+  static constexpr bool CostsByPair = false; ///< see AttributeQuadricMetric
 
   explicit ColorQuadricMetric(const DecimatorOptions& options);
 

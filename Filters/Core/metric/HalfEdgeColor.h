@@ -141,6 +141,7 @@ public:
   /// Whether the metric reads the input's colours.
   static constexpr bool ReadsColor = ColorTerms;
   static constexpr bool CostsPieces = false; ///< see AttributeQuadricMetric::PieceCost
+  static constexpr bool CostsByPair = false; ///< see AttributeQuadricMetric
   /// Vertices of more neighbours than this are keyed by the lower bound (1 + Q)(1 + I) until
   /// they reach the top of the heap (section 6).
   static constexpr int LargeRing = 16;

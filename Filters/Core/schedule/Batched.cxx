@@ -8,6 +8,7 @@
 #include "util/Buffer.h"
 
 #include <atomic>
+#include <climits>
 #include <cmath>
 #include <numeric>
 
@@ -22,6 +23,23 @@ constexpr size_t WarmDensity = 16;
 /// A candidate in a block costs about this many plain evaluations (the rules, the collapse, or a
 /// skip), so that a pass's last few thousand candidates still share the cores.
 constexpr size_t CandidateWork = 3;
+
+/// The stamp of a vertex touched once in the pass, as a former neighbour of the v0 of a collapse
+/// into v1: NewNeighborStamp + v1 (below -MaxNewNeighbor, clear of the passes and of the
+/// rejected ones' -pass). The re-costing offers it to ChooseNewNeighbor.
+constexpr int32_t NewNeighborStamp = INT32_MIN;
+constexpr int32_t MaxNewNeighbor = int32_t(1) << 30; ///< vertices beyond: no such stamps
+
+inline bool IsNewNeighborStamp(int32_t stamp)
+{
+  return stamp < -MaxNewNeighbor;
+}
+
+/// Whether a stamp marks its vertex as touched in `pass` (its key stale).
+inline bool Touched(int32_t stamp, int32_t pass)
+{
+  return stamp == pass || IsNewNeighborStamp(stamp);
+}
 
 /// What one thread's collapses of a pass produced.
 struct Lane
@@ -103,6 +121,11 @@ public:
         stats.Aborted = !progress(std::min(done, 1.0));
       }
     }
+    for (int t = 0; t < this->E.GetNumberOfWorkspaces(); ++t)
+    {
+      stats.NewNeighborChoices += this->E.GetWorkspace(t).NewNeighborChoices;
+      stats.NewNeighborMismatches += this->E.GetWorkspace(t).NewNeighborMismatches;
+    }
     stats.CollapseThreads = this->CollapseThreadsUsed;
     stats.WideCollapseThreads = this->WideCollapseThreadsUsed;
     stats.ActualError = this->E.ToInputDistance(this->LargestSquaredError);
@@ -152,7 +175,9 @@ private:
   BlockPartition Blocks;
   LargeVector<double> Keys;
   /// Stamp[v] == pass: v was affected by a collapse of this pass (its key is stale) or its
-  /// chosen collapse was found illegal; either way it waits for the re-costing.
+  /// chosen collapse was found illegal; either way it waits for the re-costing, and does not
+  /// collapse in this pass. A new-neighbour stamp (IsNewNeighborStamp) likewise; the re-costing
+  /// turns it into the pass's.
   LargeVector<int32_t> Stamp;
   std::vector<Lane> Lanes; ///< one per workspace of the engine
   std::vector<Candidate> Batch, Deferred;
@@ -300,7 +325,7 @@ void BatchedSchedule<Metric>::CollapseBlock(Candidate* begin, Candidate* end, in
     this->PrefetchCandidates(begin, i, count, block, level);
     const int32_t v0 = begin[i].Vertex;
     const int32_t v1 = this->E.Best[v0];
-    if (stamp[v0] == pass || v1 < 0)
+    if (Touched(stamp[v0], pass) || v1 < 0)
     {
       continue; // its key is stale: a neighbour collapsed in this pass
     }
@@ -311,7 +336,7 @@ void BatchedSchedule<Metric>::CollapseBlock(Candidate* begin, Candidate* end, in
       lane.Deferred.push_back(begin[i]);
       continue;
     }
-    if (stamp[v1] == pass)
+    if (Touched(stamp[v1], pass))
     {
       continue;
     }
@@ -347,7 +372,7 @@ void BatchedSchedule<Metric>::CollapseDeferred(int32_t pass, DecimatorStatistics
                              this->Blocks.Small());
     const int32_t v0 = this->Deferred[i].Vertex;
     const int32_t v1 = this->E.Best[v0];
-    if (this->Stamp[v0] == pass || v1 < 0 || this->Stamp[v1] == pass)
+    if (Touched(this->Stamp[v0], pass) || v1 < 0 || Touched(this->Stamp[v1], pass))
     {
       continue;
     }
@@ -393,12 +418,24 @@ void BatchedSchedule<Metric>::Recost(int32_t pass)
     {
       u = before[i];
       const int alive = mesh->IsRemoved(u) ? 0 : 1;
-      return alive | ((alive & (stamp[u] == pass ? 1 : 0)) << 1);
+      return alive | ((alive & (Touched(stamp[u], pass) ? 1 : 0)) << 1);
     },
     this->Kept, this->Affected);
   this->Live.swap(this->Kept);
-  this->E.EvaluateAll(this->Affected.data(), this->Affected.size(), false, false,
-                      this->Keys.data());
+  // A vertex touched once, as a former neighbour of a v0 collapsed into v1, is offered to
+  // ChooseNewNeighbor(v, v1) first (its stamp becomes the pass's).
+  int32_t* stamps = this->Stamp.data();
+  this->E.EvaluateAll(this->Affected.data(), this->Affected.size(), false, false, this->Keys.data(),
+                      [stamps, pass](int32_t v)
+                      {
+                        const int32_t s = stamps[v];
+                        if (!IsNewNeighborStamp(s))
+                        {
+                          return -1;
+                        }
+                        stamps[v] = pass;
+                        return s - NewNeighborStamp;
+                      });
   this->E.EvaluateAll(this->Rejected.data(), this->Rejected.size(), true, false, this->Keys.data());
 }
 
@@ -435,7 +472,13 @@ void BatchedSchedule<Metric>::TryCollapse(int32_t v0, int32_t v1, int32_t pass, 
   }
   if (this->E.GetSeams().Empty())
   {
-    this->E.ForEachAffected(v1, ws.FormerNeighbors, [pass, stamp](int32_t u) { stamp[u] = pass; });
+    // A former neighbour of v0 touched for the first time in this pass remembers v1: when the
+    // metric's costs are by pair, the re-costing may only need the cost towards v1.
+    const bool byPair = Metric::CostsByPair && this->Stamp.size() <= size_t(MaxNewNeighbor);
+    this->E.ForEachAffected(
+      v1, ws.FormerNeighbors, [pass, stamp](int32_t u) { stamp[u] = pass; },
+      [pass, stamp, byPair, v1](int32_t u)
+      { stamp[u] = byPair && !Touched(stamp[u], pass) ? NewNeighborStamp + v1 : pass; });
   }
   else
   {
@@ -449,7 +492,7 @@ void BatchedSchedule<Metric>::TrySeamCollapse(int32_t v0, int32_t v1, int32_t pa
 {
   int32_t* stamp = this->Stamp.data();
   const int32_t t0 = this->E.GetSeams().GetTwin(v0), m1 = this->E.GetSeams().MirrorTarget(v1);
-  if (m1 < 0 || stamp[t0] == pass || stamp[m1] == pass)
+  if (m1 < 0 || Touched(stamp[t0], pass) || Touched(stamp[m1], pass))
   {
     return; // the mirror's key is stale: a neighbour collapsed in this pass
   }

@@ -86,10 +86,10 @@ private:
       this->Heap.Pop(); // no collapse left for v0 (removed lazily)
       return false;
     }
-    if (this->E.Bounded[v0])
+    if (this->E.KeyKinds[v0] == Engine<Metric>::BoundKey)
     {
       // Its key was a lower bound (a high-valence vertex): cost it exactly, and back it goes.
-      this->E.Bounded[v0] = 0;
+      this->E.KeyKinds[v0] = Engine<Metric>::CheapestKey;
       this->Requeue(v0, false);
       return false;
     }
@@ -205,7 +205,7 @@ private:
     }
     const Choice best = this->E.Evaluate(v, false, true, this->E.GetWorkspace(0));
     this->E.Best[v] = best.Target;
-    this->E.Bounded[v] = best.Bound ? 1 : 0;
+    this->E.KeyKinds[v] = best.Bound ? Engine<Metric>::BoundKey : Engine<Metric>::CheapestKey;
     if (best.Target < 0)
     {
       return; // left in the heap, if it is there, and dropped when it comes to the top
