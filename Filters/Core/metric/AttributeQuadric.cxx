@@ -11,11 +11,6 @@
 
 namespace colordecimation
 {
-namespace
-{
-constexpr double Axis[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
-} // namespace
-
 double AttributeQuadric::Evaluate(const double dx[3], const double ds[3]) const
 {
   const double ax = this->A00 * dx[0] + this->A01 * dx[1] + this->A02 * dx[2];
@@ -64,38 +59,6 @@ void AttributeQuadric::AddShifted(const AttributeQuadric& other, const double dx
   this->A12 += other.A12;
   this->A22 += other.A22;
   this->W += other.W;
-}
-
-void AttributeQuadric::AddPlane(const double m[3], double weight)
-{
-  this->A00 = static_cast<float>(this->A00 + weight * m[0] * m[0]);
-  this->A01 = static_cast<float>(this->A01 + weight * m[0] * m[1]);
-  this->A02 = static_cast<float>(this->A02 + weight * m[0] * m[2]);
-  this->A11 = static_cast<float>(this->A11 + weight * m[1] * m[1]);
-  this->A12 = static_cast<float>(this->A12 + weight * m[1] * m[2]);
-  this->A22 = static_cast<float>(this->A22 + weight * m[2] * m[2]);
-}
-
-void AttributeQuadric::AddTriangle(const double n[3], const double g[3][3], double area,
-                                   const AttributeQuadricWeights& weights)
-{
-  this->AddPlane(n, weights.Geometry * area);
-  if (weights.EdgeLength > 0)
-  {
-    for (const double* axis : { Axis[0], Axis[1], Axis[2] })
-    {
-      this->AddPlane(axis, weights.EdgeLength * area);
-    }
-  }
-  for (int k = 0; k < 3; ++k)
-  {
-    this->AddPlane(g[k], area);
-    for (int i = 0; i < 3; ++i)
-    {
-      this->G[k][i] = static_cast<float>(this->G[k][i] + area * g[k][i]);
-    }
-  }
-  this->W = static_cast<float>(this->W + area);
 }
 
 namespace

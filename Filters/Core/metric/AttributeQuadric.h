@@ -56,12 +56,41 @@ struct VTKCOLORDECIMATION_EXPORT AttributeQuadric
   double Evaluate(const double dx[3], const double ds[3]) const;
   /// Add `other`, whose centre lies at offset (dx, ds) from this one's (dx = x_this - x_other).
   void AddShifted(const AttributeQuadric& other, const double dx[3], const double ds[3]);
-  /// Add weight * m m^T to the geometric block (a plane through the centre).
-  void AddPlane(const double m[3], double weight);
+  /// Add weight * m m^T to the geometric block (a plane through the centre). Inline: the
+  /// set-up adds seven planes a corner.
+  void AddPlane(const double m[3], double weight)
+  {
+    this->A00 = static_cast<float>(this->A00 + weight * m[0] * m[0]);
+    this->A01 = static_cast<float>(this->A01 + weight * m[0] * m[1]);
+    this->A02 = static_cast<float>(this->A02 + weight * m[0] * m[2]);
+    this->A11 = static_cast<float>(this->A11 + weight * m[1] * m[1]);
+    this->A12 = static_cast<float>(this->A12 + weight * m[1] * m[2]);
+    this->A22 = static_cast<float>(this->A22 + weight * m[2] * m[2]);
+  }
   /// A triangle's terms at its corner (the plane and the colour field pass through it):
   /// area * (geometry n n^T + edgeLength I + sum_k g_k g_k^T), area * g_k, area.
   void AddTriangle(const double n[3], const double g[3][3], double area,
-                   const AttributeQuadricWeights& weights);
+                   const AttributeQuadricWeights& weights)
+  {
+    constexpr double axis[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+    this->AddPlane(n, weights.Geometry * area);
+    if (weights.EdgeLength > 0)
+    {
+      for (const double* a : axis)
+      {
+        this->AddPlane(a, weights.EdgeLength * area);
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      this->AddPlane(g[k], area);
+      for (int i = 0; i < 3; ++i)
+      {
+        this->G[k][i] = static_cast<float>(this->G[k][i] + area * g[k][i]);
+      }
+    }
+    this->W = static_cast<float>(this->W + area);
+  }
 };
 static_assert(sizeof(AttributeQuadric) == 92, "23 floats per vertex");
 
