@@ -36,17 +36,26 @@ inline bool IsContiguous(vtkAbstractArray* array)
 
 /**
  * `values` unwritten values of `valueBytes` each for the contiguous `array`, on huge pages when
- * large, freed by the array with FreeLarge; returns them, or null (nothing allocated, the array
- * untouched) when there are none or no memory.
+ * large, freed by the array with FreeLarge; returns them, or null (the array untouched) when
+ * there are none. Without memory for them, throws std::bad_alloc rather than leave the
+ * allocation to VTK: a VTK built without NDEBUG (ParaView 5.11's) calls abort() when one of
+ * its arrays cannot allocate (vtkGenericDataArray::Allocate, Resize).
  */
 inline void* AdoptFreeable(vtkAbstractArray* array, vtkIdType values, size_t valueBytes)
 {
-  void* memory = values > 0 ? AllocateFreeable(static_cast<size_t>(values) * valueBytes) : nullptr;
-  if (memory)
+  if (values <= 0)
   {
-    array->SetVoidArray(memory, values, 0, vtkAbstractArray::VTK_DATA_ARRAY_USER_DEFINED);
-    array->SetArrayFreeFunction(FreeLarge);
+    return nullptr;
   }
+  const size_t bytes = static_cast<size_t>(values) * valueBytes;
+  void* memory = AllocateFreeable(bytes);
+  memory = memory ? memory : std::malloc(bytes); // huge pages' alignment may be what failed
+  if (!memory)
+  {
+    throw std::bad_alloc();
+  }
+  array->SetVoidArray(memory, values, 0, vtkAbstractArray::VTK_DATA_ARRAY_USER_DEFINED);
+  array->SetArrayFreeFunction(FreeLarge);
   return memory;
 }
 
@@ -77,8 +86,7 @@ void AllocateValues(Array* array, vtkIdType values)
 {
   if (!AdoptFreeable(array, values, sizeof(typename Array::ValueType)))
   {
-    array->SetNumberOfValues(values);
-    RequireValues(array, values);
+    array->SetNumberOfValues(0); // none asked for
   }
 }
 

@@ -244,19 +244,21 @@ vtkSmartPointer<vtkAbstractArray> Gather(vtkAbstractArray* in, const vtkIdType* 
   return out;
 }
 
-/// Every array of `inPD` gathered at the used points (Gather), with its attribute roles: the
-/// global ids too, which stay unique (each output point is one input point).
-void WritePointData(vtkPointData* inPD, const UsedPoints& used, int threads, vtkPointData* outPD)
+/// Every array of `in` gathered at `source` (Gather), with its attribute roles but, unless
+/// keepGlobalIds, the global ids' (then an ordinary array).
+void GatherArrays(vtkDataSetAttributes* in, const vtkIdType* source, vtkIdType count, int threads,
+                  bool keepGlobalIds, vtkDataSetAttributes* out)
 {
-  for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
+  for (int a = 0; a < in->GetNumberOfArrays(); ++a)
   {
-    vtkAbstractArray* in = inPD->GetAbstractArray(a);
-    const int index = outPD->AddArray(Gather(in, used.Source.data(), used.Points, threads));
+    vtkAbstractArray* array = in->GetAbstractArray(a);
+    const int index = out->AddArray(Gather(array, source, count, threads));
     for (int role = 0; role < vtkDataSetAttributes::NUM_ATTRIBUTES; ++role)
     {
-      if (inPD->GetAbstractAttribute(role) == in)
+      if (in->GetAbstractAttribute(role) == array &&
+          (keepGlobalIds || role != vtkDataSetAttributes::GLOBALIDS))
       {
-        outPD->SetActiveAttribute(index, role);
+        out->SetActiveAttribute(index, role);
       }
     }
   }
@@ -279,9 +281,13 @@ void WritePoints(vtkPolyData* input, const Decimator* decimator, const UsedPoint
     // Another layout (mapped, SOA): into a plain array of its type, as vtkPoints makes one,
     // described as the input's.
     outPoints->SetDataType(in->GetDataType());
-    outPoints->SetNumberOfPoints(used.Points);
-    RequireValues(outPoints->GetData(), 3 * used.Points);
-    in->GetTuples(IdList(used.Source.data(), used.Points), outPoints->GetData());
+    vtkDataArray* out = outPoints->GetData();
+    out->SetNumberOfComponents(3);
+    if (!AdoptFreeable(out, 3 * used.Points, static_cast<size_t>(out->GetDataTypeSize())))
+    {
+      out->SetNumberOfTuples(0);
+    }
+    in->GetTuples(IdList(used.Source.data(), used.Points), out);
     CopyDescription(in, outPoints->GetData());
   }
   if (decimator && decimator->HasMovedVertices())
@@ -302,10 +308,11 @@ void WritePoints(vtkPolyData* input, const Decimator* decimator, const UsedPoint
 }
 
 /// The surviving triangles, in input order, and the input cell of each (sourceCells, when not
-/// null): each range of faces of FindUsedPoints writes its own, where its triangles start.
+/// null, sized to them): each range of faces of FindUsedPoints writes its own, where its
+/// triangles start.
 template <typename Faces>
 void WriteTriangles(const Faces& faces, const TriangleSoup& soup, const UsedPoints& used,
-                    vtkIdList* sourceCells, vtkIdList* targetCells, vtkPolyData* output)
+                    vtkIdType* sourceCells, vtkPolyData* output)
 {
   vtkNew<vtkIdTypeArray> connectivity;
   vtkNew<vtkIdTypeArray> offsets;
@@ -313,45 +320,34 @@ void WriteTriangles(const Faces& faces, const TriangleSoup& soup, const UsedPoin
   AllocateValues(offsets.Get(), used.Triangles + 1);
   vtkIdType* points = connectivity->GetPointer(0);
   vtkIdType* offset = offsets->GetPointer(0);
-  vtkIdType* source = nullptr;
-  vtkIdType* target = nullptr;
-  if (sourceCells)
-  {
-    sourceCells->SetNumberOfIds(used.Triangles);
-    targetCells->SetNumberOfIds(used.Triangles);
-    RequireIds(sourceCells, used.Triangles);
-    RequireIds(targetCells, used.Triangles);
-    source = sourceCells->GetPointer(0);
-    target = targetCells->GetPointer(0);
-  }
+  vtkIdType* source = sourceCells;
   const vtkIdType* newId = used.NewId.data();
   const vtkIdType* before = used.TrianglesBefore.data();
   const vtkIdType* cell = soup.SourceCell.empty() ? nullptr : soup.SourceCell.data();
   const vtkIdType firstCell = soup.FirstCell;
-  ParallelFor(static_cast<size_t>(faces.Count()), used.FaceThreads,
-              [faces, points, offset, source, target, newId, before, cell,
-               firstCell](size_t begin, size_t end, int t)
-              {
-                vtkIdType next = before[t];
-                for (size_t f = begin; f < end; ++f)
-                {
-                  int32_t tri[3];
-                  if (faces.Get(static_cast<int32_t>(f), tri))
-                  {
-                    offset[next] = 3 * next;
-                    for (int k = 0; k < 3; ++k)
-                    {
-                      points[3 * next + k] = newId[tri[k]];
-                    }
-                    if (source)
-                    {
-                      source[next] = cell ? cell[f] : firstCell + static_cast<vtkIdType>(f);
-                      target[next] = next;
-                    }
-                    ++next;
-                  }
-                }
-              });
+  ParallelFor(
+    static_cast<size_t>(faces.Count()), used.FaceThreads,
+    [faces, points, offset, source, newId, before, cell, firstCell](size_t begin, size_t end, int t)
+    {
+      vtkIdType next = before[t];
+      for (size_t f = begin; f < end; ++f)
+      {
+        int32_t tri[3];
+        if (faces.Get(static_cast<int32_t>(f), tri))
+        {
+          offset[next] = 3 * next;
+          for (int k = 0; k < 3; ++k)
+          {
+            points[3 * next + k] = newId[tri[k]];
+          }
+          if (source)
+          {
+            source[next] = cell ? cell[f] : firstCell + static_cast<vtkIdType>(f);
+          }
+          ++next;
+        }
+      }
+    });
   offset[used.Triangles] = 3 * used.Triangles;
   vtkNew<vtkCellArray> polys;
   polys->SetData(offsets, connectivity);
@@ -514,47 +510,6 @@ void KeepCarriedArrays(vtkObject* self, vtkPolyData* input, vtkPointData* inPD, 
   }
 }
 
-/// The array of `data` named as `like` and of its type and components (unnamed: the first
-/// such unnamed one), or -1.
-int IndexLike(vtkDataSetAttributes* data, vtkAbstractArray* like)
-{
-  const std::string name = like->GetName() ? like->GetName() : "";
-  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* array = data->GetAbstractArray(a);
-    if (array && (array->GetName() ? array->GetName() : "") == name &&
-        array->GetDataType() == like->GetDataType() &&
-        array->GetNumberOfComponents() == like->GetNumberOfComponents())
-    {
-      return a;
-    }
-  }
-  return -1;
-}
-
-/**
- * Each output triangle's input cell values, by VTK's CopyData, the global cell ids included
- * (VTK leaves them out): as the output's global ids when the input's cells were all triangles
- * (one output triangle a cell: the ids stay unique), otherwise (a polygon's triangles share its
- * cell) as an ordinary array. The role follows the input, not the level, and no copy flag is
- * left on the output.
- */
-void WriteCellData(vtkCellData* inCD, vtkIdList* sourceCells, vtkIdList* targetCells,
-                   bool oneTrianglePerCell, vtkCellData* outCD)
-{
-  vtkDataArray* globalIds = inCD->GetGlobalIds();
-  if (globalIds)
-  {
-    inCD->SetActiveAttribute(-1, vtkDataSetAttributes::GLOBALIDS); // copied as any array
-  }
-  outCD->CopyAllocate(inCD, sourceCells->GetNumberOfIds());
-  outCD->CopyData(inCD, sourceCells, targetCells);
-  if (globalIds && oneTrianglePerCell)
-  {
-    outCD->SetActiveAttribute(IndexLike(outCD, globalIds), vtkDataSetAttributes::GLOBALIDS);
-  }
-}
-
 /// Every data array of `output` marked modified once its values are final: the range caches
 /// its information may hold from the input (CopyInformation keeps the finite magnitude range)
 /// are then dropped, so that ranges are the output's own.
@@ -591,12 +546,10 @@ vtkIdType Write(vtkObject* self, vtkPolyData* input, const InputMesh& mesh, cons
   WritePoints(input, decimator, used, threads, output);
   // Each output triangle's input cell, when there is cell data to copy.
   const bool cellData = inCD->GetNumberOfArrays() > 0;
-  vtkNew<vtkIdList> sourceCells;
-  vtkNew<vtkIdList> targetCells;
-  WriteTriangles(faces, mesh.Soup, used, cellData ? sourceCells.Get() : nullptr,
-                 cellData ? targetCells.Get() : nullptr, output);
+  LargeVector<vtkIdType> sourceCells(cellData ? static_cast<size_t>(used.Triangles) : 0);
+  WriteTriangles(faces, mesh.Soup, used, cellData ? sourceCells.data() : nullptr, output);
   vtkPointData* outPD = output->GetPointData();
-  WritePointData(inPD, used, threads, outPD);
+  GatherArrays(inPD, used.Source.data(), used.Points, threads, true, outPD);
   if (decimator && decimator->HasMovedVertices() && mesh.ColorArray)
   {
     WriteMovedColors(mesh, *decimator, used, outPD);
@@ -607,8 +560,10 @@ vtkIdType Write(vtkObject* self, vtkPolyData* input, const InputMesh& mesh, cons
   }
   if (cellData)
   {
-    WriteCellData(inCD, sourceCells, targetCells, mesh.Soup.Polygons == 0 && mesh.Soup.Strips == 0,
-                  output->GetCellData());
+    // Global cell ids stay global ids when each output triangle is one input cell (they stay
+    // unique), not when a polygon's or a strip's triangles share theirs.
+    GatherArrays(inCD, sourceCells.data(), used.Triangles, threads,
+                 mesh.Soup.Polygons == 0 && mesh.Soup.Strips == 0, output->GetCellData());
   }
   MarkArraysModified(output);
   return used.Triangles;

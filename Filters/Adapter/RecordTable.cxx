@@ -108,6 +108,7 @@ void AddField(vtkFieldData* field, const char* name, vtkIdType value)
   vtkNew<vtkIdTypeArray> array;
   array->SetName(name);
   array->InsertNextValue(value);
+  RequireValues(array, 1); // VTK's failed allocation leaves the array empty
   field->AddArray(array);
 }
 
@@ -116,6 +117,7 @@ void AddField(vtkFieldData* field, const char* name, const std::string& value)
   vtkNew<vtkStringArray> array;
   array->SetName(name);
   array->InsertNextValue(value);
+  RequireValues(array, 1); // VTK's failed allocation leaves the array empty
   field->AddArray(array);
 }
 

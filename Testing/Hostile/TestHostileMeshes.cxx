@@ -1657,6 +1657,7 @@ CD_TEST_CASE(OutOfMemory)
         catch (...)
         {
         }
+        std::cout.flush(); // _Exit flushes nothing: a wrong output's lines would be lost
         std::_Exit(outcome);
       }
       int status = 0;
