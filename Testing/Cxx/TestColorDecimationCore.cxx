@@ -1911,9 +1911,11 @@ CD_TEST_CASE(ThreadsSameResult)
 /**
  * The Batched schedule's re-costing by one new neighbour's cost (ChooseNewNeighbor) chooses
  * what a full evaluation chooses, on 1 and 3 threads alike: on a jittered sphere with random
- * colours (no two costs equal) and on a flat grid of one colour, where most costs tie (equal
- * costs go to the lowest id, wherever the walk around the vertex starts), at the defaults'
- * settings of the attribute quadric.
+ * colours (no two costs equal), on a flat grid of one colour, where most costs tie (equal
+ * costs go to the lowest id, wherever the walk around the vertex starts), the same tilted, and
+ * a flat grid whose colour is linear in the position (every cost 0 in exact arithmetic: what
+ * rounding leaves of them must not fall when a vertex's quadric grows), at the defaults'
+ * weights and with none (no edge length nor boundary term to outweigh the rounding).
  */
 CD_TEST_CASE(NewNeighborChoices)
 {
@@ -1921,37 +1923,56 @@ CD_TEST_CASE(NewNeighborChoices)
   std::vector<float> colors;
   std::vector<int32_t> triangles;
   const DecimatorInput sphere = JitteredSphere(120, points, colors, triangles);
-  const PlainMesh grid = ToPlain(meshes::Grid(60, 40, meshes::Pattern::Constant));
+  // Flat grids: of one colour (costs tie), tilted (the same, rounded differently), and with a
+  // linear colour ramp (every cost 0 in exact arithmetic).
+  const PlainMesh grid = ToPlain(meshes::FlatGrid(60, 60, meshes::Pattern::Constant));
   const std::vector<float> grey(grid.Points.size(), 0.5f);
-  DecimatorInput flat;
-  flat.NumberOfPoints = grid.NumberOfPoints();
-  flat.Points = grid.Points.data();
-  flat.Colors = grey.data();
-  flat.NumberOfTriangles = grid.NumberOfTriangles();
-  flat.Triangles = grid.Triangles.data();
-  for (const DecimatorInput* input : { &sphere, static_cast<const DecimatorInput*>(&flat) })
+  PlainMesh tilted = grid;
+  std::vector<float> ramp(grid.Points.size());
+  for (int32_t v = 0; v < grid.NumberOfPoints(); ++v)
   {
-    DecimatorOptions options;
-    options.Metric = ErrorMetric::AttributeQuadric;
-    options.Schedule = CollapseSchedule::Batched;
-    options.BoundaryWeight = 50;
-    options.EdgeLengthWeight = 1e-4;
-    options.BlockShift = 8;
-    options.VerifyNewNeighbors = true;
-    const int64_t target = input->NumberOfTriangles / 10;
-    options.NumberOfThreads = 1;
-    Decimator one(options);
-    const DecimatorStatistics a = one.Run(*input, target);
-    options.NumberOfThreads = 3;
-    Decimator three(options);
-    const DecimatorStatistics b = three.Run(*input, target);
-    std::cout << "  " << input->NumberOfTriangles << " triangles: " << a.Collapses << " collapses, "
-              << a.NewNeighborChoices << " choices by a new neighbour\n";
-    CD_CHECK(a.OutputTriangles <= target && a.NewNeighborChoices > a.Collapses / 4);
-    CD_CHECK_MSG(a.NewNeighborMismatches == 0 && b.NewNeighborMismatches == 0,
-                 a.NewNeighborMismatches << " and " << b.NewNeighborMismatches << " mismatches");
-    CD_CHECK(a.NewNeighborChoices == b.NewNeighborChoices && a.Collapses == b.Collapses);
-    CD_CHECK(CountMeshDifferences(one, three) == 0);
+    const double x = grid.Points[3 * v], y = grid.Points[3 * v + 1];
+    tilted.Points[3 * v + 2] = 0.3 * x - 0.7 * y;
+    tilted.Positions[3 * v + 2] = static_cast<float>(tilted.Points[3 * v + 2]);
+    const float rgb[3] = { float(0.5 + 0.2 * x), float(0.5 - 0.3 * y), float(0.4 + 0.1 * x) };
+    std::copy(rgb, rgb + 3, ramp.begin() + 3 * v);
+  }
+  std::vector<DecimatorInput> inputs(4, sphere);
+  for (const int i : { 1, 2, 3 })
+  {
+    const PlainMesh& m = i == 2 ? tilted : grid;
+    inputs[i].NumberOfPoints = m.NumberOfPoints();
+    inputs[i].Points = m.Points.data();
+    inputs[i].Colors = i == 3 ? ramp.data() : grey.data();
+    inputs[i].NumberOfTriangles = m.NumberOfTriangles();
+    inputs[i].Triangles = m.Triangles.data();
+  }
+  for (const DecimatorInput& input : inputs)
+  {
+    for (const bool weighted : { true, false })
+    {
+      DecimatorOptions options;
+      options.Metric = ErrorMetric::AttributeQuadric;
+      options.Schedule = CollapseSchedule::Batched;
+      options.BoundaryWeight = weighted ? 50 : 0;
+      options.EdgeLengthWeight = weighted ? 1e-4 : 0;
+      options.VerifyNewNeighbors = true;
+      const int64_t target = input.NumberOfTriangles / 10;
+      options.NumberOfThreads = 1;
+      Decimator one(options);
+      const DecimatorStatistics a = one.Run(input, target);
+      options.NumberOfThreads = 3;
+      Decimator three(options);
+      const DecimatorStatistics b = three.Run(input, target);
+      std::cout << "  " << input.NumberOfTriangles << " triangles, weights "
+                << (weighted ? "on" : "off") << ": " << a.Collapses << " collapses, "
+                << a.NewNeighborChoices << " choices by a new neighbour\n";
+      CD_CHECK(a.OutputTriangles <= target && a.NewNeighborChoices > a.Collapses / 4);
+      CD_CHECK_MSG(a.NewNeighborMismatches == 0 && b.NewNeighborMismatches == 0,
+                   a.NewNeighborMismatches << " and " << b.NewNeighborMismatches << " mismatches");
+      CD_CHECK(a.NewNeighborChoices == b.NewNeighborChoices && a.Collapses == b.Collapses);
+      CD_CHECK(CountMeshDifferences(one, three) == 0);
+    }
   }
 }
 

@@ -286,6 +286,7 @@ public:
     while (this->Workers.size() < static_cast<size_t>(threads - 1))
     {
       this->Workers.push_back(this->Main); // its own scratch; the same rules and normals
+      this->Workers.back().NewNeighborChoices = this->Workers.back().NewNeighborMismatches = 0;
     }
   }
   int GetNumberOfWorkspaces() const { return 1 + static_cast<int>(this->Workers.size()); }

@@ -51,7 +51,10 @@ void AttributeQuadric::AddShifted(const AttributeQuadric& other, const double dx
   {
     this->B[i] = static_cast<float>(this->B[i] + b[i]);
   }
-  this->C = static_cast<float>(this->C + other.Evaluate(dx, ds));
+  // other(d) >= 0 in exact arithmetic; rounded, it can come out a hair below 0 (a flat region,
+  // a linear colour). Clamped, C never falls: a collapse never makes its kept vertex cheaper to
+  // reach, the premise of the engine's re-costing (ForEachAffected, ChooseNewNeighbor).
+  this->C = static_cast<float>(this->C + std::max(other.Evaluate(dx, ds), 0.0));
   this->A00 += other.A00;
   this->A01 += other.A01;
   this->A02 += other.A02;
