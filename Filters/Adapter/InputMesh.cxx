@@ -557,17 +557,14 @@ void WriteColor(vtkDataArray* array, vtkIdType i, const double rgb[3], const dou
   const bool integral = array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE;
   const double lo = array->GetDataTypeMin();
   const double hi = array->GetDataTypeMax();
-  // A range wider than a double holds (ConvertColors) is walked by halves.
-  const double half = 0.5 / mapping[1];
+  // A range wider than a double holds (ConvertColors) is walked by halves; its scale may be
+  // subnormal (the range +-DBL_MAX), whose inverse overflows: the half range is capped.
+  const double half = std::min(0.5 / mapping[1], std::numeric_limits<double>::max());
   const bool wide = !std::isfinite(1.0 / mapping[1]);
   auto value = [&](double c)
   {
-    double x = wide ? (mapping[0] + c * half) + c * half : mapping[0] + c / mapping[1];
-    if (integral)
-    {
-      x = std::min(std::max(std::round(x), lo), hi);
-    }
-    return x;
+    const double x = wide ? (mapping[0] + c * half) + c * half : mapping[0] + c / mapping[1];
+    return std::min(std::max(integral ? std::round(x) : x, lo), hi);
   };
   if (comps >= 3)
   {
