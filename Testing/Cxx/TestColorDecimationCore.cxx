@@ -25,6 +25,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <new>
 #include <numeric>
 #include <random>
@@ -1858,6 +1859,22 @@ long long CountDifferences(const Decimator& a, const Decimator& b, ErrorMetric m
   return differences;
 }
 
+/// The same run on 1 and on 3 threads.
+struct OneAndThree
+{
+  std::unique_ptr<Decimator> One, Three;
+  DecimatorStatistics A, B;
+  OneAndThree(DecimatorOptions options, const DecimatorInput& input, int64_t target)
+  {
+    options.NumberOfThreads = 1;
+    this->One.reset(new Decimator(options));
+    this->A = this->One->Run(input, target);
+    options.NumberOfThreads = 3;
+    this->Three.reset(new Decimator(options));
+    this->B = this->Three->Run(input, target);
+  }
+};
+
 /**
  * Costing on several threads gives the same decimation as on one, for both schedules and
  * the metrics with and without placement (each evaluation writes its own vertex only).
@@ -1881,12 +1898,9 @@ CD_TEST_CASE(ThreadsSameResult)
       options.Metric = metric;
       options.OptimalPlacement = metric == ErrorMetric::ColorQuadric;
       options.Schedule = schedule;
-      options.NumberOfThreads = 1;
-      Decimator one(options);
-      const DecimatorStatistics a = one.Run(input, target);
-      options.NumberOfThreads = 3;
-      Decimator three(options);
-      const DecimatorStatistics b = three.Run(input, target);
+      const OneAndThree runs(options, input, target);
+      const Decimator &one = *runs.One, &three = *runs.Three;
+      const DecimatorStatistics &a = runs.A, &b = runs.B;
       std::cout << "  schedule " << static_cast<int>(schedule) << ", metric "
                 << static_cast<int>(metric) << ": " << a.Collapses << " collapses, " << b.Passes
                 << " passes, " << b.Threads << " threads costing, " << b.CollapseThreads << " ("
@@ -1958,12 +1972,9 @@ CD_TEST_CASE(NewNeighborChoices)
       options.EdgeLengthWeight = weighted ? 1e-4 : 0;
       options.VerifyNewNeighbors = true;
       const int64_t target = input.NumberOfTriangles / 10;
-      options.NumberOfThreads = 1;
-      Decimator one(options);
-      const DecimatorStatistics a = one.Run(input, target);
-      options.NumberOfThreads = 3;
-      Decimator three(options);
-      const DecimatorStatistics b = three.Run(input, target);
+      const OneAndThree runs(options, input, target);
+      const Decimator &one = *runs.One, &three = *runs.Three;
+      const DecimatorStatistics &a = runs.A, &b = runs.B;
       std::cout << "  " << input.NumberOfTriangles << " triangles, weights "
                 << (weighted ? "on" : "off") << ": " << a.Collapses << " collapses, "
                 << a.NewNeighborChoices << " choices by a new neighbour\n";
