@@ -484,6 +484,7 @@ int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(reques
   {
     vtkErrorMacro(<< (dynamic_cast<const std::bad_alloc*>(&e) ? "Out of memory" : e.what())
                   << " extracting the level: empty output.");
+    this->SetProgressText(nullptr); // the failure may come while the record is read
     output->Initialize();
     output->GetFieldData()->PassData(input->GetFieldData());
     this->Cached->ByBlock.clear();

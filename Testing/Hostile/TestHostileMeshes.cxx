@@ -1617,7 +1617,7 @@ int DecimateUnderLimit(vtkPolyData* mesh, size_t budget, size_t levelBudget)
   vtkPolyData* level = lod->GetOutput();
   if (IsEmptyWithError(level, lodEvents))
   {
-    return LevelFailed;
+    return lod->GetProgressText() ? Wrong : LevelFailed; // no "Reading..." left behind
   }
   return lodEvents.Errors == 0 && level->GetNumberOfPolys() == 10240 ? 0 : Wrong;
 }
