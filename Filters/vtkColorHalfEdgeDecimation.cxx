@@ -472,8 +472,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkErrorMacro(<< (dynamic_cast<const std::bad_alloc*>(&e) ? "Out of memory" : e.what())
                   << " decimating " << input->GetNumberOfCells() << " cells: empty output.");
-    output->Initialize();
-    output->GetFieldData()->PassData(input->GetFieldData());
+    colordecimation::adapter::EmptyOutput(input, output);
     if (vtkTable* record = vtkTable::GetData(outputVector, 1))
     {
       record->Initialize();

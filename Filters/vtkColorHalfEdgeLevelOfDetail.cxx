@@ -485,8 +485,7 @@ int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(reques
     vtkErrorMacro(<< (dynamic_cast<const std::bad_alloc*>(&e) ? "Out of memory" : e.what())
                   << " extracting the level: empty output.");
     this->SetProgressText(nullptr); // the failure may come while the record is read
-    output->Initialize();
-    output->GetFieldData()->PassData(input->GetFieldData());
+    colordecimation::adapter::EmptyOutput(input, output);
     this->Cached->ByBlock.clear();
     this->Cached->InputTriangles = this->Cached->OutputTriangles = 0;
     this->NumberOfCollapses = this->NumberOfRecordedCollapses = 0;

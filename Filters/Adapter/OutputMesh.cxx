@@ -9,6 +9,8 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDataObject.h"
+#include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -24,6 +26,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstring>
+#include <exception>
 #include <memory>
 #include <string>
 #include <vector>
@@ -208,7 +211,7 @@ void CopyDescription(vtkAbstractArray* in, vtkAbstractArray* out)
 /**
  * The tuples source[0], source[1], ... of `in`, bit for bit, in a new array of its class, with
  * its description (CopyDescription). Contiguous arrays are copied on `threads` threads (into
- * huge pages when large); the others by VTK.
+ * huge pages when large); the others by VTK, tuple by tuple when not data arrays.
  */
 vtkSmartPointer<vtkAbstractArray> Gather(vtkAbstractArray* in, const vtkIdType* source,
                                          vtkIdType count, int threads)
@@ -227,7 +230,17 @@ vtkSmartPointer<vtkAbstractArray> Gather(vtkAbstractArray* in, const vtkIdType* 
   {
     out->SetNumberOfTuples(count);
     RequireValues(out, count * in->GetNumberOfComponents());
-    in->GetTuples(IdList(source, count), out);
+    if (data)
+    {
+      in->GetTuples(IdList(source, count), out);
+      return out;
+    }
+    // Strings, variants: tuple by tuple (vtkStringArray::GetTuples takes tuple ids for value
+    // ids, which scrambles arrays of more than one component).
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      out->SetTuple(i, source[i], in);
+    }
     return out;
   }
   const char* from = static_cast<const char*>(data->GetVoidPointer(0));
@@ -577,6 +590,19 @@ vtkIdType WriteOutput(vtkObject* self, vtkPolyData* input, const InputMesh& mesh
   const DecimatedFaces faces{ decimator, options.ConsistentOrientation };
   return Write(self, input, mesh, faces, &decimator, options.OriginalIdsName, options.Threads,
                output);
+}
+
+void EmptyOutput(vtkDataObject* input, vtkDataObject* output) noexcept
+{
+  output->Initialize();
+  try
+  {
+    output->GetFieldData()->PassData(input->GetFieldData());
+  }
+  catch (const std::exception&)
+  {
+    // Still short of memory: the field data are left out too.
+  }
 }
 
 vtkIdType WriteLevel(vtkObject* self, vtkPolyData* input, const InputMesh& mesh,

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <vector>
 
+class vtkDataObject;
 class vtkObject;
 class vtkPolyData;
 
@@ -53,6 +54,13 @@ vtkIdType WriteOutput(vtkObject* self, vtkPolyData* input, const InputMesh& mesh
 vtkIdType WriteLevel(vtkObject* self, vtkPolyData* input, const InputMesh& mesh,
                      const std::vector<int32_t>& where, const char* originalIdsName, int threads,
                      vtkPolyData* output);
+
+/**
+ * The empty output after a failed run: `output` initialized, with the field data of `input`
+ * when there is memory for them (never throws: it runs in the filters' handlers of
+ * std::bad_alloc).
+ */
+void EmptyOutput(vtkDataObject* input, vtkDataObject* output) noexcept;
 
 } // namespace adapter
 } // namespace colordecimation

@@ -107,8 +107,8 @@ void AddField(vtkFieldData* field, const char* name, vtkIdType value)
 {
   vtkNew<vtkIdTypeArray> array;
   array->SetName(name);
-  array->InsertNextValue(value);
-  RequireValues(array, 1); // VTK's failed allocation leaves the array empty
+  AllocateValues(array.Get(), 1); // not by VTK: ParaView's aborts when it cannot allocate
+  array->SetValue(0, value);
   field->AddArray(array);
 }
 
@@ -116,8 +116,7 @@ void AddField(vtkFieldData* field, const char* name, const std::string& value)
 {
   vtkNew<vtkStringArray> array;
   array->SetName(name);
-  array->InsertNextValue(value);
-  RequireValues(array, 1); // VTK's failed allocation leaves the array empty
+  array->InsertNextValue(value); // std::bad_alloc when it cannot allocate
   field->AddArray(array);
 }
 

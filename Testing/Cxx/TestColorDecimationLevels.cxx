@@ -108,8 +108,8 @@ bool SameArrays(vtkDataSetAttributes* a, vtkDataSetAttributes* b, std::string& w
   }
   for (int i = 0; i < a->GetNumberOfArrays(); ++i)
   {
-    vtkDataArray* x = a->GetArray(i);
-    vtkDataArray* y = x && x->GetName() ? b->GetArray(x->GetName()) : nullptr;
+    vtkAbstractArray* x = a->GetAbstractArray(i);
+    vtkAbstractArray* y = x && x->GetName() ? b->GetAbstractArray(x->GetName()) : nullptr;
     if (!x || !y || x->GetDataType() != y->GetDataType() ||
         x->GetNumberOfTuples() != y->GetNumberOfTuples())
     {
@@ -118,7 +118,7 @@ bool SameArrays(vtkDataSetAttributes* a, vtkDataSetAttributes* b, std::string& w
     }
     for (vtkIdType t = 0; t < x->GetNumberOfTuples(); ++t)
     {
-      if (!SameTupleBytes(x, t, y, t))
+      if (!SameTuple(x, t, y, t))
       {
         why = std::string("array ") + x->GetName() + " differs at tuple " + std::to_string(t);
         return false;

@@ -41,6 +41,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <set>
 #include <sstream>
 #include <string>
@@ -1564,6 +1565,13 @@ bool IsEmptyWithError(vtkPolyData* output, const EventRecorder& events)
   return events.Errors > 0 && output->GetNumberOfPoints() == 0 && output->GetNumberOfCells() == 0;
 }
 
+/// Whether `output`'s "CellId" cell array (OutOfMemory's) has a value for each cell.
+bool CarriesCellIds(vtkPolyData* output)
+{
+  vtkDataArray* ids = output->GetCellData()->GetArray("CellId");
+  return ids && ids->GetNumberOfTuples() == output->GetNumberOfCells();
+}
+
 /// Outcomes of a run under a limit (OutOfMemory), as a child process's exit status.
 enum MemoryOutcome
 {
@@ -1595,7 +1603,7 @@ int DecimateUnderLimit(vtkPolyData* mesh, size_t budget, size_t levelBudget)
   {
     return DecimationFailed;
   }
-  if (events.Errors > 0 || output->GetNumberOfPolys() != 2048 ||
+  if (events.Errors > 0 || output->GetNumberOfPolys() != 2048 || !CarriesCellIds(output) ||
       !CheckInvariants(mesh, filter, output, false).empty())
   {
     std::cout << "  " << budget << " bytes: " << output->GetNumberOfPolys() << " triangles, "
@@ -1619,7 +1627,9 @@ int DecimateUnderLimit(vtkPolyData* mesh, size_t budget, size_t levelBudget)
   {
     return lod->GetProgressText() ? Wrong : LevelFailed; // no "Reading..." left behind
   }
-  return lodEvents.Errors == 0 && level->GetNumberOfPolys() == 10240 ? 0 : Wrong;
+  return lodEvents.Errors == 0 && level->GetNumberOfPolys() == 10240 && CarriesCellIds(level)
+    ? 0
+    : Wrong;
 }
 
 CD_TEST_CASE(OutOfMemory)
@@ -1633,6 +1643,11 @@ CD_TEST_CASE(OutOfMemory)
   std::cout << "  skipped: the sanitizer's runtime reserves the address space\n";
 #else
   auto mesh = colordecimation::meshes::Icosphere(5, Pattern::FineDetail);
+  vtkNew<vtkIdTypeArray> cellIds; // cell data to carry: the output's cell data path too
+  cellIds->SetName("CellId");
+  cellIds->SetNumberOfValues(mesh->GetNumberOfCells());
+  std::iota(cellIds->GetPointer(0), cellIds->GetPointer(0) + mesh->GetNumberOfCells(), 0);
+  mesh->GetCellData()->AddArray(cellIds);
   int counts[4] = {};
   // The decimation's budget from 64 KiB up, the level's unlimited; then the other way round,
   // from 1 KiB.

@@ -40,6 +40,18 @@ void Cross(const double a[3], const double b[3], double c[3])
   c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+bool SameKind(vtkAbstractArray* a, vtkAbstractArray* b)
+{
+  return a && b && a->GetDataType() == b->GetDataType() &&
+    a->GetNumberOfComponents() == b->GetNumberOfComponents();
+}
+
+const char* NameOf(vtkAbstractArray* a)
+{
+  return (a && a->GetName()) ? a->GetName() : "(null)";
+}
+} // namespace
+
 /// Same tuple of two abstract arrays of the same kind (data arrays bit-exactly).
 bool SameTuple(vtkAbstractArray* a, vtkIdType i, vtkAbstractArray* b, vtkIdType j)
 {
@@ -65,18 +77,6 @@ bool SameTuple(vtkAbstractArray* a, vtkIdType i, vtkAbstractArray* b, vtkIdType 
   }
   return false;
 }
-
-bool SameKind(vtkAbstractArray* a, vtkAbstractArray* b)
-{
-  return a && b && a->GetDataType() == b->GetDataType() &&
-    a->GetNumberOfComponents() == b->GetNumberOfComponents();
-}
-
-const char* NameOf(vtkAbstractArray* a)
-{
-  return (a && a->GetName()) ? a->GetName() : "(null)";
-}
-} // namespace
 
 //------------------------------------------------------------------------------
 bool SameTupleBytes(vtkDataArray* a, vtkIdType i, vtkDataArray* b, vtkIdType j)
@@ -849,13 +849,20 @@ void Decorate(vtkPolyData* mesh)
   vtkNew<vtkFloatArray> material;
   material->SetName("Material");
   material->SetNumberOfValues(cells);
+  vtkNew<vtkStringArray> tags; // two strings a cell: copied by tuple, not by value
+  tags->SetName("Tags");
+  tags->SetNumberOfComponents(2);
+  tags->SetNumberOfTuples(cells);
   for (vtkIdType c = 0; c < cells; ++c)
   {
     source->SetValue(c, c);
     material->SetValue(c, static_cast<float>(100.0 * std::sin(0.37 * static_cast<double>(c))));
+    tags->SetValue(2 * c, "cell " + std::to_string(c));
+    tags->SetValue(2 * c + 1, "group " + std::to_string(c % 7));
   }
   mesh->GetCellData()->AddArray(source);
   mesh->GetCellData()->AddArray(material);
+  mesh->GetCellData()->AddArray(tags);
 
   vtkNew<vtkDoubleArray> provenance;
   provenance->SetName("Provenance");

@@ -242,6 +242,8 @@ void UpNormal(const double c[3], double n[3]);
 
 /// Tuple `i` of `a` has the bytes of tuple `j` of `b` (arrays of one type and width).
 bool SameTupleBytes(vtkDataArray* a, vtkIdType i, vtkDataArray* b, vtkIdType j);
+/// Same tuple of two arrays of the same kind: data arrays bit for bit, strings by value.
+bool SameTuple(vtkAbstractArray* a, vtkIdType i, vtkAbstractArray* b, vtkIdType j);
 
 /**
  * Output point coordinates and every input point-data array copied bit-exactly from the
@@ -302,8 +304,8 @@ void CheckDecimations(vtkPolyData* mesh, const Expectation& expected, const std:
 /**
  * Add arrays that the filter must carry through: point data "Normals" (float 3, set as
  * normals), "TCoords" (float 2), "Label" (int), "Bits" (double, with NaN, -0 and denormals);
- * cell data "SourceId" (vtkIdType, the cell id) and "Material" (float); field data
- * "Provenance" (double) and "Note" (string).
+ * cell data "SourceId" (vtkIdType, the cell id), "Material" (float) and "Tags" (two strings); field
+ * data "Provenance" (double) and "Note" (string).
  */
 void Decorate(vtkPolyData* mesh);
 
