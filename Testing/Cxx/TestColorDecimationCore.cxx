@@ -1936,10 +1936,10 @@ CD_TEST_CASE(NewNeighborChoices)
   std::vector<double> points;
   std::vector<float> colors;
   std::vector<int32_t> triangles;
-  const DecimatorInput sphere = JitteredSphere(120, points, colors, triangles);
+  const DecimatorInput sphere = JitteredSphere(260, points, colors, triangles);
   // Flat grids: of one colour (costs tie), tilted (the same, rounded differently), and with a
   // linear colour ramp (every cost 0 in exact arithmetic).
-  const PlainMesh grid = ToPlain(meshes::FlatGrid(60, 60, meshes::Pattern::Constant));
+  const PlainMesh grid = ToPlain(meshes::FlatGrid(150, 150, meshes::Pattern::Constant));
   const std::vector<float> grey(grid.Points.size(), 0.5f);
   PlainMesh tilted = grid;
   std::vector<float> ramp(grid.Points.size());
@@ -1970,6 +1970,7 @@ CD_TEST_CASE(NewNeighborChoices)
       options.Schedule = CollapseSchedule::Batched;
       options.BoundaryWeight = weighted ? 50 : 0;
       options.EdgeLengthWeight = weighted ? 1e-4 : 0;
+      options.BlockShift = 8; // blocks of 256 vertices: several threads even on the grids
       options.VerifyNewNeighbors = true;
       const int64_t target = input.NumberOfTriangles / 10;
       const OneAndThree runs(options, input, target);
@@ -1979,6 +1980,8 @@ CD_TEST_CASE(NewNeighborChoices)
                 << (weighted ? "on" : "off") << ": " << a.Collapses << " collapses, "
                 << a.NewNeighborChoices << " choices by a new neighbour\n";
       CD_CHECK(a.OutputTriangles <= target && a.NewNeighborChoices > a.Collapses / 4);
+      CD_CHECK_MSG(b.Threads > 1 && b.CollapseThreads > 1,
+                   b.Threads << " threads costing, " << b.CollapseThreads << " collapsing");
       CD_CHECK_MSG(a.NewNeighborMismatches == 0 && b.NewNeighborMismatches == 0,
                    a.NewNeighborMismatches << " and " << b.NewNeighborMismatches << " mismatches");
       CD_CHECK(a.NewNeighborChoices == b.NewNeighborChoices && a.Collapses == b.Collapses);
