@@ -301,7 +301,7 @@ void WritePoints(vtkPolyData* input, const Decimator* decimator, const UsedPoint
       out->SetNumberOfTuples(0);
     }
     in->GetTuples(IdList(used.Source.data(), used.Points), out);
-    CopyDescription(in, outPoints->GetData());
+    CopyDescription(in, out);
   }
   if (decimator && decimator->HasMovedVertices())
   {
@@ -559,7 +559,7 @@ vtkIdType Write(vtkObject* self, vtkPolyData* input, const InputMesh& mesh, cons
   WritePoints(input, decimator, used, threads, output);
   // Each output triangle's input cell, when there is cell data to copy.
   const bool cellData = inCD->GetNumberOfArrays() > 0;
-  LargeVector<vtkIdType> sourceCells(cellData ? static_cast<size_t>(used.Triangles) : 0);
+  Buffer<vtkIdType> sourceCells(cellData ? static_cast<size_t>(used.Triangles) : 0); // unwritten
   WriteTriangles(faces, mesh.Soup, used, cellData ? sourceCells.data() : nullptr, output);
   vtkPointData* outPD = output->GetPointData();
   GatherArrays(inPD, used.Source.data(), used.Points, threads, true, outPD);
