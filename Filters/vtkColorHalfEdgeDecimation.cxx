@@ -53,6 +53,7 @@ bool CheckProperties(vtkColorHalfEdgeDecimation* self)
                      { "ColorWeight", self->GetColorWeight() },
                      { "BoundaryWeight", self->GetBoundaryWeight() },
                      { "EdgeLengthWeight", self->GetEdgeLengthWeight() },
+                     { "KeptVertexErrorWeight", self->GetKeptVertexErrorWeight() },
                      { "PieceWeight", self->GetPieceWeight() },
                      { "MaximumError", self->GetMaximumError() } };
   for (const auto& property : properties)
@@ -287,6 +288,7 @@ colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, 
   options.ColorWeight = self->GetColorWeight();
   options.BoundaryWeight = self->GetBoundaryWeight();
   options.EdgeLengthWeight = self->GetEdgeLengthWeight();
+  options.KeptVertexErrorWeight = self->GetKeptVertexErrorWeight();
   options.PieceWeight = self->GetPieceWeight();
   options.PreserveBoundary = self->GetPreserveBoundary() != 0;
   options.MaximumNormalAngle = self->GetMaximumNormalAngle();
@@ -366,6 +368,7 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   , ColorWeight(1.0)
   , BoundaryWeight(50.0)
   , EdgeLengthWeight(0.0001)
+  , KeptVertexErrorWeight(0.0)
   , PieceWeight(10.0)
   , TargetReduction(0.9)
   , TargetNumberOfTriangles(0)
@@ -406,6 +409,7 @@ void vtkColorHalfEdgeDecimation::SetPaperDefaults()
   this->SetCollapseSchedule(Greedy);
   this->SetBoundaryWeight(0.0);
   this->SetEdgeLengthWeight(0.0);
+  this->SetKeptVertexErrorWeight(1.0);
   this->SetPieceWeight(0.0);
   this->SetGeometryWeight(1.0);
   this->SetColorSpace(RGB);
@@ -659,6 +663,7 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ColorWeight: " << this->ColorWeight << "\n";
   os << indent << "BoundaryWeight: " << this->BoundaryWeight << "\n";
   os << indent << "EdgeLengthWeight: " << this->EdgeLengthWeight << "\n";
+  os << indent << "KeptVertexErrorWeight: " << this->KeptVertexErrorWeight << "\n";
   os << indent << "PieceWeight: " << this->PieceWeight << "\n";
   os << indent << "TargetReduction: " << this->TargetReduction << "\n";
   os << indent << "TargetNumberOfTriangles: " << this->TargetNumberOfTriangles << "\n";

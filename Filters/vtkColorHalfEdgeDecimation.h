@@ -229,12 +229,27 @@ public:
    * Set/Get the weight of the edge-length term (HalfEdgeColor, Geometry, AttributeQuadric):
    * each triangle adds to its corners' quadrics EdgeLengthWeight times its area times the
    * squared distance from the corner. On flat parts, where the planes cost nothing, the
-   * shortest collapses then go first and a vertex that absorbed others costs more to collapse
-   * into, so flat parts are decimated evenly instead of into fans of needles. Default 0.0001;
+   * shortest collapses then go first and a vertex that absorbed others costs more to collapse,
+   * so flat parts are decimated evenly instead of into fans of needles. Default 0.0001;
    * 0: none, the paper's metric.
    */
   vtkSetClampMacro(EdgeLengthWeight, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(EdgeLengthWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get, for the AttributeQuadric metric, the weight in the cost of a collapse v0 -> v1 of
+   * the error the kept vertex v1 holds already (what the collapses into it so far added). 0,
+   * the default: the cost is the error the collapse adds, Q(v0)(x1), as in meshoptimizer, so
+   * a vertex that absorbed a flat region can go on absorbing it, and the triangles saved go to
+   * colour and shape detail. 1: Garland and Heckbert's total error (Q(v0) + Q(v1))(x1), which
+   * spreads the collapses more evenly: better in colour on the smoothly coloured busts of the
+   * project's study, worse in geometry there and in both on the RGB-D kitchen scans
+   * (docs/RESULTS.md). In [0, 1]; SetPaperDefaults sets 1.
+   */
+  vtkSetClampMacro(KeptVertexErrorWeight, double, 0.0, 1.0);
+  vtkGetMacro(KeptVertexErrorWeight, double);
   ///@}
 
   ///@{
@@ -553,6 +568,7 @@ protected:
   double ColorWeight;
   double BoundaryWeight;
   double EdgeLengthWeight;
+  double KeptVertexErrorWeight;
   double PieceWeight;
   double TargetReduction;
   vtkIdType TargetNumberOfTriangles;

@@ -275,6 +275,13 @@ void AddMetricOptions(CLI::App& app, Options& options)
                   "weight of the edge-length term that decimates flat parts evenly\n"
                   "(0: none; default " +
                     Number(d->GetEdgeLengthWeight()) + ")");
+  AddFilterNumber(app, options, "--kept-vertex-error-weight", 0, 1, &F::SetKeptVertexErrorWeight,
+                  "--kept-vertex-error-weight must be a number from 0 to 1",
+                  "attribute-quadric: weight of the error the kept vertex holds\n"
+                  "already in a collapse's cost, 0 to 1 (1: the total error;\n"
+                  "default " +
+                    Number(d->GetKeptVertexErrorWeight()) + ")")
+    ->type_name("W");
   AddFilterWeight(app, options, "--piece-weight", &F::SetPieceWeight,
                   "weight of the cost of removing a small connected piece whole during\n"
                   "the run (attribute-quadric metric; 0: never; default " +
@@ -888,6 +895,7 @@ Json Settings(vtkColorHalfEdgeDecimation* filter)
   Json settings;
   settings["boundary_weight"] = filter->GetBoundaryWeight();
   settings["edge_length_weight"] = filter->GetEdgeLengthWeight();
+  settings["kept_vertex_error_weight"] = filter->GetKeptVertexErrorWeight();
   settings["piece_weight"] = filter->GetPieceWeight();
   settings["geometry_weight"] = filter->GetGeometryWeight();
   settings["color_weight"] = filter->GetColorWeight();

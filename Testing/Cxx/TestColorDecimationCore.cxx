@@ -1929,7 +1929,8 @@ CD_TEST_CASE(ThreadsSameResult)
  * costs go to the lowest id, wherever the walk around the vertex starts), the same tilted, and
  * a flat grid whose colour is linear in the position (every cost 0 in exact arithmetic: what
  * rounding leaves of them must not fall when a vertex's quadric grows), at the defaults'
- * weights and with none (no edge length nor boundary term to outweigh the rounding).
+ * weights (KeptVertexErrorWeight 0 among them) and with none (no edge length nor boundary term
+ * to outweigh the rounding; KeptVertexErrorWeight 1, where the kept vertex's error counts).
  */
 CD_TEST_CASE(NewNeighborChoices)
 {
@@ -1970,6 +1971,7 @@ CD_TEST_CASE(NewNeighborChoices)
       options.Schedule = CollapseSchedule::Batched;
       options.BoundaryWeight = weighted ? 50 : 0;
       options.EdgeLengthWeight = weighted ? 1e-4 : 0;
+      options.KeptVertexErrorWeight = weighted ? 0 : 1; // the filter's default, the total error
       options.BlockShift = 8; // blocks of 256 vertices: several threads even on the grids
       options.VerifyNewNeighbors = true;
       const int64_t target = input.NumberOfTriangles / 10;

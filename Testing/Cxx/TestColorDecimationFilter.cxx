@@ -890,6 +890,7 @@ CD_TEST_CASE(PrintSelf)
   filter->SetCollapseScheduleToBatched();
   filter->SetNumberOfThreads(3);
   filter->SetEdgeLengthWeight(0.125);
+  filter->SetKeptVertexErrorWeight(0.375);
   filter->SetBoundaryWeight(4.5);
   std::ostringstream os;
   filter->Print(os);
@@ -898,7 +899,8 @@ CD_TEST_CASE(PrintSelf)
        { "ErrorMetric: Geometry", "TargetReduction: 0.25", "PreserveBoundary: On",
          "MaximumNormalAngle: 33.5", "GeometryWeight: 7.25", "GenerateOriginalPointIds: Off",
          "OriginalPointIdsArrayName: SourcePoint", "CollapseSchedule: Batched",
-         "NumberOfThreads: 3", "EdgeLengthWeight: 0.125", "BoundaryWeight: 4.5",
+         "NumberOfThreads: 3", "EdgeLengthWeight: 0.125", "KeptVertexErrorWeight: 0.375",
+         "BoundaryWeight: 4.5",
          "ActualReduction: ", "NumberOfCollapses: ", "StateMemory: ", "NumberOfThreadsUsed: " })
   {
     CD_CHECK_MSG(text.find(expected) != std::string::npos, "PrintSelf lacks '" << expected << "'");
@@ -1023,6 +1025,7 @@ CD_TEST_CASE(PaperDefaults)
   f->SetCollapseScheduleToBatched();
   f->SetBoundaryWeight(10);
   f->SetEdgeLengthWeight(0.5);
+  f->SetKeptVertexErrorWeight(0.25);
   f->SetGeometryWeight(3);
   f->SetColorSpaceToCIELab();
   f->SetColorWeight(4);
@@ -1036,6 +1039,7 @@ CD_TEST_CASE(PaperDefaults)
   CD_CHECK(f->GetErrorMetric() == vtkColorHalfEdgeDecimation::HalfEdgeColor);
   CD_CHECK(f->GetCollapseSchedule() == vtkColorHalfEdgeDecimation::Greedy);
   CD_CHECK(f->GetBoundaryWeight() == 0.0 && f->GetEdgeLengthWeight() == 0.0);
+  CD_CHECK(f->GetKeptVertexErrorWeight() == 1.0);
   CD_CHECK(f->GetGeometryWeight() == 1.0 && f->GetColorWeight() == 1.0);
   CD_CHECK(f->GetColorSpace() == vtkColorHalfEdgeDecimation::RGB);
   CD_CHECK(!f->GetOptimalPlacement() && !f->GetPreserveBoundary());
@@ -1076,6 +1080,7 @@ CD_TEST_CASE(Properties)
   CD_CHECK(f->GetColorWeight() == defaults::ColorWeight);
   CD_CHECK(f->GetBoundaryWeight() == defaults::BoundaryWeight);
   CD_CHECK(f->GetEdgeLengthWeight() == defaults::EdgeLengthWeight);
+  CD_CHECK(f->GetKeptVertexErrorWeight() == defaults::KeptVertexErrorWeight);
   CD_CHECK(f->GetGenerateOriginalPointIds());
   CD_CHECK(std::string(f->GetOriginalPointIdsArrayName()) == "vtkOriginalPointIds");
   CD_CHECK(f->GetCollapseSchedule() == vtkColorHalfEdgeDecimation::Batched);

@@ -1444,6 +1444,8 @@ CD_TEST_CASE(NaNProperties)
         [nan](vtkColorHalfEdgeDecimation* f) { f->SetMaximumNormalAngle(nan); } },
       { "GeometryWeight", [nan](vtkColorHalfEdgeDecimation* f) { f->SetGeometryWeight(nan); } },
       { "PieceWeight", [nan](vtkColorHalfEdgeDecimation* f) { f->SetPieceWeight(nan); } },
+      { "KeptVertexErrorWeight",
+        [nan](vtkColorHalfEdgeDecimation* f) { f->SetKeptVertexErrorWeight(nan); } },
       { "ColorWeight",
         [nan](vtkColorHalfEdgeDecimation* f)
         {

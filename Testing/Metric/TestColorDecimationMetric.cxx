@@ -939,6 +939,54 @@ CD_TEST_CASE(AttributeQuadricPieceCost)
   CD_CHECK_NEAR(metric.States[0].C, 16.0, 1e-5);
 }
 
+CD_TEST_CASE(AttributeQuadricKeptVertexError)
+{
+  // The ramp triangle with BoundaryWeight 7 and EdgeLengthWeight 2, as above. Corner 1's
+  // quadric at corner 0: the hypotenuse's plane (squared length 2, distance^2 1/2), 7, plus
+  // 2 * 0.5 * |x0 - x1|^2 = 1: 8; corner 2's the same by symmetry. After 1 -> 0, corner 0 holds
+  // the error 8 (its constant), and the cost of 2 -> 0 is Q2(x0) + k * 8 for
+  // KeptVertexErrorWeight k: 8 (the error the collapse adds), 12, 16 (the total error).
+  RampTriangle t;
+  Buffer<HotVertex> hot;
+  hot.resize(3);
+  for (int v = 0; v < 3; ++v)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      hot[v].P[k] = t.Positions[3 * v + k];
+      hot[v].C[k] = t.Colors[3 * v + k];
+    }
+    hot[v].QC = hot[v].Spare = 0; // the quadrics' constants, 0 at the start
+  }
+  for (const double k : { 0.0, 0.5, 1.0 })
+  {
+    DecimatorOptions options;
+    options.BoundaryWeight = 7.0;
+    options.EdgeLengthWeight = 2.0;
+    options.KeptVertexErrorWeight = k;
+    AttributeQuadricMetric metric(options);
+    metric.Initialize(t.Mesh, Frame(), hot, true, 1);
+    Ring ring;
+    AttributeQuadricMetric::Scratch scratch;
+    const auto costTowards0 = [&](int32_t v0)
+    {
+      const double p[3] = { hot[0].P[0], hot[0].P[1], hot[0].P[2] };
+      const double c[3] = { hot[0].C[0], hot[0].C[1], hot[0].C[2] };
+      ring.Clear();
+      ring.Add(0, p, c, true, hot[0].QC);
+      ring.Pad();
+      double costs[4];
+      metric.CostRing(v0, true, ring, costs, scratch);
+      return costs[0];
+    };
+    CD_CHECK_NEAR(costTowards0(1), 8.0, 1e-5); // corner 0 holds nothing yet: any k
+    metric.Merge(1, 0, false, {});
+    CD_CHECK_NEAR(hot[0].QC, 8.0, 1e-5);
+    CD_CHECK_NEAR(costTowards0(2), 8.0 + k * 8.0, 1e-5);
+    hot[0].QC = 0; // as initialised, for the next weight
+  }
+}
+
 /// The area of the output's triangles whose corners' red channel differs (on both sides of a
 /// colour step), as a fraction of the output's area.
 double StraddlingArea(vtkPolyData* mesh)
@@ -1505,6 +1553,11 @@ CD_TEST_CASE(Properties)
   CD_CHECK(f->GetEdgeLengthWeight() == defaults::EdgeLengthWeight);
   f->SetEdgeLengthWeight(-1);
   CD_CHECK(f->GetEdgeLengthWeight() == 0.0);
+  CD_CHECK(f->GetKeptVertexErrorWeight() == defaults::KeptVertexErrorWeight);
+  f->SetKeptVertexErrorWeight(-1);
+  CD_CHECK(f->GetKeptVertexErrorWeight() == 0.0);
+  f->SetKeptVertexErrorWeight(3);
+  CD_CHECK(f->GetKeptVertexErrorWeight() == 1.0);
   f->SetBoundaryWeight(-1);
   CD_CHECK(f->GetBoundaryWeight() == 0.0);
   f->SetBoundaryWeight(250);

@@ -44,6 +44,7 @@ namespace defaults
 constexpr double ColorWeight = 1.0;
 constexpr double BoundaryWeight = 50.0;
 constexpr double EdgeLengthWeight = 0.0001;
+constexpr double KeptVertexErrorWeight = 0.0;
 } // namespace defaults
 
 //------------------------------------------------------------------------------

@@ -83,6 +83,7 @@ struct Settings
   double ColorWeight = std::numeric_limits<double>::quiet_NaN();
   double BoundaryWeight = std::numeric_limits<double>::quiet_NaN();
   double EdgeLengthWeight = std::numeric_limits<double>::quiet_NaN();
+  double KeptVertexErrorWeight = std::numeric_limits<double>::quiet_NaN();
   std::string Schedule;
   bool Placement = false;
   bool CieLab = false;
@@ -224,6 +225,10 @@ void AddMethodOptions(CLI::App& app, Settings& settings)
             BadValueComplaint("--edge-length-weight"),
             "EdgeLengthWeight (vtkColorHalfEdgeDecimation)")
     ->type_name("W");
+  AddNumber(app, "--kept-vertex-error-weight", settings.KeptVertexErrorWeight, 0.0, 1.0,
+            BadValueComplaint("--kept-vertex-error-weight"),
+            "KeptVertexErrorWeight (vtkColorHalfEdgeDecimation)")
+    ->type_name("W");
   AddValue(
     app, "--schedule",
     [&settings](const std::string& schedule)
@@ -282,6 +287,7 @@ void ApplyGivenSettings(vtkColorHalfEdgeDecimation* filter, const Settings& sett
     { settings.ColorWeight, &vtkColorHalfEdgeDecimation::SetColorWeight },
     { settings.BoundaryWeight, &vtkColorHalfEdgeDecimation::SetBoundaryWeight },
     { settings.EdgeLengthWeight, &vtkColorHalfEdgeDecimation::SetEdgeLengthWeight },
+    { settings.KeptVertexErrorWeight, &vtkColorHalfEdgeDecimation::SetKeptVertexErrorWeight },
   };
   for (const auto& weight : weights)
   {

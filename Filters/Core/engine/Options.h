@@ -49,6 +49,10 @@ struct DecimatorOptions
   ColorSpace Space = ColorSpace::RGB;
   /// ColorQuadric: the colour coordinates of R^6 are multiplied by this weight.
   double ColorWeight = 1.0;
+  /// AttributeQuadric: the weight, in the cost of v0 -> v1, of the error v1 holds already (its
+  /// quadric's constant; section 12). 1: the total error (Q0 + Q1)(x1); 0: the error the
+  /// collapse adds, Q0(x1), as meshoptimizer's.
+  double KeptVertexErrorWeight = 1.0;
   /// ColorQuadric: full collapses, the survivor moved to the minimiser of Q0 + Q1 (section 9).
   bool OptimalPlacement = false;
   /// Weight of Garland-Heckbert's boundary constraint planes (0: none, the paper's metric;

@@ -202,6 +202,7 @@ void InitializeAttributeQuadrics(const HalfEdgeMesh& mesh, const float* position
 
 AttributeQuadricMetric::AttributeQuadricMetric(const DecimatorOptions& options)
   : ColorWeight(std::max(options.ColorWeight, 0.0))
+  , KeptErrorWeight(std::max(options.KeptVertexErrorWeight, 0.0))
   , Weights{ std::max(options.BoundaryWeight, 0.0), std::max(options.EdgeLengthWeight, 0.0),
              std::max(options.GeometryWeight, 0.0) }
 {
@@ -230,11 +231,12 @@ void AttributeQuadricMetric::Offset(int32_t v0, int32_t v1, double dx[3], double
 
 namespace
 {
-/// (Q0 + Q(j))(xj) for every member j of the ring, padded members included: one loop without
-/// branches over the coefficients held in locals, so that it is vectorised.
+/// Q0(xj) + keptWeight * c(j) for every member j of the ring, padded members included (Q(j) is
+/// centred at xj: its constant c(j) is all it gives there): one loop without branches over the
+/// coefficients held in locals, so that it is vectorised.
 COLORDECIMATION_VECTOR_CLONES
 void CostAttributeRing(const AttributeQuadric& q0, const HotVertex& hot0, double w,
-                       const Ring& ring, double* costs)
+                       double keptWeight, const Ring& ring, double* costs)
 {
   const double a00 = q0.A00, a01 = q0.A01, a02 = q0.A02, a11 = q0.A11, a12 = q0.A12, a22 = q0.A22,
                c = q0.C, qw = q0.W;
@@ -262,7 +264,7 @@ void CostAttributeRing(const AttributeQuadric& q0, const HotVertex& hot0, double
     const double color = sr * (qw * sr - 2.0 * (g00 * dx + g01 * dy + g02 * dz + d0)) +
       sg * (qw * sg - 2.0 * (g10 * dx + g11 * dy + g12 * dz + d1)) +
       sb * (qw * sb - 2.0 * (g20 * dx + g21 * dy + g22 * dz + d2));
-    const double q = geometric + color + c + qc[j];
+    const double q = geometric + color + c + keptWeight * qc[j];
     costs[j] = q > 0.0 ? q : 0.0; // std::max(0.0, q), NaN to 0 too
   }
 }
@@ -270,8 +272,8 @@ void CostAttributeRing(const AttributeQuadric& q0, const HotVertex& hot0, double
 
 void AttributeQuadricMetric::CostRing(int32_t v0, bool, Ring& ring, double* costs, Scratch&) const
 {
-  // (Q(v0) + Q(j))(xj): Q(j) is centred at xj, so it contributes its constant.
-  CostAttributeRing(this->States[v0], (*this->Hot)[v0], this->ColorWeight, ring, costs);
+  CostAttributeRing(this->States[v0], (*this->Hot)[v0], this->ColorWeight, this->KeptErrorWeight,
+                    ring, costs);
 }
 
 double AttributeQuadricMetric::PieceCost(const int32_t* vertices, size_t count, int32_t& best,

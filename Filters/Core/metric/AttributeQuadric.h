@@ -104,7 +104,9 @@ VTKCOLORDECIMATION_EXPORT void InitializeAttributeQuadrics(
   int colorStride, double colorScale, const AttributeQuadricWeights& weights,
   Buffer<AttributeQuadric>& quadrics, int threads = 1);
 
-/// The attribute quadric as the engine's policy: half-edge collapses at cost (Q0 + Q1)(x1).
+/// The attribute quadric as the engine's policy: half-edge collapses at cost Q0(x1) + k c1, the
+/// error the collapse adds at v0 plus k times the error v1 holds already (its constant c1;
+/// k = KeptVertexErrorWeight: 1 gives (Q0 + Q1)(x1), Garland and Heckbert's total error).
 class VTKCOLORDECIMATION_EXPORT AttributeQuadricMetric
 {
 public:
@@ -159,6 +161,7 @@ private:
 
   Buffer<HotVertex>* Hot = nullptr;
   double ColorWeight;
+  double KeptErrorWeight;
   AttributeQuadricWeights Weights;
   bool UseColor = false;
 };
