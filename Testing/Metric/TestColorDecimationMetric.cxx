@@ -818,6 +818,22 @@ struct RampTriangle
   std::vector<float> Colors = { 0, 0, 0.5f, 1, 0, 0.5f, 0, 1, 0.5f };
   HalfEdgeMesh Mesh;
   RampTriangle() { this->Mesh.Build(3, this->Triangles.data(), 1); }
+  /// The engine's vertex records of the corners (the quadrics' constants 0, as at the start).
+  Buffer<HotVertex> Hot() const
+  {
+    Buffer<HotVertex> hot;
+    hot.resize(3);
+    for (int v = 0; v < 3; ++v)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        hot[v].P[k] = this->Positions[3 * v + k];
+        hot[v].C[k] = this->Colors[3 * v + k];
+      }
+      hot[v].QC = hot[v].Spare = 0;
+    }
+    return hot;
+  }
 };
 
 CD_TEST_CASE(AttributeQuadricTriangle)
@@ -910,16 +926,7 @@ CD_TEST_CASE(AttributeQuadricPieceCost)
   // corner 0, 0.5 * 3 = 1.5 at the others. The least is 17, at corner 0; the mean squared
   // distance moved 1 / 1.5.
   RampTriangle t;
-  Buffer<HotVertex> hot;
-  hot.resize(3);
-  for (int v = 0; v < 3; ++v)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      hot[v].P[k] = t.Positions[3 * v + k];
-      hot[v].C[k] = t.Colors[3 * v + k];
-    }
-  }
+  Buffer<HotVertex> hot = t.Hot();
   DecimatorOptions options;
   options.BoundaryWeight = 7.0;
   options.EdgeLengthWeight = 2.0;
@@ -947,17 +954,7 @@ CD_TEST_CASE(AttributeQuadricKeptVertexError)
   // the error 8 (its constant), and the cost of 2 -> 0 is Q2(x0) + k * 8 for
   // KeptVertexErrorWeight k: 8 (the error the collapse adds), 12, 16 (the total error).
   RampTriangle t;
-  Buffer<HotVertex> hot;
-  hot.resize(3);
-  for (int v = 0; v < 3; ++v)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      hot[v].P[k] = t.Positions[3 * v + k];
-      hot[v].C[k] = t.Colors[3 * v + k];
-    }
-    hot[v].QC = hot[v].Spare = 0; // the quadrics' constants, 0 at the start
-  }
+  Buffer<HotVertex> hot = t.Hot();
   for (const double k : { 0.0, 0.5, 1.0 })
   {
     DecimatorOptions options;
