@@ -244,9 +244,9 @@ public:
    * the default: the cost is the error the collapse adds, Q(v0)(x1), as in meshoptimizer, so
    * a vertex that absorbed a flat region can go on absorbing it, and the triangles saved go to
    * colour and shape detail. 1: Garland and Heckbert's total error (Q(v0) + Q(v1))(x1), which
-   * spreads the collapses more evenly: better in colour on the smoothly coloured busts of the
-   * project's study, worse in geometry there and in both on the RGB-D kitchen scans
-   * (docs/RESULTS.md). In [0, 1]; SetPaperDefaults sets 1.
+   * spreads the collapses more evenly: better in colour on most of the smoothly coloured busts
+   * of the project's study, worse in colour on the RGB-D kitchen scans (docs/RESULTS.md).
+   * In [0, 1]; SetPaperDefaults sets 1.
    */
   vtkSetClampMacro(KeptVertexErrorWeight, double, 0.0, 1.0);
   vtkGetMacro(KeptVertexErrorWeight, double);

@@ -5,8 +5,8 @@ simplified column of each, so that several simplifiers are seen on the same view
     pvpython scripts/compose-snapshots.py OUT.png SNAPSHOT.png [SNAPSHOT.png ...]
 
 Each SNAPSHOT is a `color-decimate-eval ORIGINAL SIMPLIFIED --snapshot` picture of the same
-ORIGINAL, view and size (2 x 2 panels: original | simplified, with a 3-pixel divider). Runs
-under pvpython or any Python with VTK's modules.
+ORIGINAL, view and --snapshot-size (2 x 2 panels of that size: original | simplified, apart by
+a divider of max(2, size / 128) pixels). Runs under pvpython or any Python with VTK's modules.
 """
 import sys
 
@@ -14,7 +14,13 @@ from vtkmodules.vtkFiltersCore import vtkImageAppend
 from vtkmodules.vtkImagingCore import vtkExtractVOI
 from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
 
-DIVIDER = 3
+
+def panel_size(width):
+    """The panel size of a snapshot `width` pixels wide (color-decimate-eval's layout)."""
+    for size in range(width // 2, 0, -1):
+        if 2 * size + max(2, size // 128) == width:
+            return size
+    sys.exit(f"compose-snapshots: {width} pixels is not the width of a snapshot")
 
 
 def column(path, right):
@@ -23,7 +29,9 @@ def column(path, right):
     reader.SetFileName(path)
     reader.Update()
     width, height, _ = reader.GetOutput().GetDimensions()
-    panel = (width - DIVIDER) // 2
+    if width != height:
+        sys.exit(f"compose-snapshots: {path} is not a snapshot (not square)")
+    panel = panel_size(width)
     first, last = (panel, width - 1) if right else (0, panel - 1)
     voi = vtkExtractVOI()
     voi.SetInputConnection(reader.GetOutputPort())
@@ -36,10 +44,14 @@ def main(argv):
     if len(argv) < 3:
         sys.exit(__doc__)
     out, snapshots = argv[1], argv[2:]
+    columns = [column(snapshots[0], False)] + [column(s, True) for s in snapshots]
+    heights = {c.GetOutput().GetDimensions()[1] for c in columns}
+    if len(heights) != 1:
+        sys.exit("compose-snapshots: the snapshots are not of one size")
     append = vtkImageAppend()
     append.SetAppendAxis(0)
     append.PreserveExtentsOff()
-    for voi in [column(snapshots[0], False)] + [column(s, True) for s in snapshots]:
+    for voi in columns:
         append.AddInputConnection(voi.GetOutputPort())
     writer = vtkPNGWriter()
     writer.SetFileName(out)

@@ -1016,6 +1016,32 @@ CD_TEST_CASE(FlatSheetDefaults)
   }
 }
 
+CD_TEST_CASE(KeptVertexErrorWeightReachesTheCore)
+{
+  // The property is passed on: 0 (the default) and 1 (the total error) choose other collapses
+  // on a smoothly coloured sphere; an explicit 0 is the default, and the weight is read by the
+  // AttributeQuadric metric alone (the paper's metric gives the same triangles at 0 and 1).
+  auto mesh = meshes::Icosphere(4, Pattern::SmoothGradient);
+  const auto triangles = [&mesh](int metric, double weight)
+  {
+    vtkNew<vtkColorHalfEdgeDecimation> f;
+    f->SetInputData(mesh);
+    f->SetErrorMetric(metric);
+    if (weight >= 0)
+    {
+      f->SetKeptVertexErrorWeight(weight);
+    }
+    f->Update();
+    return GetOriginalTriangles(f->GetOutput());
+  };
+  const int quadric = vtkColorHalfEdgeDecimation::AttributeQuadric;
+  const auto byDefault = triangles(quadric, -1);
+  CD_CHECK(triangles(quadric, 0.0) == byDefault);
+  CD_CHECK(triangles(quadric, 1.0) != byDefault);
+  const int paper = vtkColorHalfEdgeDecimation::HalfEdgeColor;
+  CD_CHECK(triangles(paper, 0.0) == triangles(paper, 1.0));
+}
+
 CD_TEST_CASE(PaperDefaults)
 {
   // SetPaperDefaults sets every property of the method to the paper's and leaves the target,

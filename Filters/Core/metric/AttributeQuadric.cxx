@@ -264,7 +264,9 @@ void CostAttributeRing(const AttributeQuadric& q0, const HotVertex& hot0, double
     const double color = sr * (qw * sr - 2.0 * (g00 * dx + g01 * dy + g02 * dz + d0)) +
       sg * (qw * sg - 2.0 * (g10 * dx + g11 * dy + g12 * dz + d1)) +
       sb * (qw * sb - 2.0 * (g20 * dx + g21 * dy + g22 * dz + d2));
-    const double q = geometric + color + c + keptWeight * qc[j];
+    // An overflowed constant (inf) counts as the largest double: 0 * inf would be NaN.
+    const double kept = keptWeight * std::min(qc[j], std::numeric_limits<double>::max());
+    const double q = geometric + color + c + kept;
     costs[j] = q > 0.0 ? q : 0.0; // std::max(0.0, q), NaN to 0 too
   }
 }
