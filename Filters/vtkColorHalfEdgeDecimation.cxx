@@ -287,6 +287,7 @@ colordecimation::DecimatorOptions MakeOptions(vtkColorHalfEdgeDecimation* self, 
   options.KeepVertexState = false; // the output needs the mesh and the moved vertices only
   options.ColorWeight = self->GetColorWeight();
   options.BoundaryWeight = self->GetBoundaryWeight();
+  options.SceneRelativeWeights = self->GetSceneRelativeWeights() != 0;
   options.EdgeLengthWeight = self->GetEdgeLengthWeight();
   options.KeptVertexErrorWeight = self->GetKeptVertexErrorWeight();
   options.PieceWeight = self->GetPieceWeight();
@@ -366,7 +367,8 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   , ColorSpace(RGB)
   , OptimalPlacement(false)
   , ColorWeight(1.0)
-  , BoundaryWeight(50.0)
+  , BoundaryWeight(20.0)
+  , SceneRelativeWeights(true)
   , EdgeLengthWeight(0.0001)
   , KeptVertexErrorWeight(0.0)
   , PieceWeight(10.0)
@@ -408,6 +410,7 @@ void vtkColorHalfEdgeDecimation::SetPaperDefaults()
   this->SetErrorMetric(HalfEdgeColor);
   this->SetCollapseSchedule(Greedy);
   this->SetBoundaryWeight(0.0);
+  this->SetSceneRelativeWeights(false);
   this->SetEdgeLengthWeight(0.0);
   this->SetKeptVertexErrorWeight(1.0);
   this->SetPieceWeight(0.0);
@@ -662,6 +665,7 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OptimalPlacement: " << (this->OptimalPlacement ? "On" : "Off") << "\n";
   os << indent << "ColorWeight: " << this->ColorWeight << "\n";
   os << indent << "BoundaryWeight: " << this->BoundaryWeight << "\n";
+  os << indent << "SceneRelativeWeights: " << (this->SceneRelativeWeights ? "On" : "Off") << "\n";
   os << indent << "EdgeLengthWeight: " << this->EdgeLengthWeight << "\n";
   os << indent << "KeptVertexErrorWeight: " << this->KeptVertexErrorWeight << "\n";
   os << indent << "PieceWeight: " << this->PieceWeight << "\n";

@@ -148,7 +148,8 @@ public:
    * Set every property of the method to the paper's (Kim, Choi and Lee): the HalfEdgeColor
    * metric, the Greedy schedule, no boundary planes (BoundaryWeight 0), no edge-length term,
    * GeometryWeight 1, RGB colours, MaximumNormalAngle 90, PreserveBoundary off (and
-   * ColorWeight 1, OptimalPlacement off, which the paper's metric does not read; PieceWeight 0).
+   * ColorWeight 1, SceneRelativeWeights off, OptimalPlacement off, which the paper's metric does
+   * not read; PieceWeight 0).
    * TargetReduction, TargetNumberOfTriangles, MaximumError, PruneComponents,
    * ConsistentOrientation, PreserveSeams, NumberOfThreads, the lock array, the original point
    * ids and GenerateCollapseRecord are left as they are.
@@ -204,7 +205,8 @@ public:
   /**
    * AttributeQuadric and ColorQuadric: the weight of colour against geometry (colours are
    * multiplied by it). Default 1. AttributeQuadric: a colour difference of 1 / ColorWeight
-   * weighs as much as a distance of one mean edge length. ColorQuadric: a unit of colour
+   * weighs as much as a distance of one mean edge length (scaled up on finely sampled meshes:
+   * SceneRelativeWeights). ColorQuadric: a unit of colour
    * weighs as much as the whole bounding box's largest side, as in Garland and Heckbert's
    * frame.
    */
@@ -218,10 +220,27 @@ public:
    * to the quadric of its two vertices the plane through the edge perpendicular to its
    * triangle, weighted by BoundaryWeight times the edge's squared length in the metric's
    * frame (Garland and Heckbert's boundary preservation), so that collapses which pull a
-   * boundary inwards or cut its corners cost more. Default 50; 0: none, the paper's metric.
+   * boundary inwards or cut its corners cost more. Default 20 (scaled up on finely sampled
+   * meshes: SceneRelativeWeights); 0: none, the paper's metric.
    */
   vtkSetClampMacro(BoundaryWeight, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(BoundaryWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Set/Get whether ColorWeight and BoundaryWeight are relative to the scene (AttributeQuadric
+   * metric only). On, the default: they apply as given to a mesh whose bounding-box diagonal is
+   * at most 300 mean edge lengths, and a mesh D mean edge lengths across, D above 300, is
+   * decimated with ColorWeight times s and BoundaryWeight times s^2, s = D / 300. A scene
+   * scanned twice as finely, decimated by the same fraction, then trades colour, open
+   * boundaries and shape as it does on the screen, where a colour error or a shifted border
+   * covers the same share of a render whatever the sampling (docs/ALGORITHM.md section 12).
+   * Off: the weights apply as given, in mean edge lengths. SetPaperDefaults turns it off.
+   */
+  vtkSetMacro(SceneRelativeWeights, vtkTypeBool);
+  vtkGetMacro(SceneRelativeWeights, vtkTypeBool);
+  vtkBooleanMacro(SceneRelativeWeights, vtkTypeBool);
   ///@}
 
   ///@{
@@ -567,6 +586,7 @@ protected:
   vtkTypeBool OptimalPlacement;
   double ColorWeight;
   double BoundaryWeight;
+  vtkTypeBool SceneRelativeWeights;
   double EdgeLengthWeight;
   double KeptVertexErrorWeight;
   double PieceWeight;

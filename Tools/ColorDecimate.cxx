@@ -271,6 +271,11 @@ void AddMetricOptions(CLI::App& app, Options& options)
                   "weight of the boundary planes that keep open boundaries in place\n"
                   "(0: none; default " +
                     Number(d->GetBoundaryWeight()) + ")");
+  AddFilterFlag(app, options, "--no-scene-relative-weights", &F::SetSceneRelativeWeights, 0,
+                "attribute-quadric: apply --color-weight and --boundary-weight as\n"
+                "given; by default, on a mesh whose bounding-box diagonal is D > 300\n"
+                "mean edge lengths, they are scaled by s = D / 300 (colour) and s^2\n"
+                "(boundary)");
   AddFilterWeight(app, options, "--edge-length-weight", &F::SetEdgeLengthWeight,
                   "weight of the edge-length term that decimates flat parts evenly\n"
                   "(0: none; default " +
@@ -894,6 +899,7 @@ Json Settings(vtkColorHalfEdgeDecimation* filter)
 {
   Json settings;
   settings["boundary_weight"] = filter->GetBoundaryWeight();
+  settings["scene_relative_weights"] = filter->GetSceneRelativeWeights() != 0;
   settings["edge_length_weight"] = filter->GetEdgeLengthWeight();
   settings["kept_vertex_error_weight"] = filter->GetKeptVertexErrorWeight();
   settings["piece_weight"] = filter->GetPieceWeight();

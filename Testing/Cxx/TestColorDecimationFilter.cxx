@@ -892,6 +892,7 @@ CD_TEST_CASE(PrintSelf)
   filter->SetEdgeLengthWeight(0.125);
   filter->SetKeptVertexErrorWeight(0.375);
   filter->SetBoundaryWeight(4.5);
+  filter->SceneRelativeWeightsOff();
   std::ostringstream os;
   filter->Print(os);
   const std::string text = os.str();
@@ -900,7 +901,7 @@ CD_TEST_CASE(PrintSelf)
          "MaximumNormalAngle: 33.5", "GeometryWeight: 7.25", "GenerateOriginalPointIds: Off",
          "OriginalPointIdsArrayName: SourcePoint", "CollapseSchedule: Batched",
          "NumberOfThreads: 3", "EdgeLengthWeight: 0.125", "KeptVertexErrorWeight: 0.375",
-         "BoundaryWeight: 4.5",
+         "BoundaryWeight: 4.5", "SceneRelativeWeights: Off",
          "ActualReduction: ", "NumberOfCollapses: ", "StateMemory: ", "NumberOfThreadsUsed: " })
   {
     CD_CHECK_MSG(text.find(expected) != std::string::npos, "PrintSelf lacks '" << expected << "'");
@@ -1055,6 +1056,7 @@ CD_TEST_CASE(PaperDefaults)
   f->SetGeometryWeight(3);
   f->SetColorSpaceToCIELab();
   f->SetColorWeight(4);
+  f->SceneRelativeWeightsOn();
   f->OptimalPlacementOn();
   f->SetMaximumNormalAngle(30);
   f->PreserveBoundaryOn();
@@ -1067,6 +1069,7 @@ CD_TEST_CASE(PaperDefaults)
   CD_CHECK(f->GetBoundaryWeight() == 0.0 && f->GetEdgeLengthWeight() == 0.0);
   CD_CHECK(f->GetKeptVertexErrorWeight() == 1.0);
   CD_CHECK(f->GetGeometryWeight() == 1.0 && f->GetColorWeight() == 1.0);
+  CD_CHECK(!f->GetSceneRelativeWeights());
   CD_CHECK(f->GetColorSpace() == vtkColorHalfEdgeDecimation::RGB);
   CD_CHECK(!f->GetOptimalPlacement() && !f->GetPreserveBoundary());
   CD_CHECK(f->GetMaximumNormalAngle() == 90.0);
@@ -1105,6 +1108,7 @@ CD_TEST_CASE(Properties)
   CD_CHECK(f->GetGeometryWeight() == 1.0);
   CD_CHECK(f->GetColorWeight() == defaults::ColorWeight);
   CD_CHECK(f->GetBoundaryWeight() == defaults::BoundaryWeight);
+  CD_CHECK(!f->GetSceneRelativeWeights() == !defaults::SceneRelativeWeights);
   CD_CHECK(f->GetEdgeLengthWeight() == defaults::EdgeLengthWeight);
   CD_CHECK(f->GetKeptVertexErrorWeight() == defaults::KeptVertexErrorWeight);
   CD_CHECK(f->GetGenerateOriginalPointIds());

@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <iostream>
 #include <map>
 #include <random>
@@ -981,6 +982,77 @@ CD_TEST_CASE(AttributeQuadricKeptVertexError)
     CD_CHECK_NEAR(hot[0].QC, 8.0, 1e-5);
     CD_CHECK_NEAR(costTowards0(2), 8.0 + k * 8.0, 1e-5);
     hot[0].QC = 0; // as initialised, for the next weight
+  }
+}
+
+CD_TEST_CASE(AttributeQuadricSceneRelativeWeights)
+{
+  // The scale s = max(D / 300, 1) of a frame whose bounding-box diagonal is D mean edge
+  // lengths: a box of 360 x 480 (diagonal 600) at mean edge length 1 gives 2, at 2 (Scale 0.5)
+  // 1, at 4 (D = 150) 1 as well; a box without extent gives 1.
+  Frame frame;
+  frame.Hi[0] = 360;
+  frame.Hi[1] = 480;
+  CD_CHECK(SceneWeightScale(frame) == 2.0);
+  Frame halved = frame;
+  halved.Scale = 0.5;
+  CD_CHECK(SceneWeightScale(halved) == 1.0);
+  halved.Scale = 0.25;
+  CD_CHECK(SceneWeightScale(halved) == 1.0);
+  CD_CHECK(SceneWeightScale(Frame()) == 1.0);
+
+  // With scene-relative weights and s = 2, the ramp triangle's quadrics are those of ColorWeight
+  // 2 c and BoundaryWeight 4 b given as they are, bit for bit; and the cost of 1 -> 0 is the
+  // hypotenuse's plane (squared length 2, distance^2 1/2) times 7 * 4, plus the edge-length
+  // term 2 * 0.5 * |x0 - x1|^2 = 1 (the colours lie on their field): 29.
+  RampTriangle t;
+  Buffer<HotVertex> hot = t.Hot();
+  DecimatorOptions relative;
+  relative.ColorWeight = 3.0;
+  relative.BoundaryWeight = 7.0;
+  relative.EdgeLengthWeight = 2.0;
+  relative.SceneRelativeWeights = true;
+  DecimatorOptions given = relative;
+  given.SceneRelativeWeights = false;
+  given.ColorWeight = 6.0;
+  given.BoundaryWeight = 28.0;
+  AttributeQuadricMetric scaled(relative), plain(given);
+  scaled.Initialize(t.Mesh, frame, hot, true, 1);
+  plain.Initialize(t.Mesh, frame, hot, true, 1);
+  for (int v = 0; v < 3; ++v)
+  {
+    CD_CHECK(std::memcmp(&scaled.States[v], &plain.States[v], sizeof(AttributeQuadric)) == 0);
+  }
+  const double p[3] = { hot[0].P[0], hot[0].P[1], hot[0].P[2] };
+  const double c[3] = { hot[0].C[0], hot[0].C[1], hot[0].C[2] };
+  Ring ring;
+  ring.Add(0, p, c, true, hot[0].QC);
+  ring.Pad();
+  AttributeQuadricMetric::Scratch scratch;
+  double costs[4];
+  scaled.CostRing(1, true, ring, costs, scratch);
+  CD_CHECK_NEAR(costs[0], 29.0, 1e-5);
+  // Off, the weights apply as given: 7 + 1.
+  relative.SceneRelativeWeights = false;
+  AttributeQuadricMetric unscaled(relative);
+  unscaled.Initialize(t.Mesh, frame, hot, true, 1);
+  unscaled.CostRing(1, true, ring, costs, scratch);
+  CD_CHECK_NEAR(costs[0], 8.0, 1e-5);
+
+  // On a mesh at most 300 mean edge lengths across (here 150: Scale 1/4) the weights apply as
+  // given: the quadrics of ColorWeight 3 and BoundaryWeight 7.
+  Frame coarse = frame;
+  coarse.Scale = 0.25;
+  relative.SceneRelativeWeights = true;
+  given.ColorWeight = 3.0;
+  given.BoundaryWeight = 7.0;
+  AttributeQuadricMetric coarseScaled(relative), coarsePlain(given);
+  coarseScaled.Initialize(t.Mesh, coarse, hot, true, 1);
+  coarsePlain.Initialize(t.Mesh, coarse, hot, true, 1);
+  for (int v = 0; v < 3; ++v)
+  {
+    CD_CHECK(
+      std::memcmp(&coarseScaled.States[v], &coarsePlain.States[v], sizeof(AttributeQuadric)) == 0);
   }
 }
 

@@ -112,6 +112,18 @@ Frame MeasureFrame(const HalfEdgeMesh& mesh, const double* points, const int32_t
   return frame;
 }
 
+double SceneWeightScale(const Frame& frame)
+{
+  double squared = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double side = (frame.Hi[k] - frame.Lo[k]) * frame.Scale;
+    squared += side * side;
+  }
+  const double scale = std::sqrt(squared) / SceneReferenceDiagonal;
+  return std::isfinite(scale) ? std::max(scale, 1.0) : 1.0;
+}
+
 void FillHotRecords(const Frame& frame, int32_t numVertices, const double* points,
                     const float* colors, const int32_t* source, ColorSpace space, int threads,
                     Buffer<HotVertex>& hot)

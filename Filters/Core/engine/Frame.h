@@ -44,6 +44,19 @@ struct Frame
   }
 };
 
+/// The bounding-box diagonal, in mean edge lengths, up to which scene-relative weights apply
+/// as given (DecimatorOptions::SceneRelativeWeights; section 12).
+constexpr double SceneReferenceDiagonal = 300.0;
+
+/**
+ * The factor s = max(D / SceneReferenceDiagonal, 1) of the frame's bounding-box diagonal D in
+ * mean edge lengths (1 for a mesh without extent or length). Scene-relative weights multiply
+ * ColorWeight by s and BoundaryWeight by s^2, so that a scene sampled more finely, decimated by
+ * the same fraction, weighs colour, open boundaries and shape as it does on the screen
+ * (section 12).
+ */
+double SceneWeightScale(const Frame& frame);
+
 /**
  * The frame of the mesh: its points' bounding box and the mean length of its edges, on
  * `threads` threads. The edges are summed in fixed chunks, and the chunks in order, so the

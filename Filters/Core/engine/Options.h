@@ -58,6 +58,11 @@ struct DecimatorOptions
   /// Weight of Garland-Heckbert's boundary constraint planes (0: none, the paper's metric;
   /// section 3).
   double BoundaryWeight = 0.0;
+  /// AttributeQuadric: ColorWeight and BoundaryWeight apply as given to a mesh whose
+  /// bounding-box diagonal is at most SceneReferenceDiagonal mean edge lengths; on a more finely
+  /// sampled one ColorWeight is scaled by s = SceneWeightScale (engine/Frame.h) and
+  /// BoundaryWeight by s^2 (section 12).
+  bool SceneRelativeWeights = false;
   /// Weight of the edge-length term of the quadrics (0: none, the paper's metric; section 3):
   /// flat parts are decimated evenly instead of into fans. Not ColorQuadric.
   double EdgeLengthWeight = 0.0;

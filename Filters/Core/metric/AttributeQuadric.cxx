@@ -201,16 +201,22 @@ void InitializeAttributeQuadrics(const HalfEdgeMesh& mesh, const float* position
 }
 
 AttributeQuadricMetric::AttributeQuadricMetric(const DecimatorOptions& options)
-  : ColorWeight(std::max(options.ColorWeight, 0.0))
+  : GivenColorWeight(std::max(options.ColorWeight, 0.0))
+  , GivenBoundaryWeight(std::max(options.BoundaryWeight, 0.0))
+  , SceneRelative(options.SceneRelativeWeights)
+  , ColorWeight(GivenColorWeight)
   , KeptErrorWeight(std::max(options.KeptVertexErrorWeight, 0.0))
   , Weights{ std::max(options.BoundaryWeight, 0.0), std::max(options.EdgeLengthWeight, 0.0),
              std::max(options.GeometryWeight, 0.0) }
 {
 }
 
-void AttributeQuadricMetric::Initialize(const HalfEdgeMesh& mesh, const Frame&,
+void AttributeQuadricMetric::Initialize(const HalfEdgeMesh& mesh, const Frame& frame,
                                         Buffer<HotVertex>& hot, bool useColor, int threads)
 {
+  const double scale = this->SceneRelative ? SceneWeightScale(frame) : 1.0;
+  this->ColorWeight = this->GivenColorWeight * scale;
+  this->Weights.Boundary = this->GivenBoundaryWeight * scale * scale;
   this->Hot = &hot;
   this->UseColor = useColor;
   InitializeAttributeQuadrics(mesh, hot.empty() ? nullptr : hot[0].P, HotStride,

@@ -160,7 +160,10 @@ private:
   void Offset(int32_t v0, int32_t v1, double dx[3], double ds[3]) const;
 
   Buffer<HotVertex>* Hot = nullptr;
-  double ColorWeight;
+  double GivenColorWeight;    ///< as the options give them,
+  double GivenBoundaryWeight; ///< before SceneRelativeWeights scales them
+  bool SceneRelative;
+  double ColorWeight; ///< what the run uses
   double KeptErrorWeight;
   AttributeQuadricWeights Weights;
   bool UseColor = false;
