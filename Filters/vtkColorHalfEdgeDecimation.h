@@ -220,7 +220,7 @@ public:
    * to the quadric of its two vertices the plane through the edge perpendicular to its
    * triangle, weighted by BoundaryWeight times the edge's squared length in the metric's
    * frame (Garland and Heckbert's boundary preservation), so that collapses which pull a
-   * boundary inwards or cut its corners cost more. Default 20 (scaled up on finely sampled
+   * boundary inwards or cut its corners cost more. Default 16 (scaled up on finely sampled
    * meshes: SceneRelativeWeights); 0: none, the paper's metric.
    */
   vtkSetClampMacro(BoundaryWeight, double, 0.0, VTK_DOUBLE_MAX);
@@ -231,8 +231,8 @@ public:
   /**
    * Set/Get whether ColorWeight and BoundaryWeight are relative to the scene (AttributeQuadric
    * metric only). On, the default: they apply as given to a mesh whose bounding-box diagonal is
-   * at most 300 mean edge lengths, and a mesh D mean edge lengths across, D above 300, is
-   * decimated with ColorWeight times s and BoundaryWeight times s^2, s = D / 300. A scene
+   * at most 270 mean edge lengths, and a mesh D mean edge lengths across, D above 270, is
+   * decimated with ColorWeight times s and BoundaryWeight times s^2, s = D / 270. A scene
    * scanned twice as finely, decimated by the same fraction, then trades colour, open
    * boundaries and shape as it does on the screen, where a colour error or a shifted border
    * covers the same share of a render whatever the sampling (docs/ALGORITHM.md section 12).

@@ -273,8 +273,8 @@ void AddMetricOptions(CLI::App& app, Options& options)
                     Number(d->GetBoundaryWeight()) + ")");
   AddFilterFlag(app, options, "--no-scene-relative-weights", &F::SetSceneRelativeWeights, 0,
                 "attribute-quadric: apply --color-weight and --boundary-weight as\n"
-                "given; by default, on a mesh whose bounding-box diagonal is D > 300\n"
-                "mean edge lengths, they are scaled by s = D / 300 (colour) and s^2\n"
+                "given; by default, on a mesh whose bounding-box diagonal is D > 270\n"
+                "mean edge lengths, they are scaled by s = D / 270 (colour) and s^2\n"
                 "(boundary)");
   AddFilterWeight(app, options, "--edge-length-weight", &F::SetEdgeLengthWeight,
                   "weight of the edge-length term that decimates flat parts evenly\n"

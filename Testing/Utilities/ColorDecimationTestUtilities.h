@@ -42,7 +42,7 @@ namespace testing
 namespace defaults
 {
 constexpr double ColorWeight = 1.0;
-constexpr double BoundaryWeight = 20.0;
+constexpr double BoundaryWeight = 16.0;
 constexpr bool SceneRelativeWeights = true;
 constexpr double EdgeLengthWeight = 0.0001;
 constexpr double KeptVertexErrorWeight = 0.0;

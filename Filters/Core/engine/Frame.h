@@ -46,7 +46,7 @@ struct Frame
 
 /// The bounding-box diagonal, in mean edge lengths, up to which scene-relative weights apply
 /// as given (DecimatorOptions::SceneRelativeWeights; section 12).
-constexpr double SceneReferenceDiagonal = 300.0;
+constexpr double SceneReferenceDiagonal = 270.0;
 
 /**
  * The factor s = max(D / SceneReferenceDiagonal, 1) of the frame's bounding-box diagonal D in
