@@ -220,8 +220,9 @@ public:
    * to the quadric of its two vertices the plane through the edge perpendicular to its
    * triangle, weighted by BoundaryWeight times the edge's squared length in the metric's
    * frame (Garland and Heckbert's boundary preservation), so that collapses which pull a
-   * boundary inwards or cut its corners cost more. Default 16 (scaled up on finely sampled
-   * meshes: SceneRelativeWeights); 0: none, the paper's metric.
+   * boundary inwards or cut its corners cost more. Default 16; the AttributeQuadric metric
+   * scales it up on finely sampled meshes (SceneRelativeWeights), the others use it as given.
+   * 0: none, the paper's metric.
    */
   vtkSetClampMacro(BoundaryWeight, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(BoundaryWeight, double);

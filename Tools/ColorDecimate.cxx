@@ -243,7 +243,7 @@ void AddMetricOptions(CLI::App& app, Options& options)
   app.add_flag("--paper", options.Paper,
                "the paper's method: every setting below at the paper's value\n"
                "(half-edge-color, greedy, no boundary or edge-length term, no piece\n"
-               "removal, RGB);\n"
+               "removal, RGB, weights not scene-relative);\n"
                "the options given with it still apply on top");
   AddFilterChoice(app, options, "--metric",
                   { { "half-edge-color", F::HalfEdgeColor },

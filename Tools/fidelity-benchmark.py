@@ -45,7 +45,7 @@ ROOT = os.path.dirname(HERE)
 
 # id, label, runner arguments, colour-only (left out when the colour does not vary)
 METHODS = [
-    ("def", "defaults (AttributeQuadric, BoundaryWeight 50, Batched)", ["--method", "defaults"],
+    ("def", "defaults (AttributeQuadric, scene-relative weights, Batched)", ["--method", "defaults"],
      False),
     ("hec", "HalfEdgeColor (the paper's method)", ["--method", "paper"], False),
     # The setting an earlier study recommended for the paper's cost.

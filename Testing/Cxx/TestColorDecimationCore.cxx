@@ -1969,7 +1969,8 @@ CD_TEST_CASE(NewNeighborChoices)
       DecimatorOptions options;
       options.Metric = ErrorMetric::AttributeQuadric;
       options.Schedule = CollapseSchedule::Batched;
-      options.BoundaryWeight = weighted ? 50 : 0;
+      options.BoundaryWeight = weighted ? 16 : 0;
+      options.SceneRelativeWeights = weighted; // these meshes are below 270 mean edge lengths
       options.EdgeLengthWeight = weighted ? 1e-4 : 0;
       options.KeptVertexErrorWeight = weighted ? 0 : 1; // the filter's default, the total error
       options.BlockShift = 8; // blocks of 256 vertices: several threads even on the grids

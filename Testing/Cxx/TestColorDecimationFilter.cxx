@@ -1043,6 +1043,28 @@ CD_TEST_CASE(KeptVertexErrorWeightReachesTheCore)
   CD_CHECK(triangles(paper, 0.0) == triangles(paper, 1.0));
 }
 
+CD_TEST_CASE(SceneRelativeWeightsReachesTheCore)
+{
+  // The property is passed on: an open sheet of 300 x 300 quads (its diagonal some 370 mean
+  // edge lengths, above 270) is decimated with other weights when it is on (the default) than
+  // when off; a sheet of 80 x 60 (some 90 mean edge lengths) with the weights as given either
+  // way, the same triangles.
+  const auto triangles = [](vtkPolyData* mesh, bool relative)
+  {
+    vtkNew<vtkColorHalfEdgeDecimation> f;
+    f->SetInputData(mesh);
+    f->SetSceneRelativeWeights(relative);
+    f->Update();
+    return GetOriginalTriangles(f->GetOutput());
+  };
+  auto fine = meshes::Grid(300, 300, Pattern::SharpRegions);
+  CD_CHECK(triangles(fine, true) != triangles(fine, false));
+  auto coarse = meshes::Grid(80, 60, Pattern::SharpRegions);
+  CD_CHECK(triangles(coarse, true) == triangles(coarse, false));
+  vtkNew<vtkColorHalfEdgeDecimation> f;
+  CD_CHECK(f->GetSceneRelativeWeights());
+}
+
 CD_TEST_CASE(PaperDefaults)
 {
   // SetPaperDefaults sets every property of the method to the paper's and leaves the target,

@@ -89,6 +89,7 @@ struct Settings
   bool CieLab = false;
   bool Attributes = false;
   bool PreserveBoundary = false;
+  bool AbsoluteWeights = false;
   bool Clean = false;
   std::array<double, 3> AttributeWeights = { { 1.0, 1.0, 1.0 } };
 };
@@ -240,6 +241,8 @@ void AddMethodOptions(CLI::App& app, Settings& settings)
     ->type_name("S");
   app.add_flag("--preserve-boundary", settings.PreserveBoundary,
                "PreserveBoundary (vtkColorHalfEdgeDecimation)");
+  app.add_flag("--no-scene-relative-weights", settings.AbsoluteWeights,
+               "SceneRelativeWeights off (vtkColorHalfEdgeDecimation)");
   app.add_flag("--attributes", settings.Attributes, "vtk-quadric: AttributeErrorMetric on");
   AddValue(
     app, "--attribute-weights",
@@ -313,6 +316,10 @@ void ApplyGivenSettings(vtkColorHalfEdgeDecimation* filter, const Settings& sett
   if (settings.PreserveBoundary)
   {
     filter->PreserveBoundaryOn();
+  }
+  if (settings.AbsoluteWeights)
+  {
+    filter->SceneRelativeWeightsOff();
   }
 }
 

@@ -8,6 +8,7 @@
 
 #include "metric/ColorSpace.h"
 #include "util/Buffer.h"
+#include "vtkColorDecimationModule.h" // for export macro
 
 #include <cstdint>
 
@@ -55,7 +56,7 @@ constexpr double SceneReferenceDiagonal = 270.0;
  * the same fraction, weighs colour, open boundaries and shape as it does on the screen
  * (section 12).
  */
-double SceneWeightScale(const Frame& frame);
+VTKCOLORDECIMATION_EXPORT double SceneWeightScale(const Frame& frame);
 
 /**
  * The frame of the mesh: its points' bounding box and the mean length of its edges, on
