@@ -390,6 +390,7 @@ vtkColorHalfEdgeDecimation::vtkColorHalfEdgeDecimation()
   , NumberOfCollapses(0)
   , StateMemory(0)
   , NumberOfThreadsUsed(0)
+  , SceneWeightScale(1.0)
   , Phases(new colordecimation::PhaseTimes)
 {
   this->SetOriginalPointIdsArrayName("vtkOriginalPointIds");
@@ -553,6 +554,7 @@ void vtkColorHalfEdgeDecimation::ResetStatistics()
   this->NumberOfCollapses = 0;
   this->StateMemory = 0;
   this->NumberOfThreadsUsed = 0;
+  this->SceneWeightScale = 1.0;
   this->Phases->Start();
 }
 
@@ -565,6 +567,7 @@ void vtkColorHalfEdgeDecimation::KeepStatistics(const colordecimation::Decimator
   this->StateMemory = static_cast<vtkIdType>(stats.StateBytes);
   this->NumberOfThreadsUsed =
     std::max({ stats.Threads, stats.CollapseThreads, stats.WideCollapseThreads });
+  this->SceneWeightScale = stats.SceneWeightScale;
   this->Phases->Append(stats.Phases);
 }
 
@@ -693,6 +696,7 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfCollapses: " << this->NumberOfCollapses << "\n";
   os << indent << "StateMemory: " << this->StateMemory << "\n";
   os << indent << "NumberOfThreadsUsed: " << this->NumberOfThreadsUsed << "\n";
+  os << indent << "SceneWeightScale: " << this->SceneWeightScale << "\n";
   os << indent << "Phases:";
   for (int i = 0; i < this->GetNumberOfPhases(); ++i)
   {

@@ -556,6 +556,16 @@ public:
   double GetPhaseSeconds(int index) const;
   ///@}
 
+  ///@{
+  /**
+   * The scale s the last run applied to ColorWeight (times s) and BoundaryWeight (times s^2)
+   * under SceneRelativeWeights: D / 270 for a mesh whose bounding-box diagonal is D > 270 mean
+   * edge lengths; 1 when the property is off, for metrics other than AttributeQuadric, and for
+   * D <= 270.
+   */
+  vtkGetMacro(SceneWeightScale, double);
+  ///@}
+
 protected:
   vtkColorHalfEdgeDecimation();
   ~vtkColorHalfEdgeDecimation() override;
@@ -609,6 +619,7 @@ protected:
   vtkIdType NumberOfCollapses;
   vtkIdType StateMemory;
   int NumberOfThreadsUsed;
+  double SceneWeightScale;
 
 private:
   std::unique_ptr<colordecimation::PhaseTimes> Phases;

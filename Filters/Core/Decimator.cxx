@@ -80,6 +80,10 @@ DecimatorStatistics Decimator::RunWith(const DecimatorInput& input, int64_t targ
   stats.TargetTriangles = std::max<int64_t>(targetTriangles, 0);
   stats.Phases.Start();
   engine->Start(input, stats);
+  if (this->Options.Metric == ErrorMetric::AttributeQuadric && this->Options.SceneRelativeWeights)
+  {
+    stats.SceneWeightScale = SceneWeightScale(engine->GetFrame());
+  }
   if (this->Options.RecordCollapses)
   {
     // Every collapse removes a triangle at least, a removed piece has a row for each of its

@@ -901,7 +901,7 @@ CD_TEST_CASE(PrintSelf)
          "MaximumNormalAngle: 33.5", "GeometryWeight: 7.25", "GenerateOriginalPointIds: Off",
          "OriginalPointIdsArrayName: SourcePoint", "CollapseSchedule: Batched",
          "NumberOfThreads: 3", "EdgeLengthWeight: 0.125", "KeptVertexErrorWeight: 0.375",
-         "BoundaryWeight: 4.5", "SceneRelativeWeights: Off",
+         "BoundaryWeight: 4.5", "SceneRelativeWeights: Off", "SceneWeightScale: 1",
          "ActualReduction: ", "NumberOfCollapses: ", "StateMemory: ", "NumberOfThreadsUsed: " })
   {
     CD_CHECK_MSG(text.find(expected) != std::string::npos, "PrintSelf lacks '" << expected << "'");
@@ -1047,22 +1047,28 @@ CD_TEST_CASE(SceneRelativeWeightsReachesTheCore)
 {
   // The property is passed on: an open sheet of 300 x 300 quads (its diagonal some 370 mean
   // edge lengths, above 270) is decimated with other weights when it is on (the default) than
-  // when off; a sheet of 80 x 60 (some 90 mean edge lengths) with the weights as given either
-  // way, the same triangles.
-  const auto triangles = [](vtkPolyData* mesh, bool relative)
+  // when off, and the scale is reported; a sheet of 80 x 60 (some 90 mean edge lengths) with
+  // the weights as given either way, the same triangles, scale 1.
+  double scale = 0;
+  const auto triangles = [&scale](vtkPolyData* mesh, bool relative)
   {
     vtkNew<vtkColorHalfEdgeDecimation> f;
     f->SetInputData(mesh);
     f->SetSceneRelativeWeights(relative);
     f->Update();
+    scale = f->GetSceneWeightScale();
     return GetOriginalTriangles(f->GetOutput());
   };
   auto fine = meshes::Grid(300, 300, Pattern::SharpRegions);
-  CD_CHECK(triangles(fine, true) != triangles(fine, false));
+  const auto relative = triangles(fine, true);
+  CD_CHECK_MSG(scale > 1.2 && scale < 1.6, "scale " << scale);
+  CD_CHECK(relative != triangles(fine, false));
+  CD_CHECK(scale == 1.0);
   auto coarse = meshes::Grid(80, 60, Pattern::SharpRegions);
   CD_CHECK(triangles(coarse, true) == triangles(coarse, false));
+  CD_CHECK(scale == 1.0);
   vtkNew<vtkColorHalfEdgeDecimation> f;
-  CD_CHECK(f->GetSceneRelativeWeights());
+  CD_CHECK(f->GetSceneRelativeWeights() && f->GetSceneWeightScale() == 1.0);
 }
 
 CD_TEST_CASE(PaperDefaults)

@@ -145,6 +145,8 @@ struct DecimatorStatistics
   int64_t NewNeighborChoices = 0;    ///< Batched: re-costings by one new neighbour's cost alone
   int64_t NewNeighborMismatches = 0; ///< of them, with VerifyNewNeighbors: should be 0
   double MeanEdgeLength = 0;         ///< of the input, in its own units (the frame's unit)
+  /// The scale s that SceneRelativeWeights applied to the weights (1: none; section 12).
+  double SceneWeightScale = 1;
   bool Aborted = false;
   /// With MaximumError: the largest geometric error of the collapses made (input units), and
   /// whether the run stopped at the bound.
