@@ -7,6 +7,8 @@
 #include "schedule/Batched.h"
 #include "schedule/Greedy.h"
 
+#include <type_traits>
+
 namespace colordecimation
 {
 namespace
@@ -80,9 +82,9 @@ DecimatorStatistics Decimator::RunWith(const DecimatorInput& input, int64_t targ
   stats.TargetTriangles = std::max<int64_t>(targetTriangles, 0);
   stats.Phases.Start();
   engine->Start(input, stats);
-  if (this->Options.Metric == ErrorMetric::AttributeQuadric && this->Options.SceneRelativeWeights)
+  if constexpr (std::is_same_v<Metric, AttributeQuadricMetric>)
   {
-    stats.SceneWeightScale = SceneWeightScale(engine->GetFrame());
+    stats.SceneWeightScale = engine->GetMetric().GetSceneWeightScale();
   }
   if (this->Options.RecordCollapses)
   {

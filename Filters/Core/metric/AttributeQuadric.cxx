@@ -214,9 +214,9 @@ AttributeQuadricMetric::AttributeQuadricMetric(const DecimatorOptions& options)
 void AttributeQuadricMetric::Initialize(const HalfEdgeMesh& mesh, const Frame& frame,
                                         Buffer<HotVertex>& hot, bool useColor, int threads)
 {
-  const double scale = this->SceneRelative ? SceneWeightScale(frame) : 1.0;
-  this->ColorWeight = this->GivenColorWeight * scale;
-  this->Weights.Boundary = this->GivenBoundaryWeight * scale * scale;
+  this->Scale = this->SceneRelative ? SceneWeightScale(frame) : 1.0;
+  this->ColorWeight = this->GivenColorWeight * this->Scale;
+  this->Weights.Boundary = this->GivenBoundaryWeight * this->Scale * this->Scale;
   this->Hot = &hot;
   this->UseColor = useColor;
   InitializeAttributeQuadrics(mesh, hot.empty() ? nullptr : hot[0].P, HotStride,

@@ -146,6 +146,8 @@ public:
   void Merge(int32_t v0, int32_t v1, bool, const Placement&);
 
   static constexpr size_t BytesPerVertex() { return sizeof(AttributeQuadric); }
+  /// The scale s that SceneRelativeWeights applied in Initialize (1: none).
+  double GetSceneWeightScale() const { return this->Scale; }
   void Release() { this->States = Buffer<AttributeQuadric>(); }
   template <typename Map>
   void Restore(const Map& restore)
@@ -163,6 +165,7 @@ private:
   double GivenColorWeight;    ///< as the options give them,
   double GivenBoundaryWeight; ///< before SceneRelativeWeights scales them
   bool SceneRelative;
+  double Scale = 1;   ///< what SceneRelativeWeights applied (engine/Frame.h)
   double ColorWeight; ///< what the run uses
   double KeptErrorWeight;
   AttributeQuadricWeights Weights;
