@@ -231,12 +231,13 @@ public:
   ///@{
   /**
    * Set/Get whether ColorWeight and BoundaryWeight are relative to the scene (AttributeQuadric
-   * metric only). On, the default: they apply as given to a mesh whose bounding-box diagonal is
-   * at most 270 mean edge lengths, and a mesh D mean edge lengths across, D above 270, is
-   * decimated with ColorWeight times s and BoundaryWeight times s^2, s = D / 270. A scene
-   * scanned twice as finely, decimated by the same fraction, then trades colour, open
-   * boundaries and shape as it does on the screen, where a colour error or a shifted border
-   * covers the same share of a render whatever the sampling (docs/ALGORITHM.md section 12).
+   * metric only). On, the default: they apply as given to a mesh whose bounding-box diagonal
+   * (of the points its triangles use) is at most 270 mean edge lengths, and a mesh D mean edge
+   * lengths across, D above 270, is decimated with ColorWeight times s and BoundaryWeight times
+   * s^2, s = D / 270. A scene scanned twice as finely, decimated by the same fraction, then
+   * trades colour, open boundaries and shape as it does on the screen, where a colour error or
+   * a shifted border covers the same share of a render whatever the sampling
+   * (docs/ALGORITHM.md section 12).
    * Off: the weights apply as given, in mean edge lengths. SetPaperDefaults turns it off.
    */
   vtkSetMacro(SceneRelativeWeights, vtkTypeBool);

@@ -1071,6 +1071,63 @@ CD_TEST_CASE(SceneRelativeWeightsReachesTheCore)
   CD_CHECK(f->GetSceneRelativeWeights() && f->GetSceneWeightScale() == 1.0);
 }
 
+namespace
+{
+/// A copy of mesh with one more point, used by no cell, at `offset` from its first point (its
+/// point arrays' values copied from the first point's).
+vtkSmartPointer<vtkPolyData> WithUnusedPoint(vtkPolyData* mesh, double offset)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(mesh);
+  double p[3];
+  copy->GetPoint(0, p);
+  copy->GetPoints()->InsertNextPoint(p[0] + offset, p[1] + offset, p[2] + offset);
+  vtkPointData* pd = copy->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    pd->GetAbstractArray(a)->InsertNextTuple(0, pd->GetAbstractArray(a));
+  }
+  return copy;
+}
+} // namespace
+
+CD_TEST_CASE(SceneScaleIgnoresUnusedPoints)
+{
+  // The scene is the surface a render shows: a point no cell uses, however far, changes
+  // neither the scale of the weights nor the frame. The 80 x 60 sheet (some 90 mean edge
+  // lengths) keeps scale 1, and the same triangles, with a point some 7,000 edge lengths away
+  // (with which the box of all points would give 24); the 300 x 300 sheet (over 65,536 points,
+  // renumbered in a spatial order that the far point changes: the sums of its edge lengths
+  // come in another order) its own scale (not 28) to the last bits, and as many triangles
+  // within one in a thousand.
+  for (const auto& size : { std::make_pair(80, 60), std::make_pair(300, 300) })
+  {
+    auto sheet = meshes::Grid(size.first, size.second, Pattern::SharpRegions);
+    auto far = WithUnusedPoint(sheet, 1e4 / size.first);
+    vtkNew<vtkColorHalfEdgeDecimation> plain, stray;
+    plain->SetInputData(sheet);
+    stray->SetInputData(far);
+    plain->Update();
+    stray->Update();
+    const double scale = plain->GetSceneWeightScale();
+    CD_CHECK_MSG(std::abs(stray->GetSceneWeightScale() - scale) <= 1e-12 * scale,
+                 stray->GetSceneWeightScale() << " against " << scale);
+    const auto kept = GetOriginalTriangles(plain->GetOutput());
+    if (size.first == 80)
+    {
+      CD_CHECK(scale == 1.0);
+      CD_CHECK(GetOriginalTriangles(stray->GetOutput()) == kept);
+    }
+    else
+    {
+      CD_CHECK(scale > 1.2);
+      const double count = double(GetOriginalTriangles(stray->GetOutput()).size());
+      CD_CHECK_MSG(std::abs(count - double(kept.size())) <= 1e-3 * count,
+                   count << " triangles against " << kept.size());
+    }
+  }
+}
+
 CD_TEST_CASE(PaperDefaults)
 {
   // SetPaperDefaults sets every property of the method to the paper's and leaves the target,

@@ -51,7 +51,8 @@ void EngineBase::SetUp(const DecimatorInput& input, bool useColor, DecimatorStat
   this->BuildMesh(input, stats);
   stats.Phases.Lap("connectivity");
   const int32_t* source = this->Renumbered ? this->Order.OldVertex.data() : nullptr;
-  this->Geometry = MeasureFrame(this->Mesh, input.Points, source, this->ThreadCount(size_t(n)));
+  this->Geometry = MeasureFrame(this->Mesh, input.Points, source, stats.Build.IsolatedVertices > 0,
+                                this->ThreadCount(size_t(n)));
   stats.MeanEdgeLength = this->Geometry.MeanEdgeLength;
   this->UseColor = useColor;
   FillHotRecords(this->Geometry, n, input.Points, useColor ? input.Colors : nullptr, source,

@@ -12,31 +12,41 @@ namespace colordecimation
 {
 namespace
 {
-/// The bounding box of the points (in any order: it does not depend on it).
-void MeasureBox(const double* points, int32_t n, int threads, double lo[3], double hi[3])
+/// The bounding box of the points pointOf(v), v < n, that are not null (in any order: it does
+/// not depend on it); lo and hi are left as they are if there is none.
+template <typename PointOf>
+void MeasureBox(size_t n, int threads, const PointOf& pointOf, double lo[3], double hi[3])
 {
   threads = std::max(threads, 1);
   std::vector<double> boxes(6 * threads, 0.0); // lo and hi of each thread's range
+  std::vector<uint8_t> found(threads, 0);
   double* box = boxes.data();
-  ParallelFor(size_t(n), threads,
-              [points, box](size_t begin, size_t end, int t)
+  uint8_t* any = found.data();
+  ParallelFor(n, threads,
+              [&pointOf, box, any](size_t begin, size_t end, int t)
               {
                 double* b = box + 6 * t;
+                bool found = false;
                 for (size_t v = begin; v < end; ++v)
                 {
+                  const double* p = pointOf(v);
+                  if (!p)
+                  {
+                    continue;
+                  }
                   for (int k = 0; k < 3; ++k)
                   {
-                    const double x = points[3 * v + k];
-                    b[k] = (v == begin || x < b[k]) ? x : b[k];
-                    b[3 + k] = (v == begin || x > b[3 + k]) ? x : b[3 + k];
+                    b[k] = (!found || p[k] < b[k]) ? p[k] : b[k];
+                    b[3 + k] = (!found || p[k] > b[3 + k]) ? p[k] : b[3 + k];
                   }
+                  found = true;
                 }
+                any[t] = found;
               });
   bool first = true;
   for (int t = 0; t < threads; ++t)
   {
-    const size_t begin = size_t(n) * t / threads, end = size_t(n) * (t + 1) / threads;
-    if (begin == end)
+    if (!any[t])
     {
       continue; // an empty range found nothing
     }
@@ -97,10 +107,24 @@ double MeanEdgeLength(const HalfEdgeMesh& mesh, const double* points, const int3
 } // namespace
 
 Frame MeasureFrame(const HalfEdgeMesh& mesh, const double* points, const int32_t* source,
-                   int threads)
+                   bool anyIsolated, int threads)
 {
   Frame frame;
-  MeasureBox(points, mesh.GetNumberOfVertices(), threads, frame.Lo, frame.Hi);
+  const size_t n = size_t(mesh.GetNumberOfVertices());
+  if (anyIsolated)
+  {
+    const auto faced = [&mesh, points, source](size_t v) -> const double*
+    {
+      const size_t i = source ? size_t(source[v]) : v;
+      return mesh.Outgoing(int32_t(v)) >= 0 ? points + 3 * i : nullptr;
+    };
+    MeasureBox(n, threads, faced, frame.Lo, frame.Hi); // none faced: the box stays empty
+  }
+  else
+  {
+    MeasureBox(
+      n, threads, [points](size_t i) { return points + 3 * i; }, frame.Lo, frame.Hi);
+  }
   frame.MeanEdgeLength = MeanEdgeLength(mesh, points, source, threads);
   frame.Scale = (frame.MeanEdgeLength > 0 && std::isfinite(frame.MeanEdgeLength))
     ? 1.0 / frame.MeanEdgeLength

@@ -30,7 +30,9 @@ constexpr int HotStride = sizeof(HotVertex) / sizeof(float);
 /// Input units -> normalised frame: x' = (x - Centre) * Scale.
 struct Frame
 {
-  double Lo[3] = { 0, 0, 0 }; ///< the input's bounding box
+  /// The bounding box of the points that belong to a face (the surface a render shows; a
+  /// point no face uses, however far, does not count)
+  double Lo[3] = { 0, 0, 0 };
   double Hi[3] = { 0, 0, 0 };
   double Centre[3] = { 0, 0, 0 };
   double Scale = 1.0;        ///< 1 / mean edge length (1 for a mesh without length)
@@ -59,13 +61,14 @@ constexpr double SceneReferenceDiagonal = 270.0;
 VTKCOLORDECIMATION_EXPORT double SceneWeightScale(const Frame& frame);
 
 /**
- * The frame of the mesh: its points' bounding box and the mean length of its edges, on
+ * The frame of the mesh: the bounding box of the points that belong to a face (anyIsolated:
+ * some do not; otherwise all points, in their own order) and the mean length of its edges, on
  * `threads` threads. The edges are summed in fixed chunks, and the chunks in order, so the
  * mean has the same bits for any number of threads. The mesh's vertex v is the point
  * source[v] (v if source is null).
  */
 Frame MeasureFrame(const HalfEdgeMesh& mesh, const double* points, const int32_t* source,
-                   int threads);
+                   bool anyIsolated, int threads);
 
 /**
  * One record per vertex: its position in the frame and its colour (RGB in [0,1], or converted
