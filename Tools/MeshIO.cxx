@@ -4,6 +4,7 @@
 #include "LegacyVtk.h"
 #include "MeshColors.h"
 #include "PlyHeader.h"
+#include "PlyReader.h"
 #include "PlyWriter.h"
 
 #include "vtkAlgorithm.h"
@@ -525,6 +526,16 @@ bool CheckBeforeReading(vtkAlgorithm* reader, const std::string& path, const std
 vtkSmartPointer<vtkPolyData> ReadByExtension(const std::string& path, const std::string& ext,
                                              std::string& problem, std::string& error)
 {
+  PlyHeader header;
+  std::string unread;
+  if (ext == ".ply" && ReadPlyHeader(path, header, unread) && IsSimplePly(header))
+  {
+    if (vtkSmartPointer<vtkPolyData> mesh = ReadSimplePly(path, header))
+    {
+      return mesh;
+    }
+    // A file shorter than its header says: CheckPly, below, says where it ends.
+  }
   vtkSmartPointer<vtkAlgorithm> reader = ReaderFor(path, ext);
   if (!reader)
   {

@@ -2,12 +2,12 @@
  * @file MeshIO.h
  * @brief Reading, writing and generating coloured meshes for the command-line tools.
  *
- * Inputs: .ply (vtkPLYReader), .vtp (vtkXMLPolyDataReader), .vtu (surface of an
- * unstructured grid), .vtk (legacy: polydata, or the surface of any other data set), .obj
- * (vtkOBJReader), .stl (vtkSTLReader), and "demo:" specifications that build a coloured
- * mesh in code with ColorDecimation::Meshes (see DemoHelp()). Outputs: .ply (binary, with
- * the colour array as uchar red/green/blue[/alpha]), .vtp (binary, every array kept) and
- * .vtk (legacy binary polydata).
+ * Inputs: .ply (PlyReader.h for the common binary layouts, vtkPLYReader for the rest), .vtp
+ * (vtkXMLPolyDataReader), .vtu (surface of an unstructured grid), .vtk (legacy: polydata, or
+ * the surface of any other data set), .obj (vtkOBJReader), .stl (vtkSTLReader), and "demo:"
+ * specifications that build a coloured mesh in code with ColorDecimation::Meshes (see
+ * DemoHelp()). Outputs: .ply (binary, with the colour array as uchar red/green/blue[/alpha]),
+ * .vtp (binary, every array kept) and .vtk (legacy binary polydata).
  *
  * VTK's own error and warning messages are caught (MessageCatcher) so that the tools can
  * report them in one clear line instead of VTK's multi-line output.
