@@ -44,7 +44,24 @@ struct VertexLayout
   int ColorComponents() const { return this->Color[0] < 0 ? 0 : (this->Color[3] < 0 ? 3 : 4); }
 };
 
-/// The layout of the vertex element; false for a property ReadSimplePly does not read.
+/// Whether vtkPLYReader reads a vertex property of this name as something other than points,
+/// normals and colours (texture coordinates, diffuse colours).
+bool IsOtherVtkProperty(const std::string& name)
+{
+  for (const char* other :
+       { "u", "v", "texture_u", "texture_v", "diffuse_red", "diffuse_green", "diffuse_blue" })
+  {
+    if (name == other)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// The layout of the vertex element; false for a property ReadSimplePly does not read. Other
+/// scalar properties, which vtkPLYReader leaves out too (a scanner's confidence or quality),
+/// are skipped.
 bool FindLayout(const PlyElement& vertex, VertexLayout& layout)
 {
   static const char* const names[10] = { "x",  "y",   "z",     "nx",   "ny",
@@ -60,9 +77,14 @@ bool FindLayout(const PlyElement& vertex, VertexLayout& layout)
     {
       ++k;
     }
+    if (k == 10 && p.CountSize == 0 && !IsOtherVtkProperty(p.Name))
+    {
+      layout.Stride += static_cast<size_t>(p.Size); // skipped, as vtkPLYReader does
+      continue;
+    }
     if (k == 10 || *slots[k] >= 0 || !(k < 6 ? IsFloat(p) : IsByte(p)))
     {
-      return false; // another property, twice the same, or another type
+      return false; // a list, one vtkPLYReader reads otherwise, twice the same, another type
     }
     *slots[k] = static_cast<int>(layout.Stride);
     layout.Stride += static_cast<size_t>(p.Size);
