@@ -22,8 +22,7 @@ int32_t Root(std::vector<int32_t>& parent, int32_t v)
   return v;
 }
 
-/// Each vertex's parent in the union of the live faces' vertices (Root: the lowest id of its
-/// piece).
+/// Each vertex's root in the union of the live faces' vertices: the lowest id of its piece.
 std::vector<int32_t> UnionOfFaces(const HalfEdgeMesh& mesh)
 {
   std::vector<int32_t> parent(static_cast<size_t>(mesh.GetNumberOfVertices()));
@@ -42,11 +41,16 @@ std::vector<int32_t> UnionOfFaces(const HalfEdgeMesh& mesh)
       }
     }
   }
+  // A parent is never above its child: in increasing order each parent is a root already.
+  for (int32_t& p : parent)
+  {
+    p = parent[p];
+  }
   return parent;
 }
 
 /// The live faces whose root has a piece number (numberOf[root] >= 0), listed by piece.
-Pieces ListPieces(const HalfEdgeMesh& mesh, std::vector<int32_t>& parent,
+Pieces ListPieces(const HalfEdgeMesh& mesh, const std::vector<int32_t>& root,
                   const std::vector<int32_t>& numberOf, int32_t count)
 {
   std::vector<int32_t> faceOf, faces;
@@ -57,7 +61,7 @@ Pieces ListPieces(const HalfEdgeMesh& mesh, std::vector<int32_t>& parent,
     {
       int32_t ids[3];
       mesh.GetFace(f, ids);
-      const int32_t p = numberOf[Root(parent, ids[0])];
+      const int32_t p = numberOf[root[ids[0]]];
       if (p >= 0)
       {
         faceOf.push_back(p);
@@ -76,8 +80,8 @@ Pieces ListPieces(const HalfEdgeMesh& mesh, std::vector<int32_t>& parent,
 /// Every piece of the live faces, numbered by its first face.
 Pieces FindPieces(const HalfEdgeMesh& mesh)
 {
-  std::vector<int32_t> parent = UnionOfFaces(mesh);
-  std::vector<int32_t> numberOf(parent.size(), -1);
+  const std::vector<int32_t> root = UnionOfFaces(mesh);
+  std::vector<int32_t> numberOf(root.size(), -1);
   int32_t count = 0;
   const int32_t slots = mesh.GetNumberOfFaceSlots();
   for (int32_t f = 0; f < slots; ++f)
@@ -86,11 +90,11 @@ Pieces FindPieces(const HalfEdgeMesh& mesh)
     {
       int32_t ids[3];
       mesh.GetFace(f, ids);
-      int32_t& p = numberOf[Root(parent, ids[0])];
+      int32_t& p = numberOf[root[ids[0]]];
       p = p >= 0 ? p : count++;
     }
   }
-  return ListPieces(mesh, parent, numberOf, count);
+  return ListPieces(mesh, root, numberOf, count);
 }
 
 double TriangleArea(const double* points, const int32_t ids[3])
@@ -108,11 +112,11 @@ double TriangleArea(const double* points, const int32_t ids[3])
 
 Pieces FindSmallPieces(const HalfEdgeMesh& mesh, const std::function<bool(int32_t)>& keep)
 {
-  std::vector<int32_t> parent = UnionOfFaces(mesh);
-  const auto n = static_cast<int32_t>(parent.size());
+  const std::vector<int32_t> root = UnionOfFaces(mesh);
+  const auto n = static_cast<int32_t>(root.size());
   // Faces per root, the root of the largest piece, the roots of pieces with a kept vertex.
-  std::vector<int32_t> numberOf(parent.size(), 0);
-  std::vector<uint8_t> kept(parent.size(), 0);
+  std::vector<int32_t> numberOf(root.size(), 0);
+  std::vector<uint8_t> kept(root.size(), 0);
   const int32_t slots = mesh.GetNumberOfFaceSlots();
   for (int32_t f = 0; f < slots; ++f)
   {
@@ -120,7 +124,7 @@ Pieces FindSmallPieces(const HalfEdgeMesh& mesh, const std::function<bool(int32_
     {
       int32_t ids[3];
       mesh.GetFace(f, ids);
-      ++numberOf[Root(parent, ids[0])];
+      ++numberOf[root[ids[0]]];
     }
   }
   int32_t largest = 0, roots = 0;
@@ -128,7 +132,7 @@ Pieces FindSmallPieces(const HalfEdgeMesh& mesh, const std::function<bool(int32_
   {
     roots += numberOf[v] > 0 ? 1 : 0;
     largest = numberOf[v] > numberOf[largest] ? v : largest;
-    kept[Root(parent, v)] |= keep(v) ? 1 : 0;
+    kept[root[v]] |= keep(v) ? 1 : 0;
   }
   if (roots <= 1)
   {
@@ -139,7 +143,7 @@ Pieces FindSmallPieces(const HalfEdgeMesh& mesh, const std::function<bool(int32_
   {
     numberOf[v] = numberOf[v] > 0 && v != largest && !kept[v] ? count++ : -1;
   }
-  return ListPieces(mesh, parent, numberOf, count);
+  return ListPieces(mesh, root, numberOf, count);
 }
 
 void PieceVertices(const HalfEdgeMesh& mesh, const int32_t* faces, size_t count,
