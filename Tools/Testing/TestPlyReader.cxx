@@ -12,6 +12,7 @@
 #include "MeshIO.h"
 #include "PlyHeader.h"
 #include "PlyReader.h"
+#include "PlyTestMeshes.h"
 #include "ToolsTest.h"
 
 #include "vtkCellArray.h"
@@ -40,33 +41,11 @@ using colordecimation::tools::PlyHeader;
 using colordecimation::tools::ReadMesh;
 using colordecimation::tools::ReadPlyHeader;
 using colordecimation::tools::ReadSimplePly;
+using colordecimation::tools::test::Colors;
 using colordecimation::tools::test::Expect;
 using colordecimation::tools::test::FileBytes;
-
-/// A sphere of `resolution` with float normals.
-vtkSmartPointer<vtkPolyData> Sphere(int resolution)
-{
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(resolution);
-  sphere->SetPhiResolution(resolution);
-  sphere->Update();
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->DeepCopy(sphere->GetOutput());
-  return mesh;
-}
-
-vtkSmartPointer<vtkUnsignedCharArray> Colors(vtkIdType tuples, int components, const char* name)
-{
-  auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  colors->SetName(name);
-  colors->SetNumberOfComponents(components);
-  colors->SetNumberOfTuples(tuples);
-  for (vtkIdType i = 0; i < tuples * components; ++i)
-  {
-    colors->SetValue(i, static_cast<unsigned char>((i * 37 + i / 7) % 256));
-  }
-  return colors;
-}
+using colordecimation::tools::test::ReadWithVtk;
+using colordecimation::tools::test::Sphere;
 
 /// Write `mesh` with vtkPLYWriter (binary unless ascii; the named colour array, with alpha
 /// when it has 4 components; texture coordinates when it has them).
@@ -91,16 +70,6 @@ std::string Write(vtkPolyData* mesh, const char* colors, const std::string& path
   }
   Expect(writer->Write() == 1, path + ": written by vtkPLYWriter");
   return path;
-}
-
-vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path)
-{
-  vtkNew<vtkPLYReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->ShallowCopy(reader->GetOutput());
-  return mesh;
 }
 
 bool SameArray(vtkAbstractArray* a, vtkAbstractArray* b)
@@ -308,13 +277,6 @@ void TestTruncated(const std::string& dir)
 
 int main(int argc, char* argv[])
 {
-  const std::string dir = colordecimation::tools::test::Start(argc, argv, "TestPlyReader");
-  if (dir.empty())
-  {
-    return 2;
-  }
-  TestLayouts(dir);
-  TestLeftToVtk(dir);
-  TestTruncated(dir);
-  return colordecimation::tools::test::Finish();
+  return colordecimation::tools::test::Run(argc, argv, "TestPlyReader",
+                                           { TestLayouts, TestLeftToVtk, TestTruncated });
 }

@@ -11,6 +11,7 @@
  * Usage: TestPlyWriter DIRECTORY (a scratch folder for the files)
  */
 #include "MeshIO.h"
+#include "PlyTestMeshes.h"
 #include "PlyWriter.h"
 #include "ToolsTest.h"
 
@@ -38,39 +39,16 @@ namespace
 {
 using colordecimation::tools::WritePly;
 
+using colordecimation::tools::test::Colors;
 using colordecimation::tools::test::Expect;
 using colordecimation::tools::test::FileBytes;
+using colordecimation::tools::test::ReadWithVtk;
+using colordecimation::tools::test::Sphere;
 
 bool Exists(const std::string& path)
 {
   struct stat info;
   return stat(path.c_str(), &info) == 0;
-}
-
-/// A sphere (float points, float normals) of `resolution`, with none of its arrays but those.
-vtkSmartPointer<vtkPolyData> Sphere(int resolution)
-{
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetThetaResolution(resolution);
-  sphere->SetPhiResolution(resolution);
-  sphere->Update();
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->DeepCopy(sphere->GetOutput());
-  return mesh;
-}
-
-/// Bytes of tuple i: a pattern that differs between tuples and components.
-vtkSmartPointer<vtkUnsignedCharArray> Colors(vtkIdType tuples, int components, const char* name)
-{
-  auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  colors->SetName(name);
-  colors->SetNumberOfComponents(components);
-  colors->SetNumberOfTuples(tuples);
-  for (vtkIdType i = 0; i < tuples * components; ++i)
-  {
-    colors->SetValue(i, static_cast<unsigned char>((i * 37 + i / 7) % 256));
-  }
-  return colors;
 }
 
 vtkSmartPointer<vtkDataArray> TCoords(vtkIdType tuples, bool doubles)
@@ -181,16 +159,6 @@ void TestSameBytes(const std::string& dir)
   ExpectSameAsVtk(cloud, nullptr, nullptr, dir, "no-faces");
 }
 
-vtkSmartPointer<vtkPolyData> ReadBack(const std::string& path)
-{
-  vtkNew<vtkPLYReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->ShallowCopy(reader->GetOutput());
-  return mesh;
-}
-
 /// Double normals and texture coordinates are written as floats, not dropped.
 void TestDoublesKept(const std::string& dir)
 {
@@ -204,7 +172,7 @@ void TestDoublesKept(const std::string& dir)
   const std::string path = dir + "/doubles.ply";
   std::string error;
   Expect(WritePly(mesh, path, nullptr, nullptr, error), "doubles: written (" + error + ")");
-  auto back = ReadBack(path);
+  auto back = ReadWithVtk(path);
   vtkDataArray* readNormals = back->GetPointData()->GetNormals();
   vtkDataArray* readTCoords = back->GetPointData()->GetTCoords();
   Expect(back->GetNumberOfPoints() == n && readNormals && readTCoords,
@@ -296,14 +264,7 @@ void TestErrors(const std::string& dir)
 
 int main(int argc, char* argv[])
 {
-  const std::string dir = colordecimation::tools::test::Start(argc, argv, "TestPlyWriter");
-  if (dir.empty())
-  {
-    return 2;
-  }
-  TestSameBytes(dir);
-  TestDoublesKept(dir);
-  TestPointAndFaceColors(dir);
-  TestErrors(dir);
-  return colordecimation::tools::test::Finish();
+  return colordecimation::tools::test::Run(
+    argc, argv, "TestPlyWriter",
+    { TestSameBytes, TestDoublesKept, TestPointAndFaceColors, TestErrors });
 }

@@ -1,13 +1,14 @@
 /**
  * @file ToolsTest.h
- * @brief What the tools' unit tests (TestPlyWriter, TestLegacyVtk) share: the scratch folder
- * from the command line (Start), checks that print what failed and are counted (Expect), a
- * file's bytes, and the exit status (Finish).
+ * @brief What the tools' unit tests (TestPlyWriter, TestPlyReader, TestLegacyVtk) share: the
+ * scratch folder from the command line (Start), checks that print what failed and are counted
+ * (Expect), a file's bytes, the exit status (Finish), and a main made of these (Run).
  */
 #ifndef colordecimation_tools_ToolsTest_h
 #define colordecimation_tools_ToolsTest_h
 
 #include <fstream>
+#include <initializer_list>
 #include <iostream>
 #include <iterator>
 #include <string>
@@ -58,6 +59,23 @@ inline int Finish()
     std::cout << Name << ": all passed" << std::endl;
   }
   return Failures == 0 ? 0 : 1;
+}
+
+/// A test's main: each of `tests` given the scratch folder, then the exit status (2 without
+/// the folder).
+inline int Run(int argc, char* argv[], const std::string& name,
+               std::initializer_list<void (*)(const std::string&)> tests)
+{
+  const std::string dir = Start(argc, argv, name);
+  if (dir.empty())
+  {
+    return 2;
+  }
+  for (const auto test : tests)
+  {
+    test(dir);
+  }
+  return Finish();
 }
 } // namespace test
 } // namespace tools
