@@ -119,10 +119,10 @@ public:
    * - Geometry: the quadric error Q alone (colour ignored), for comparison.
    * - ColorQuadric: Garland and Heckbert's colour quadric (1998), the metric the paper
    *   compares against: every vertex is a point (x, y, z, r, g, b) of R^6 (geometry with
-   *   the bounding box scaled into the unit cube, colour in [0,1] times ColorWeight) and
-   *   holds the area-weighted sum of the squared distances to its triangles' planes in R^6
-   *   (28 floats per vertex, against the paper metric's 12). Half-edge collapses by default;
-   *   full collapses with OptimalPlacement on.
+   *   the bounding box of the points the triangles use scaled into the unit cube, colour in
+   *   [0,1] times ColorWeight) and holds the area-weighted sum of the squared distances to
+   *   its triangles' planes in R^6 (28 floats per vertex, against the paper metric's 12).
+   *   Half-edge collapses by default; full collapses with OptimalPlacement on.
    */
   enum ErrorMetrics
   {

@@ -530,11 +530,13 @@ vtkSmartPointer<vtkPolyData> ReadByExtension(const std::string& path, const std:
   std::string unread;
   if (ext == ".ply" && ReadPlyHeader(path, header, unread) && IsSimplePly(header))
   {
-    if (vtkSmartPointer<vtkPolyData> mesh = ReadSimplePly(path, header))
+    vtkSmartPointer<vtkPolyData> mesh = ReadSimplePly(path, header, unread);
+    if (mesh || !unread.empty())
     {
+      error = mesh ? "" : "cannot read '" + path + "': " + unread;
       return mesh;
     }
-    // A file shorter than its header says: CheckPly, below, says where it ends.
+    // Not read: a file shorter than its header says (CheckPly, below, says where it ends).
   }
   vtkSmartPointer<vtkAlgorithm> reader = ReaderFor(path, ext);
   if (!reader)

@@ -13,8 +13,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <memory>
+#include <new>
 #include <sys/stat.h>
 #include <vector>
 
@@ -161,6 +163,12 @@ bool ReadVertices(ChunkedFile& file, const VertexLayout& layout, vtkIdType count
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(withNormals ? count : 0);
+  if (xyz->GetNumberOfTuples() != count ||
+      colors->GetNumberOfTuples() != (channels == 0 ? 0 : count) ||
+      normals->GetNumberOfTuples() != (withNormals ? count : 0))
+  {
+    throw std::bad_alloc();
+  }
   const vtkIdType batch = static_cast<vtkIdType>(ChunkBytes / layout.Stride);
   for (vtkIdType first = 0; first < count; first += batch)
   {
@@ -209,44 +217,43 @@ struct CornerBuffer
   std::unique_ptr<int32_t, decltype(&std::free)> Ids{ nullptr, &std::free };
   size_t Used = 0, Capacity = 0;
 
-  /// Room for n more; false when there is no memory for them.
-  bool Reserve(size_t n)
+  /// Room for n more (std::bad_alloc when there is no memory for them).
+  void Reserve(size_t n)
   {
     if (this->Used + n <= this->Capacity)
     {
-      return true;
+      return;
     }
     const size_t capacity = std::max(this->Used + n, this->Capacity + this->Capacity / 2);
     void* grown = std::realloc(this->Ids.get(), capacity * sizeof(int32_t));
     if (!grown)
     {
-      return false;
+      throw std::bad_alloc();
     }
     this->Ids.release();
     this->Ids.reset(static_cast<int32_t*>(grown));
     this->Capacity = capacity;
-    return true;
   }
 };
 
-/// The face element's corner counts and corners (as stored: 32-bit, signed).
-bool ReadFaces(ChunkedFile& file, uint64_t count, std::vector<uint8_t>& sizes,
+/// The face element's corner counts and corners (as stored: 32-bit, signed), from `bytes` of
+/// the file; false when it ends first.
+bool ReadFaces(ChunkedFile& file, uint64_t count, uint64_t bytes, std::vector<uint8_t>& sizes,
                CornerBuffer& corners)
 {
   sizes.resize(count);
-  if (!corners.Reserve(3 * count))
-  {
-    return false;
-  }
+  // Room for triangles, or for as many corners as the bytes left can hold if fewer.
+  corners.Reserve(std::min<uint64_t>(3 * count, (bytes - count) / 4));
   for (uint64_t f = 0; f < count; ++f)
   {
     const unsigned char* head = file.Take(1);
     const size_t size = head ? *head : 0; // read before the next Take moves the bytes
     const unsigned char* items = head ? file.Take(4 * size) : nullptr;
-    if (!items || !corners.Reserve(size))
+    if (!items)
     {
       return false;
     }
+    corners.Reserve(size);
     sizes[f] = static_cast<uint8_t>(size);
     std::memcpy(corners.Ids.get() + corners.Used, items, 4 * size);
     corners.Used += size;
@@ -261,6 +268,10 @@ vtkSmartPointer<Array> Offsets(const std::vector<uint8_t>& sizes)
   using Id = typename Array::ValueType;
   auto offsets = vtkSmartPointer<Array>::New();
   offsets->SetNumberOfValues(static_cast<vtkIdType>(sizes.size() + 1));
+  if (offsets->GetNumberOfValues() != static_cast<vtkIdType>(sizes.size() + 1))
+  {
+    throw std::bad_alloc();
+  }
   Id* offset = offsets->GetPointer(0);
   offset[0] = 0;
   for (size_t f = 0; f < sizes.size(); ++f)
@@ -286,10 +297,30 @@ void SetPolygons(const std::vector<uint8_t>& sizes, CornerBuffer& corners, vtkPo
   {
     vtkNew<vtkTypeInt64Array> connectivity;
     connectivity->SetNumberOfValues(static_cast<vtkIdType>(corners.Used));
+    if (connectivity->GetNumberOfValues() != static_cast<vtkIdType>(corners.Used))
+    {
+      throw std::bad_alloc();
+    }
     std::copy(corners.Ids.get(), corners.Ids.get() + corners.Used, connectivity->GetPointer(0));
     polygons->SetData(Offsets<vtkTypeInt64Array>(sizes), connectivity);
   }
   mesh->SetPolys(polygons);
+}
+/// The bytes of the file after its header (0 when it cannot be measured).
+uint64_t BodyBytes(const std::string& path, const PlyHeader& header)
+{
+  struct stat info;
+  return ::stat(path.c_str(), &info) == 0 && uint64_t(info.st_size) > header.BodyOffset
+    ? uint64_t(info.st_size) - header.BodyOffset
+    : 0;
+}
+
+/// Whether the file starts with "ply", as vtkPLYReader asks (the header's reader allows blanks).
+bool StartsAsPly(const std::string& path)
+{
+  char magic[3] = {};
+  std::ifstream in(path, std::ios::binary);
+  return in.read(magic, 3) && std::memcmp(magic, "ply", 3) == 0;
 }
 } // namespace
 
@@ -310,33 +341,44 @@ bool IsSimplePly(const PlyHeader& header)
     face[0].Size == 4 && face[0].Type != "float" && face[0].Type != "float32";
 }
 
-vtkSmartPointer<vtkPolyData> ReadSimplePly(const std::string& path, const PlyHeader& header)
+vtkSmartPointer<vtkPolyData> ReadSimplePly(const std::string& path, const PlyHeader& header,
+                                           std::string& error)
 {
+  error.clear();
+  if (!IsSimplePly(header) || !StartsAsPly(path))
+  {
+    return nullptr;
+  }
   VertexLayout layout;
   FindLayout(header.Elements[0], layout);
   const uint64_t numPoints = header.Elements[0].Count, numFaces = header.Elements[1].Count;
+  // The least the elements take (a byte a face), checked before their arrays are allocated:
+  // a header may announce more than the file holds.
+  const uint64_t body = BodyBytes(path, header);
+  if (numPoints > body / layout.Stride || numFaces > body - numPoints * layout.Stride ||
+      numPoints > uint64_t(std::numeric_limits<vtkIdType>::max()))
+  {
+    return nullptr;
+  }
   ChunkedFile file(path, header.BodyOffset, ChunkBytes);
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   std::vector<uint8_t> sizes;
   CornerBuffer corners;
-  // The least the elements take (a byte a face), checked before their arrays are allocated:
-  // a header may announce more than the file holds.
-  struct stat info;
-  const uint64_t body =
-    ::stat(path.c_str(), &info) == 0 && uint64_t(info.st_size) > header.BodyOffset
-    ? uint64_t(info.st_size) - header.BodyOffset
-    : 0;
-  if (numPoints > body / layout.Stride || numFaces > body - numPoints * layout.Stride)
+  try
   {
+    if (!file.IsOpen() || !ReadVertices(file, layout, static_cast<vtkIdType>(numPoints), mesh) ||
+        !ReadFaces(file, numFaces, body - numPoints * layout.Stride, sizes, corners))
+    {
+      return nullptr;
+    }
+    SetPolygons(sizes, corners, mesh);
+  }
+  catch (const std::bad_alloc&)
+  {
+    error = "there is not enough memory for its " + std::to_string(numPoints) + " points and " +
+      std::to_string(numFaces) + " faces";
     return nullptr;
   }
-  if (!file.IsOpen() || numPoints > uint64_t(std::numeric_limits<vtkIdType>::max()) ||
-      !ReadVertices(file, layout, static_cast<vtkIdType>(numPoints), mesh) ||
-      !ReadFaces(file, numFaces, sizes, corners))
-  {
-    return nullptr;
-  }
-  SetPolygons(sizes, corners, mesh);
   return mesh;
 }
 

@@ -34,10 +34,13 @@ bool IsSimplePly(const PlyHeader& header);
 
 /**
  * Read a file whose header passes IsSimplePly in one pass: the mesh vtkPLYReader gives (the
- * faces' connectivity with 32-bit ids where they fit), or null when the file ends before the
- * elements its header announces (CheckPlyBody then says where).
+ * faces' connectivity with 32-bit ids where they fit). Null with `error` empty when the header
+ * does not pass IsSimplePly, the file does not start with "ply" (vtkPLYReader's test), or it
+ * ends before the elements its header announces (CheckPlyBody then says where); null with
+ * `error` when there is no memory for its arrays.
  */
-vtkSmartPointer<vtkPolyData> ReadSimplePly(const std::string& path, const PlyHeader& header);
+vtkSmartPointer<vtkPolyData> ReadSimplePly(const std::string& path, const PlyHeader& header,
+                                           std::string& error);
 
 } // namespace tools
 } // namespace colordecimation
