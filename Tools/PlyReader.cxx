@@ -306,6 +306,7 @@ void SetPolygons(const std::vector<uint8_t>& sizes, CornerBuffer& corners, vtkPo
   }
   mesh->SetPolys(polygons);
 }
+
 /// The bytes of the file after its header (0 when it cannot be measured).
 uint64_t BodyBytes(const std::string& path, const PlyHeader& header)
 {
