@@ -528,7 +528,7 @@ vtkSmartPointer<vtkPolyData> ReadByExtension(const std::string& path, const std:
 {
   PlyHeader header;
   std::string unread;
-  if (ext == ".ply" && ReadPlyHeader(path, header, unread) && IsSimplePly(header))
+  if (ext == ".ply" && ReadPlyHeader(path, header, unread))
   {
     vtkSmartPointer<vtkPolyData> mesh = ReadSimplePly(path, header, unread);
     if (mesh || !unread.empty())
@@ -536,7 +536,8 @@ vtkSmartPointer<vtkPolyData> ReadByExtension(const std::string& path, const std:
       error = mesh ? "" : "cannot read '" + path + "': " + unread;
       return mesh;
     }
-    // Not read: a file shorter than its header says (CheckPly, below, says where it ends).
+    // Not read: another layout, or a file shorter than its header says (CheckPly, below,
+    // says where it ends).
   }
   vtkSmartPointer<vtkAlgorithm> reader = ReaderFor(path, ext);
   if (!reader)

@@ -278,6 +278,7 @@ bool ReadPlyHeader(const std::string& path, PlyHeader& header, std::string& erro
     {
       break;
     }
+    header.PlyAtStart = header.PlyAtStart || (lines == 0 && line.compare(0, 3, "ply") == 0);
     if (keyword == "format")
     {
       words >> header.Format;

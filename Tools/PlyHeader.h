@@ -37,6 +37,8 @@ struct PlyHeader
   std::string Format; ///< "ascii", "binary_little_endian" or "binary_big_endian"
   std::vector<PlyElement> Elements;
   uint64_t BodyOffset = 0; ///< where the data starts (after "end_header\n")
+  /// The file's first bytes are "ply", as vtkPLYReader asks (this reading allows blanks first).
+  bool PlyAtStart = false;
 };
 
 /// Read the header of `path`; false with `error` when it is not a complete PLY header.

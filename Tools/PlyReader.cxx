@@ -13,7 +13,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <memory>
 #include <new>
@@ -316,16 +315,8 @@ uint64_t BodyBytes(const std::string& path, const PlyHeader& header)
     : 0;
 }
 
-/// Whether the file starts with "ply", as vtkPLYReader asks (the header's reader allows blanks).
-bool StartsAsPly(const std::string& path)
-{
-  char magic[3] = {};
-  std::ifstream in(path, std::ios::binary);
-  return in.read(magic, 3) && std::memcmp(magic, "ply", 3) == 0;
-}
-} // namespace
-
-bool IsSimplePly(const PlyHeader& header)
+/// The vertex layout of a header that passes IsSimplePly; false for one that does not.
+bool SimpleLayout(const PlyHeader& header, VertexLayout& layout)
 {
   const uint16_t one = 1;
   unsigned char first;
@@ -335,23 +326,28 @@ bool IsSimplePly(const PlyHeader& header)
   {
     return false;
   }
-  VertexLayout layout;
   const std::vector<PlyProperty>& face = header.Elements[1].Properties;
   return FindLayout(header.Elements[0], layout) && face.size() == 1 &&
     face[0].Name == "vertex_indices" && face[0].CountSize == 1 && !face[0].CountSigned &&
     face[0].Size == 4 && face[0].Type != "float" && face[0].Type != "float32";
+}
+} // namespace
+
+bool IsSimplePly(const PlyHeader& header)
+{
+  VertexLayout layout;
+  return SimpleLayout(header, layout);
 }
 
 vtkSmartPointer<vtkPolyData> ReadSimplePly(const std::string& path, const PlyHeader& header,
                                            std::string& error)
 {
   error.clear();
-  if (!IsSimplePly(header) || !StartsAsPly(path))
+  VertexLayout layout;
+  if (!SimpleLayout(header, layout) || !header.PlyAtStart)
   {
     return nullptr;
   }
-  VertexLayout layout;
-  FindLayout(header.Elements[0], layout);
   const uint64_t numPoints = header.Elements[0].Count, numFaces = header.Elements[1].Count;
   // The least the elements take (a byte a face), checked before their arrays are allocated:
   // a header may announce more than the file holds.
