@@ -23,7 +23,6 @@
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPLYReader.h"
-#include "vtkPLYWriter.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -50,29 +49,17 @@ using colordecimation::tools::test::Expect;
 using colordecimation::tools::test::FileBytes;
 using colordecimation::tools::test::ReadWithVtk;
 using colordecimation::tools::test::Sphere;
+using colordecimation::tools::test::WriteWithVtk;
 
 /// Write `mesh` with vtkPLYWriter (binary unless ascii; the named colour array, with alpha
 /// when it has 4 components; texture coordinates when it has them).
 std::string Write(vtkPolyData* mesh, const char* colors, const std::string& path,
                   bool bigEndian = false, bool ascii = false)
 {
-  vtkNew<vtkPLYWriter> writer;
-  writer->SetFileName(path.c_str());
-  ascii ? writer->SetFileTypeToASCII() : writer->SetFileTypeToBinary();
-  bigEndian ? writer->SetDataByteOrderToBigEndian() : writer->SetDataByteOrderToLittleEndian();
-  writer->SetInputData(mesh);
-  if (colors)
-  {
-    writer->SetArrayName(colors);
-    vtkDataArray* array = mesh->GetPointData()->GetArray(colors);
-    array = array ? array : mesh->GetCellData()->GetArray(colors);
-    writer->SetEnableAlpha(array && array->GetNumberOfComponents() == 4);
-  }
-  else
-  {
-    writer->SetColorModeToOff();
-  }
-  Expect(writer->Write() == 1, path + ": written by vtkPLYWriter");
+  vtkDataArray* array = colors ? mesh->GetPointData()->GetArray(colors) : nullptr;
+  array = array || !colors ? array : mesh->GetCellData()->GetArray(colors);
+  Expect(WriteWithVtk(mesh, vtkUnsignedCharArray::SafeDownCast(array), path, bigEndian, ascii),
+         path + ": written by vtkPLYWriter");
   return path;
 }
 

@@ -21,7 +21,6 @@
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkPLYReader.h"
-#include "vtkPLYWriter.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -44,6 +43,7 @@ using colordecimation::tools::test::Expect;
 using colordecimation::tools::test::FileBytes;
 using colordecimation::tools::test::ReadWithVtk;
 using colordecimation::tools::test::Sphere;
+using colordecimation::tools::test::WriteWithVtk;
 
 bool Exists(const std::string& path)
 {
@@ -81,21 +81,8 @@ void ExpectSameAsVtk(vtkPolyData* input, vtkUnsignedCharArray* pointColors,
 #endif
   const std::string theirs = dir + "/" + name + ".vtk.ply";
   const std::string ours = dir + "/" + name + ".ours.ply";
-  vtkNew<vtkPLYWriter> writer;
-  writer->SetFileName(theirs.c_str());
-  writer->SetFileTypeToBinary();
-  writer->SetInputData(mesh);
-  vtkUnsignedCharArray* colors = pointColors ? pointColors : faceColors;
-  if (colors)
-  {
-    writer->SetArrayName(colors->GetName());
-    writer->SetEnableAlpha(colors->GetNumberOfComponents() == 4);
-  }
-  else
-  {
-    writer->SetColorModeToOff();
-  }
-  Expect(writer->Write() == 1, name + ": vtkPLYWriter wrote its file");
+  Expect(WriteWithVtk(mesh, pointColors ? pointColors : faceColors, theirs),
+         name + ": vtkPLYWriter wrote its file");
   std::string error;
   Expect(WritePly(mesh, ours, pointColors, faceColors, error), name + ": written (" + error + ")");
   const std::string expected = FileBytes(theirs);
@@ -209,12 +196,7 @@ void TestPointAndFaceColors(const std::string& dir)
   mesh->GetPointData()->SetScalars(points);
   mesh->GetCellData()->SetScalars(faces);
   const std::string theirs = dir + "/both.vtk.ply";
-  vtkNew<vtkPLYWriter> writer;
-  writer->SetFileName(theirs.c_str());
-  writer->SetFileTypeToBinary();
-  writer->SetInputData(mesh);
-  writer->SetArrayName("RGB");
-  Expect(writer->Write() == 1, "both colours: vtkPLYWriter wrote its file");
+  Expect(WriteWithVtk(mesh, points, theirs), "both colours: vtkPLYWriter wrote its file");
   std::string error;
   const std::string ours = dir + "/both.ours.ply";
   Expect(colordecimation::tools::WriteMesh(mesh, ours, "", error, nullptr),
