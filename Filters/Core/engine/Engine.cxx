@@ -79,12 +79,14 @@ void EngineBase::FindRemovablePieces(DecimatorStatistics& stats)
   const HalfEdgeMesh& mesh = this->Mesh;
   const SeamMap& seams = this->Seams;
   const bool boundary = this->Options.PreserveBoundary;
-  this->Found = FindSmallPieces(mesh,
-                                [&](int32_t v)
-                                {
-                                  return mesh.IsFixed(v) || seams.GetRole(v) != SeamMap::None ||
-                                    (boundary && !mesh.IsLocked(v) && mesh.IsBoundaryVertex(v));
-                                });
+  this->Found = FindSmallPieces(
+    mesh,
+    [&](int32_t v)
+    {
+      return mesh.IsFixed(v) || seams.GetRole(v) != SeamMap::None ||
+        (boundary && !mesh.IsLocked(v) && mesh.IsBoundaryVertex(v));
+    },
+    this->ThreadCount(size_t(mesh.GetNumberOfFaceSlots())));
   this->SmallPieces = PieceQueue();
   this->LargestPieceError = 0;
   this->PieceBytes = 0;

@@ -384,6 +384,8 @@ protected:
 private:
   /// The found pieces' costs and errors, into SmallPieces.
   void CostPieces(DecimatorStatistics& stats);
+  /// Piece p of Found: its cost (PieceWeight times the metric's) and squared error.
+  void CostPiece(size_t p, std::vector<int32_t>& vertices, double& cost, double& error) const;
   /// Costs of the ring of v0 into ws.Costs.
   void CostRing(int32_t v0, bool withColorError, Workspace& ws) const;
   Choice Cheapest(const Ring& ring, const std::vector<double>& costs) const;

@@ -437,31 +437,45 @@ void Engine<Metric>::CostPieces(DecimatorStatistics& stats)
 {
   if constexpr (Metric::CostsPieces)
   {
+    // Each piece is costed from its own vertices' states, which nothing writes meanwhile: the
+    // pieces can be shared among threads in any way, with the same costs.
     const size_t count = this->Found.Size();
     std::vector<double> costs(count), errors(count, 0.0);
-    std::vector<int32_t> vertices;
-    for (size_t p = 0; p < count; ++p)
-    {
-      const int32_t first = this->Found.Start[p];
-      PieceVertices(this->Mesh, this->Found.Faces.data() + first,
-                    size_t(this->Found.Start[p + 1] - first), vertices);
-      int32_t best = vertices.front();
-      double spread = 0;
-      costs[p] = this->Options.PieceWeight *
-        this->TheMetric.PieceCost(vertices.data(), vertices.size(), best, spread);
-      if (this->Errors.IsEnabled())
-      {
-        // Removed, its surface is gone: at least as far as its points would travel.
-        const float* x = this->Hot[best].P;
-        const double at[3] = { x[0], x[1], x[2] };
-        errors[p] =
-          std::max(this->Errors.PieceSquaredError(vertices.data(), vertices.size(), at), spread);
-      }
-    }
+    double* cost = costs.data();
+    double* error = errors.data();
+    ParallelFor(count, this->ThreadCount(this->Found.Faces.size()),
+                [this, cost, error](size_t begin, size_t end, int)
+                {
+                  std::vector<int32_t> vertices;
+                  for (size_t p = begin; p < end; ++p)
+                  {
+                    this->CostPiece(p, vertices, cost[p], error[p]);
+                  }
+                });
     this->SmallPieces.Reset(std::move(this->Found), std::move(costs), std::move(errors));
     this->Found = Pieces();
     this->PieceBytes = this->SmallPieces.Bytes();
     stats.Phases.Lap("pieces");
+  }
+}
+
+template <typename Metric>
+void Engine<Metric>::CostPiece(size_t p, std::vector<int32_t>& vertices, double& cost,
+                               double& error) const
+{
+  const int32_t first = this->Found.Start[p];
+  PieceVertices(this->Mesh, this->Found.Faces.data() + first,
+                size_t(this->Found.Start[p + 1] - first), vertices);
+  int32_t best = vertices.front();
+  double spread = 0;
+  cost = this->Options.PieceWeight *
+    this->TheMetric.PieceCost(vertices.data(), vertices.size(), best, spread);
+  if (this->Errors.IsEnabled())
+  {
+    // Removed, its surface is gone: at least as far as its points would travel.
+    const float* x = this->Hot[best].P;
+    const double at[3] = { x[0], x[1], x[2] };
+    error = std::max(this->Errors.PieceSquaredError(vertices.data(), vertices.size(), at), spread);
   }
 }
 

@@ -4,6 +4,7 @@
 #include "util/Parallel.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numeric>
 #include <vector>
@@ -12,41 +13,88 @@ namespace colordecimation
 {
 namespace
 {
-int32_t Root(std::vector<int32_t>& parent, int32_t v)
+/// The root of v's set: parents only ever move to lower ids in the same set, so a parent read
+/// while other threads unite still leads to a root. Halves the path on the way (v is no root,
+/// so no link writes its parent meanwhile).
+int32_t FindRoot(std::atomic<int32_t>* parent, int32_t v)
 {
-  while (parent[v] != v)
+  for (;;)
   {
-    parent[v] = parent[parent[v]];
-    v = parent[v];
+    const int32_t p = parent[v].load(std::memory_order_relaxed);
+    if (p == v)
+    {
+      return v;
+    }
+    const int32_t grandparent = parent[p].load(std::memory_order_relaxed);
+    if (grandparent != p)
+    {
+      parent[v].store(grandparent, std::memory_order_relaxed);
+    }
+    v = grandparent;
   }
-  return v;
 }
 
-/// Each vertex's root in the union of the live faces' vertices: the lowest id of its piece.
-std::vector<int32_t> UnionOfFaces(const HalfEdgeMesh& mesh)
+/// Unite the sets of a and b: the higher root goes under the lower one, if it is still a root
+/// (another thread may have linked it first: then again from the new roots).
+void Unite(std::atomic<int32_t>* parent, int32_t a, int32_t b)
 {
-  std::vector<int32_t> parent(static_cast<size_t>(mesh.GetNumberOfVertices()));
-  std::iota(parent.begin(), parent.end(), 0);
-  const int32_t slots = mesh.GetNumberOfFaceSlots();
-  for (int32_t f = 0; f < slots; ++f)
+  for (;;)
   {
-    if (mesh.IsFaceAlive(f))
+    a = FindRoot(parent, a);
+    b = FindRoot(parent, b);
+    if (a == b)
     {
-      int32_t ids[3];
-      mesh.GetFace(f, ids);
-      for (int k = 1; k < 3; ++k)
-      {
-        const int32_t a = Root(parent, ids[0]), b = Root(parent, ids[k]);
-        parent[std::max(a, b)] = std::min(a, b);
-      }
+      return;
+    }
+    int32_t high = std::max(a, b);
+    if (parent[high].compare_exchange_strong(high, std::min(a, b), std::memory_order_relaxed))
+    {
+      return;
     }
   }
-  // A parent is never above its child: in increasing order each parent is a root already.
-  for (int32_t& p : parent)
+}
+
+/**
+ * Each vertex's root in the union of the live faces' vertices: the lowest id of its piece, on
+ * `threads` threads (each uniting a range of faces; the lowest id is the root whatever the
+ * order of the unions).
+ */
+std::vector<int32_t> UnionOfFaces(const HalfEdgeMesh& mesh, int threads)
+{
+  const auto n = static_cast<size_t>(mesh.GetNumberOfVertices());
+  std::vector<std::atomic<int32_t>> parents(n);
+  std::atomic<int32_t>* parent = parents.data();
+  ParallelFor(n, threads,
+              [parent](size_t begin, size_t end, int)
+              {
+                for (size_t v = begin; v < end; ++v)
+                {
+                  parent[v].store(static_cast<int32_t>(v), std::memory_order_relaxed);
+                }
+              });
+  const HalfEdgeMesh* faces = &mesh;
+  ParallelFor(size_t(mesh.GetNumberOfFaceSlots()), threads,
+              [faces, parent](size_t begin, size_t end, int)
+              {
+                for (auto f = static_cast<int32_t>(begin); f < static_cast<int32_t>(end); ++f)
+                {
+                  if (faces->IsFaceAlive(f))
+                  {
+                    int32_t ids[3];
+                    faces->GetFace(f, ids);
+                    Unite(parent, ids[0], ids[1]);
+                    Unite(parent, ids[0], ids[2]);
+                  }
+                }
+              });
+  // A parent is never above its child: in increasing order each parent's root is known.
+  std::vector<int32_t> root(n);
+  for (size_t v = 0; v < n; ++v)
   {
-    p = parent[p];
+    const int32_t p = parent[v].load(std::memory_order_relaxed);
+    root[v] = p == static_cast<int32_t>(v) ? p : root[size_t(p)];
   }
-  return parent;
+  return root;
 }
 
 /// The live faces whose root has a piece number (numberOf[root] >= 0), listed by piece.
@@ -80,7 +128,7 @@ Pieces ListPieces(const HalfEdgeMesh& mesh, const std::vector<int32_t>& root,
 /// Every piece of the live faces, numbered by its first face.
 Pieces FindPieces(const HalfEdgeMesh& mesh)
 {
-  const std::vector<int32_t> root = UnionOfFaces(mesh);
+  const std::vector<int32_t> root = UnionOfFaces(mesh, 1);
   std::vector<int32_t> numberOf(root.size(), -1);
   int32_t count = 0;
   const int32_t slots = mesh.GetNumberOfFaceSlots();
@@ -110,9 +158,10 @@ double TriangleArea(const double* points, const int32_t ids[3])
 }
 } // namespace
 
-Pieces FindSmallPieces(const HalfEdgeMesh& mesh, const std::function<bool(int32_t)>& keep)
+Pieces FindSmallPieces(const HalfEdgeMesh& mesh, const std::function<bool(int32_t)>& keep,
+                       int threads)
 {
-  const std::vector<int32_t> root = UnionOfFaces(mesh);
+  const std::vector<int32_t> root = UnionOfFaces(mesh, threads);
   const auto n = static_cast<int32_t>(root.size());
   // Faces per root, the root of the largest piece, the roots of pieces with a kept vertex.
   std::vector<int32_t> numberOf(root.size(), 0);

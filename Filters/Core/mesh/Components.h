@@ -30,10 +30,11 @@ struct Pieces
  * The connected pieces of the live faces (through shared vertices) that a run may remove:
  * all but the one of most faces (ties: the one with the lowest vertex id), less those with a
  * vertex `keep` marks. Numbered by their lowest vertex id. Holds two ints and a byte per
- * vertex while it runs.
+ * vertex while it runs. The union of the faces runs on `threads` threads (the same pieces).
  */
 VTKCOLORDECIMATION_EXPORT Pieces FindSmallPieces(const HalfEdgeMesh& mesh,
-                                                 const std::function<bool(int32_t)>& keep);
+                                                 const std::function<bool(int32_t)>& keep,
+                                                 int threads = 1);
 
 /// The distinct vertices of the live faces among faces[0 .. count), in increasing order.
 VTKCOLORDECIMATION_EXPORT void PieceVertices(const HalfEdgeMesh& mesh, const int32_t* faces,
