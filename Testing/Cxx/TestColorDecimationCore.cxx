@@ -1924,123 +1924,162 @@ CD_TEST_CASE(ThreadsSameResult)
   }
 }
 
+/// 401 triangle strips, one of 600 triangles and the others of 1 to 40, their vertex ids and
+/// faces shuffled (so that the threads' ranges of faces unite the same sets at once).
+struct ShuffledStrips
+{
+  static constexpr int Count = 401;
+  std::vector<int32_t> First; ///< strip s: vertices First[s] .. First[s + 1] before the shuffle
+  std::vector<int> Length;    ///< triangles of each strip
+  std::vector<int32_t> Id;    ///< shuffled id of each vertex
+  std::vector<int> StripOf;   ///< strip of each face, in the shuffled face order
+  std::vector<int32_t> Triangles;
+
+  explicit ShuffledStrips(std::mt19937& random)
+    : First(Count + 1, 0)
+    , Length(Count)
+  {
+    for (int s = 0; s < Count; ++s)
+    {
+      this->Length[s] = s == 0 ? 600 : 1 + static_cast<int>(random() % 40);
+      this->First[s + 1] = this->First[s] + this->Length[s] + 2;
+    }
+    this->Id.resize(static_cast<size_t>(this->First[Count]));
+    std::iota(this->Id.begin(), this->Id.end(), 0);
+    std::shuffle(this->Id.begin(), this->Id.end(), random);
+    // Triangle i of a strip: (i, i + 1, i + 2), every other one turned (consistent orientation).
+    std::vector<std::pair<std::array<int32_t, 3>, int>> faces;
+    for (int s = 0; s < Count; ++s)
+    {
+      for (int32_t i = 0; i < this->Length[s]; ++i)
+      {
+        const int32_t a = this->Id[this->First[s] + i], b = this->Id[this->First[s] + i + 1],
+                      c = this->Id[this->First[s] + i + 2];
+        faces.push_back(
+          { i % 2 == 0 ? std::array<int32_t, 3>{ a, b, c } : std::array<int32_t, 3>{ b, a, c },
+            s });
+      }
+    }
+    std::shuffle(faces.begin(), faces.end(), random);
+    for (const auto& face : faces)
+    {
+      this->Triangles.insert(this->Triangles.end(), face.first.begin(), face.first.end());
+      this->StripOf.push_back(face.second);
+    }
+  }
+  /// Its lowest vertex id.
+  int32_t Lowest(int s) const
+  {
+    return *std::min_element(this->Id.begin() + this->First[s],
+                             this->Id.begin() + this->First[s + 1]);
+  }
+};
+
+/// FindSmallPieces on the strips, a vertex of strips 5 and 9 kept, against the strips by hand:
+/// every strip but the largest and those two, by lowest vertex id, faces in face order.
+Pieces CheckStripPieces(const ShuffledStrips& strips, const HalfEdgeMesh& mesh, int threads)
+{
+  const std::set<int32_t> kept = { strips.Id[strips.First[5]], strips.Id[strips.First[9] + 2] };
+  std::vector<std::pair<int32_t, int>> expected; // (lowest id, strip)
+  for (int s = 1; s < ShuffledStrips::Count; ++s)
+  {
+    if (s != 5 && s != 9)
+    {
+      expected.emplace_back(strips.Lowest(s), s);
+    }
+  }
+  std::sort(expected.begin(), expected.end());
+  const Pieces pieces = FindSmallPieces(
+    mesh, [&kept](int32_t v) { return kept.count(v) > 0; }, threads);
+  CD_CHECK_MSG(pieces.Size() == expected.size(), pieces.Size() << " pieces");
+  int wrong = 0;
+  for (size_t k = 0; k < std::min(pieces.Size(), expected.size()); ++k)
+  {
+    const int strip = expected[k].second;
+    wrong += pieces.Start[k + 1] - pieces.Start[k] != strips.Length[strip] ? 1 : 0;
+    for (int32_t i = pieces.Start[k]; i < pieces.Start[k + 1]; ++i)
+    {
+      wrong += strips.StripOf[size_t(pieces.Faces[i])] != strip ? 1 : 0;
+      wrong += i > pieces.Start[k] && pieces.Faces[i] <= pieces.Faces[i - 1] ? 1 : 0;
+    }
+  }
+  CD_CHECK_MSG(wrong == 0, wrong << " wrong faces or counts on " << threads << " threads");
+  return pieces;
+}
+
+/// 2,500 grey tetrahedra (closed: only removed whole) of edges 0.001-0.01 beside a crumpled
+/// 30 x 30 grid in random colours, so that they are cheaper to remove than its collapses.
+struct TetrahedraBesideGrid
+{
+  std::vector<double> Points;
+  std::vector<float> Colors;
+  std::vector<int32_t> Cells;
+
+  explicit TetrahedraBesideGrid(std::mt19937& random)
+  {
+    const PlainMesh grid = ToPlain(meshes::FlatGrid(30, 30, meshes::Pattern::Constant));
+    this->Points = grid.Points;
+    this->Cells = grid.Triangles;
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (size_t v = 0; v < this->Points.size() / 3; ++v)
+    {
+      this->Points[3 * v + 2] = 0.05 * unit(random);
+    }
+    for (int t = 0; t < 2500; ++t)
+    {
+      const auto base = static_cast<int32_t>(this->Points.size() / 3);
+      const double size = 0.1 + 0.9 * unit(random), at[3] = { 3.0 + t % 50, 3.0 + t / 50, 1.0 };
+      const double corner[4][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+      for (const auto& c : corner)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          this->Points.push_back(at[k] + 0.01 * size * c[k]);
+        }
+      }
+      const int32_t tetrahedron[12] = { 0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2 };
+      for (const int32_t corner : tetrahedron)
+      {
+        this->Cells.push_back(base + corner);
+      }
+    }
+    this->Colors.assign(this->Points.size(), 0.5f);
+    for (size_t i = 0; i < grid.Points.size(); ++i)
+    {
+      this->Colors[i] = static_cast<float>(unit(random));
+    }
+  }
+  DecimatorInput Input() const
+  {
+    DecimatorInput input;
+    input.NumberOfPoints = static_cast<int32_t>(this->Points.size() / 3);
+    input.Points = this->Points.data();
+    input.Colors = this->Colors.data();
+    input.NumberOfTriangles = static_cast<int32_t>(this->Cells.size() / 3);
+    input.Triangles = this->Cells.data();
+    return input;
+  }
+};
+
 /**
- * The pieces a run may remove (FindSmallPieces), on a mesh of 401 triangle strips (one of 600
- * triangles, the others of 1 to 40) whose vertex ids and faces are shuffled, so that the
- * threads' ranges of faces unite the same sets at once: every strip but the largest and the
- * two with a kept vertex, numbered by their lowest vertex id, each with its faces in face
- * order; the same on 1 and 3 threads. And a run whose pieces are costed on several threads
- * removes the same pieces on 1 and 3.
+ * The pieces a run may remove (FindSmallPieces), on the shuffled strips: as found by hand, and
+ * the same on 1 and 3 threads. And a run whose pieces are costed on several threads (some
+ * 10,000 faces in small pieces: two threads) removes the same pieces, and leaves the same
+ * mesh, on 1 and 3.
  */
 CD_TEST_CASE(SmallPiecesOnThreads)
 {
   std::mt19937 random(7);
-  constexpr int Strips = 401;
-  std::vector<int32_t> first(Strips + 1, 0); // strip s: vertices first[s] .. first[s + 1]
-  std::vector<int> length(Strips);
-  for (int s = 0; s < Strips; ++s)
-  {
-    length[s] = s == 0 ? 600 : 1 + static_cast<int>(random() % 40);
-    first[s + 1] = first[s] + length[s] + 2;
-  }
-  std::vector<int32_t> id(static_cast<size_t>(first[Strips]));
-  std::iota(id.begin(), id.end(), 0);
-  std::shuffle(id.begin(), id.end(), random);
-  // Triangle i of a strip: (i, i + 1, i + 2), every other one turned (consistent orientation).
-  std::vector<std::pair<std::array<int32_t, 3>, int>> faces;
-  for (int s = 0; s < Strips; ++s)
-  {
-    for (int32_t i = 0; i < length[s]; ++i)
-    {
-      const int32_t a = first[s] + i, b = a + 1, c = a + 2;
-      faces.push_back({ i % 2 == 0 ? std::array<int32_t, 3>{ id[a], id[b], id[c] }
-                                   : std::array<int32_t, 3>{ id[b], id[a], id[c] },
-                        s });
-    }
-  }
-  std::shuffle(faces.begin(), faces.end(), random);
-  std::vector<int32_t> triangles;
-  for (const auto& face : faces)
-  {
-    triangles.insert(triangles.end(), face.first.begin(), face.first.end());
-  }
+  const ShuffledStrips strips(random);
   HalfEdgeMesh mesh;
-  mesh.Build(first[Strips], triangles.data(), static_cast<int32_t>(faces.size()));
-  const std::set<int32_t> kept = { id[first[5]], id[first[9] + 2] };
-  const auto keep = [&kept](int32_t v) { return kept.count(v) > 0; };
-  // The strips expected, by lowest vertex id.
-  std::vector<std::pair<int32_t, int>> expected;
-  for (int s = 1; s < Strips; ++s)
-  {
-    if (s != 5 && s != 9)
-    {
-      expected.emplace_back(*std::min_element(id.begin() + first[s], id.begin() + first[s + 1]), s);
-    }
-  }
-  std::sort(expected.begin(), expected.end());
-  Pieces found[2];
-  for (const int threads : { 1, 3 })
-  {
-    Pieces& pieces = found[threads == 1 ? 0 : 1];
-    pieces = FindSmallPieces(mesh, keep, threads);
-    CD_CHECK_MSG(pieces.Size() == expected.size(), pieces.Size() << " pieces");
-    int wrong = 0;
-    for (size_t k = 0; k < std::min(pieces.Size(), expected.size()); ++k)
-    {
-      const int strip = expected[k].second;
-      wrong += pieces.Start[k + 1] - pieces.Start[k] != length[strip] ? 1 : 0;
-      for (int32_t i = pieces.Start[k]; i < pieces.Start[k + 1]; ++i)
-      {
-        wrong += faces[size_t(pieces.Faces[i])].second != strip ? 1 : 0;
-        wrong += i > pieces.Start[k] && pieces.Faces[i] <= pieces.Faces[i - 1] ? 1 : 0;
-      }
-    }
-    CD_CHECK_MSG(wrong == 0, wrong << " wrong faces or counts on " << threads << " threads");
-  }
-  CD_CHECK(found[0].Start == found[1].Start && found[0].Faces == found[1].Faces);
+  mesh.Build(strips.First[ShuffledStrips::Count], strips.Triangles.data(),
+             static_cast<int32_t>(strips.StripOf.size()));
+  const Pieces one = CheckStripPieces(strips, mesh, 1);
+  const Pieces three = CheckStripPieces(strips, mesh, 3);
+  CD_CHECK(one.Start == three.Start && one.Faces == three.Faces);
 
-  // A run under the attribute quadric costs the pieces on several threads: 2,500 tetrahedra
-  // (closed: only removed whole) of edges 0.001-0.01 beside a crumpled grid, to 10 %. The same
-  // pieces removed, and the same mesh left, on 1 and 3 threads.
-  const PlainMesh grid = ToPlain(meshes::FlatGrid(30, 30, meshes::Pattern::Constant));
-  std::vector<double> points = grid.Points;
-  std::vector<int32_t> cells = grid.Triangles;
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  for (size_t v = 0; v < points.size() / 3; ++v)
-  {
-    points[3 * v + 2] = 0.05 * unit(random);
-  }
-  for (int t = 0; t < 2500; ++t)
-  {
-    const auto base = static_cast<int32_t>(points.size() / 3);
-    const double size = 0.1 + 0.9 * unit(random), at[3] = { 3.0 + t % 50, 3.0 + t / 50, 1.0 };
-    const double corner[4][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
-    for (const auto& c : corner)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        points.push_back(at[k] + 0.01 * size * c[k]);
-      }
-    }
-    const int32_t tetrahedron[12] = { 0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2 };
-    for (const int32_t corner : tetrahedron)
-    {
-      cells.push_back(base + corner);
-    }
-  }
-  // The grid in random colours, the tetrahedra grey: these are cheaper to remove than the
-  // grid's collapses.
-  std::vector<float> colors(points.size(), 0.5f);
-  for (size_t i = 0; i < grid.Points.size(); ++i)
-  {
-    colors[i] = static_cast<float>(unit(random));
-  }
-  DecimatorInput input;
-  input.NumberOfPoints = static_cast<int32_t>(points.size() / 3);
-  input.Points = points.data();
-  input.Colors = colors.data();
-  input.NumberOfTriangles = static_cast<int32_t>(cells.size() / 3);
-  input.Triangles = cells.data();
+  const TetrahedraBesideGrid scene(random);
+  const DecimatorInput input = scene.Input();
   DecimatorOptions options;
   options.Metric = ErrorMetric::AttributeQuadric;
   options.Schedule = CollapseSchedule::Batched;
