@@ -346,10 +346,12 @@ template <typename Function, typename Former>
 void Engine<Metric>::ForEachAffected(int32_t v1, const std::vector<int32_t>& formerNeighbors,
                                      Function&& f, Former&& former) const
 {
-  // v1 and v0's former neighbours have a new 1-ring. The other neighbours of v1 only saw their
-  // cost towards v1 grow: only those whose choice was v1 are affected. After a full collapse
-  // every cost towards v1 may have changed (its point and quadric both did): its whole new
-  // 1-ring, which holds v0's former neighbours, is affected.
+  // v1 and v0's former neighbours have a new 1-ring. The other neighbours u of v1 only saw
+  // their cost towards v1 grow: only those whose choice was v1 are affected, or, on a seam,
+  // whose twin's choice mirrors v1 (the twin's key holds u's cost towards v1; the schedules
+  // re-cost the twins of affected seam vertices). After a full collapse every cost towards v1
+  // may have changed (its point and quadric both did): its whole new 1-ring, which holds v0's
+  // former neighbours, is affected.
   f(v1);
   if (this->TheMetric.MovesVertices())
   {
@@ -363,10 +365,16 @@ void Engine<Metric>::ForEachAffected(int32_t v1, const std::vector<int32_t>& for
       former(u);
     }
   }
+  const auto holdsCostTowardsV1 = [this, v1](int32_t u)
+  {
+    const int32_t twin = this->Seams.GetTwin(u);
+    const int32_t mirrored = twin >= 0 ? this->Best[twin] : -1;
+    return this->Best[u] == v1 || (mirrored >= 0 && this->Seams.MirrorTarget(mirrored) == v1);
+  };
   this->Mesh.ForEachNeighbor(v1,
-                             [this, v1, &formerNeighbors, &f](int32_t u)
+                             [&formerNeighbors, &f, &holdsCostTowardsV1](int32_t u)
                              {
-                               if (this->Best[u] == v1 &&
+                               if (holdsCostTowardsV1(u) &&
                                    std::find(formerNeighbors.begin(), formerNeighbors.end(), u) ==
                                      formerNeighbors.end())
                                {

@@ -91,6 +91,10 @@ struct DecimatorOptions
   /// Batched, for tests: check each choice made by ChooseNewNeighbor against a full evaluation
   /// (DecimatorStatistics::NewNeighborMismatches).
   bool VerifyNewNeighbors = false;
+  /// Batched, for tests: after each pass's re-costing, count the live vertices keyed by their
+  /// cheapest collapse whose choice or key differs from a full evaluation
+  /// (DecimatorStatistics::StaleKeys).
+  bool VerifyKeys = false;
   /// Threads of the parallel phases; 0: one per hardware thread. The result is the same for
   /// any number.
   int NumberOfThreads = 0;
@@ -144,6 +148,7 @@ struct DecimatorStatistics
   int64_t StaleBlockFlags = 0;       ///< Batched with VerifyBlockFlags: should be 0
   int64_t NewNeighborChoices = 0;    ///< Batched: re-costings by one new neighbour's cost alone
   int64_t NewNeighborMismatches = 0; ///< of them, with VerifyNewNeighbors: should be 0
+  int64_t StaleKeys = 0;             ///< Batched with VerifyKeys: should be 0
   double MeanEdgeLength = 0;         ///< of the input, in its own units (the frame's unit)
   /// The scale s that SceneRelativeWeights applied to the weights (1: none; section 12).
   double SceneWeightScale = 1;

@@ -114,6 +114,10 @@ public:
         break; // the pass that met MaximumError is the last
       }
       this->Recost(pass);
+      if (this->E.GetOptions().VerifyKeys)
+      {
+        stats.StaleKeys += this->CountStaleKeys();
+      }
       stats.Phases.Lap("re-costing");
       if (progress)
       {
@@ -146,6 +150,9 @@ private:
   void CollapseDeferred(int32_t pass, DecimatorStatistics& stats);
   /// Step 3: re-cost in vertex order, the rejected ones over their legal collapses only.
   void Recost(int32_t pass);
+  /// The live vertices keyed by their cheapest collapse whose choice or key a full evaluation
+  /// would change (VerifyKeys: none should).
+  int64_t CountStaleKeys();
   /// Check v0 -> v1, then collapse it and stamp the affected vertices, or stamp v0 as rejected;
   /// `counted`: the mesh counts the removed faces itself (otherwise the lane does).
   void TryCollapse(int32_t v0, int32_t v1, int32_t pass, Workspace& ws, Lane& lane, bool counted);
@@ -437,6 +444,21 @@ void BatchedSchedule<Metric>::Recost(int32_t pass)
                         return s - NewNeighborStamp;
                       });
   this->E.EvaluateAll(this->Rejected.data(), this->Rejected.size(), true, false, this->Keys.data());
+}
+
+template <typename Metric>
+int64_t BatchedSchedule<Metric>::CountStaleKeys()
+{
+  int64_t stale = 0;
+  for (const int32_t v : this->Live)
+  {
+    if (this->E.KeyKinds[v] == EngineBase::CheapestKey && this->E.GetMesh().IsCollapsible(v))
+    {
+      const Choice full = this->E.Evaluate(v, false, false, this->E.GetWorkspace(0));
+      stale += full.Target != this->E.Best[v] || (full.Target >= 0 && full.Cost != this->Keys[v]);
+    }
+  }
+  return stale;
 }
 
 template <typename Metric>
