@@ -846,11 +846,12 @@ CD_TEST_CASE(CountingSort)
 {
   // CountingSort against std::stable_sort, on 1 to 3 threads: every item placed once, in key
   // order, equal keys in item order, and the buckets' offsets. Keys with empty buckets and
-  // with many repeats; counts smaller than the number of threads.
+  // with many repeats; counts smaller than the number of threads; buckets enough for the
+  // offsets to be summed on several threads.
   std::mt19937 rng(2024);
   for (const size_t count : { size_t(0), size_t(2), size_t(1000), size_t(50000) })
   {
-    for (const size_t buckets : { size_t(1), size_t(7), size_t(5000) })
+    for (const size_t buckets : { size_t(1), size_t(7), size_t(5000), size_t(40000) })
     {
       std::uniform_int_distribution<int32_t> pick(0, static_cast<int32_t>(buckets) - 1);
       std::vector<int32_t> keys(count);

@@ -196,7 +196,7 @@ void EngineBase::BuildMesh(const DecimatorInput& input, DecimatorStatistics& sta
       this->Flipped = std::vector<uint8_t>(); // only non-orientable places: as built
     }
   }
-  this->Order.NewVertex = std::vector<int32_t>();
+  this->Order.NewVertex = Buffer<int32_t>();
   this->FindSeamsAndLocks(input, stats);
 }
 

@@ -12,7 +12,7 @@ namespace colordecimation
 /// their targets alongside, so that pairing scans two short contiguous rows.
 struct HalfEdgeMesh::OutgoingRows
 {
-  std::vector<int32_t> Offsets;       ///< row of vertex v: [Offsets[v], Offsets[v + 1])
+  Buffer<int32_t> Offsets;            ///< row of vertex v: [Offsets[v], Offsets[v + 1])
   Buffer<int32_t> HalfEdges, Targets; ///< each slot filled once
 };
 

@@ -122,7 +122,7 @@ void OrderFaces(const int32_t* triangles, size_t nt, int threads, SpatialOrder& 
               });
   order.OldFace.resize(nt);
   int32_t* oldFace = order.OldFace.data();
-  std::vector<int32_t> faceStart;
+  Buffer<int32_t> faceStart;
   CountingSort(
     nt, n, threads, [keys](size_t f) { return keys[f]; },
     [oldFace](size_t f, int32_t slot) { oldFace[slot] = static_cast<int32_t>(f); }, faceStart);

@@ -17,6 +17,7 @@
 #ifndef colordecimation_SpatialOrder_h
 #define colordecimation_SpatialOrder_h
 
+#include "util/Buffer.h"
 #include "util/Parallel.h"
 #include "vtkColorDecimationModule.h" // for export macro
 
@@ -29,9 +30,10 @@ namespace colordecimation
 
 struct SpatialOrder
 {
-  std::vector<int32_t> NewVertex; ///< input vertex -> renumbered vertex
-  std::vector<int32_t> OldVertex; ///< renumbered vertex -> input vertex
-  std::vector<int32_t> OldFace;   ///< renumbered triangle -> input triangle
+  // Written in parallel, each slot once (a Buffer is not zeroed first).
+  Buffer<int32_t> NewVertex; ///< input vertex -> renumbered vertex
+  Buffer<int32_t> OldVertex; ///< renumbered vertex -> input vertex
+  Buffer<int32_t> OldFace;   ///< renumbered triangle -> input triangle
 
   bool Empty() const { return this->OldVertex.empty(); }
 };

@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <numeric>
 #include <thread>
 #include <vector>
 
@@ -194,44 +195,71 @@ void CollectInOrder(size_t count, int threads, const Make& make, std::vector<T>&
 /**
  * Stable counting sort of the items [0, count) by key(i) in [0, buckets), on up to `threads`
  * threads: place(i, slot) is called once for each item with its slot in the sorted order, and
- * `offsets` receives where each bucket starts (buckets + 1 values). Each thread counts, then
- * places, its own contiguous range of items; the slots are the same whatever the number of
- * threads (within a bucket, the items keep their order).
+ * `offsets` (a std::vector or Buffer of the slots' type) receives where each bucket starts
+ * (buckets + 1 values). Each thread counts, then places, its own contiguous range of items; the
+ * slots are the same whatever the number of threads (within a bucket, the items keep their
+ * order).
  */
-template <typename Index, typename Key, typename Place>
+template <typename Key, typename Place, typename Offsets>
 void CountingSort(size_t count, size_t buckets, int threads, const Key& key, const Place& place,
-                  std::vector<Index>& offsets)
+                  Offsets& offsets)
 {
-  // Each thread counts into its own row of `buckets` counters: no more threads than keep those
-  // rows within four counters per item.
+  using Index = typename Offsets::value_type;
+  // Each thread counts into its own row of `buckets` counters, which it zeroes (and so touches
+  // first) itself: no more threads than keep those rows within four counters per item.
   const size_t rows = std::max<size_t>(1, 4 * count / std::max<size_t>(buckets, 1));
   threads = static_cast<int>(std::min<size_t>(static_cast<size_t>(std::max(threads, 1)), rows));
-  std::vector<Index> counters(static_cast<size_t>(threads) * buckets, 0);
+  Buffer<Index> counters(static_cast<size_t>(threads) * buckets);
   Index* counts = counters.data();
   ParallelFor(count, threads,
               [counts, buckets, key](size_t begin, size_t end, int t)
               {
                 Index* mine = counts + static_cast<size_t>(t) * buckets;
+                std::fill(mine, mine + buckets, Index(0));
                 for (size_t i = begin; i < end; ++i)
                 {
                   ++mine[key(i)];
                 }
               });
-  // Each thread's counters become where its next item of each bucket goes.
-  offsets.assign(buckets + 1, 0);
-  Index running = 0;
-  for (size_t b = 0; b < buckets; ++b)
-  {
-    offsets[b] = running;
-    for (int t = 0; t < threads; ++t)
-    {
-      Index& c = counts[static_cast<size_t>(t) * buckets + b];
-      const Index n = c;
-      c = running;
-      running += n;
-    }
-  }
-  offsets[buckets] = running;
+  // Each thread's counters become where its next item of each bucket goes: an exclusive scan,
+  // bucket by bucket and in each bucket thread by thread, by ranges of buckets on several
+  // threads (each range's total first).
+  offsets.resize(buckets + 1); // every value written below
+  Index* starts = offsets.data();
+  const int scanners = ThreadsFor(buckets, threads, size_t(1) << 14);
+  std::vector<Index> totals(static_cast<size_t>(scanners) + 1, 0);
+  Index* total = totals.data();
+  ParallelFor(buckets, scanners,
+              [counts, buckets, threads, total](size_t begin, size_t end, int r)
+              {
+                Index sum = 0;
+                for (size_t b = begin; b < end; ++b)
+                {
+                  for (int t = 0; t < threads; ++t)
+                  {
+                    sum += counts[static_cast<size_t>(t) * buckets + b];
+                  }
+                }
+                total[r + 1] = sum;
+              });
+  std::partial_sum(totals.begin(), totals.end(), totals.begin());
+  ParallelFor(buckets, scanners,
+              [counts, buckets, threads, total, starts](size_t begin, size_t end, int r)
+              {
+                Index running = total[r];
+                for (size_t b = begin; b < end; ++b)
+                {
+                  starts[b] = running;
+                  for (int t = 0; t < threads; ++t)
+                  {
+                    Index& c = counts[static_cast<size_t>(t) * buckets + b];
+                    const Index n = c;
+                    c = running;
+                    running += n;
+                  }
+                }
+              });
+  starts[buckets] = total[scanners];
   ParallelFor(count, threads,
               [counts, buckets, key, place](size_t begin, size_t end, int t)
               {
