@@ -2170,9 +2170,9 @@ CD_TEST_CASE(NewNeighborChoices)
  * ChooseNewNeighbor updated, and those it left alone because no cost their key holds changed.
  * For the three metrics, the attribute quadric with and without the kept vertex's error, on a
  * jittered sphere with random colours and on a seam sphere, whose seam vertices collapse in
- * pairs and whose keys hold their mirror's cost too: a seam vertex whose twin's choice mirrors
- * a v1 is affected by the collapse into v1 even where its own choice is another vertex (its
- * twin's choice can differ from the mirror of its own once a rejection re-costed the twin).
+ * pairs and whose keys hold their mirror's cost too: a neighbour of v1 whose twin's choice
+ * mirrors v1 is affected by the collapse into v1 even where its own choice is another vertex
+ * (twins' choices differ once a refused pair has re-costed one of them over its legal pairs).
  */
 CD_TEST_CASE(KeysExactAfterEachPass)
 {
