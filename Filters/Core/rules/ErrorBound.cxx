@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace colordecimation
 {
@@ -65,6 +66,25 @@ void AddFacePlane(const HalfEdgeMesh& mesh, const float* positions, int stride, 
 }
 } // namespace
 
+namespace
+{
+/// The mean squared distance q / area of the planes' points: 0 without area or where rounding
+/// took q below 0, and the largest double where it is no finite number (the products of huge
+/// coordinates overflowed): an error no finite bound admits (as before), which the infinite
+/// bound of a record does admit, so that a run with a record makes the collapses a run without
+/// one makes, and which the record can hold (its errors are finite).
+double MeanSquared(double q, double area)
+{
+  constexpr double largest = std::numeric_limits<double>::max();
+  if (!(area > 0.0))
+  {
+    return 0.0;
+  }
+  const double mean = std::max(q, 0.0) / area; // NaN stays NaN
+  return mean <= largest ? mean : largest;
+}
+} // namespace
+
 void ErrorBound::Initialize(const HalfEdgeMesh& mesh, const float* positions, int stride,
                             double bound, int threads)
 {
@@ -111,7 +131,7 @@ double ErrorBound::PlaneSum::Mean(const double x[3]) const
   const double ax2 = a[2] * x[0] + a[4] * x[1] + a[5] * x[2];
   const double q = x[0] * ax0 + x[1] * ax1 + x[2] * ax2 +
     2.0 * (this->B[0] * x[0] + this->B[1] * x[1] + this->B[2] * x[2]) + this->C;
-  return this->Area > 0.0 ? std::max(q, 0.0) / this->Area : 0.0;
+  return MeanSquared(q, this->Area);
 }
 
 double ErrorBound::SquaredError(int32_t v0, int32_t v1, const double x[3]) const
@@ -131,8 +151,7 @@ double ErrorBound::SquaredError(int32_t v0, int32_t v1, const double x[3]) const
   const double q = x[0] * ax0 + x[1] * ax1 + x[2] * ax2 +
     2.0 * ((q0.B[0] + q1.B[0]) * x[0] + (q0.B[1] + q1.B[1]) * x[1] + (q0.B[2] + q1.B[2]) * x[2]) +
     q0.C + q1.C;
-  const double area = q0.Area + q1.Area;
-  return area > 0.0 ? std::max(q, 0.0) / area : 0.0;
+  return MeanSquared(q, q0.Area + q1.Area);
 }
 
 double ErrorBound::PieceSquaredError(const int32_t* vertices, size_t count, const double x[3]) const
