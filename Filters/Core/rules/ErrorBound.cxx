@@ -64,10 +64,7 @@ void AddFacePlane(const HalfEdgeMesh& mesh, const float* positions, int stride, 
     q.Area += area;
   }
 }
-} // namespace
 
-namespace
-{
 /// The mean squared distance q / area of the planes' points: 0 without area or where rounding
 /// took q below 0, and the largest double where it is no finite number (the products of huge
 /// coordinates overflowed): an error no finite bound admits (as before), which the infinite
