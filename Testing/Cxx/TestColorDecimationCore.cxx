@@ -1781,6 +1781,18 @@ CD_TEST_CASE(RenumberSameResult)
 
 //------------------------------------------------------------------------------
 /// A jittered sphere with random colours: no two collapses cost exactly the same.
+/// The core's input on a plain mesh's points and triangles, with `colors` (3 a point).
+DecimatorInput InputOf(const PlainMesh& m, const float* colors)
+{
+  DecimatorInput input;
+  input.NumberOfPoints = m.NumberOfPoints();
+  input.Points = m.Points.data();
+  input.Colors = colors;
+  input.NumberOfTriangles = m.NumberOfTriangles();
+  input.Triangles = m.Triangles.data();
+  return input;
+}
+
 DecimatorInput JitteredSphere(int resolution, std::vector<double>& points,
                               std::vector<float>& colors, std::vector<int32_t>& triangles)
 {
@@ -2126,12 +2138,7 @@ CD_TEST_CASE(NewNeighborChoices)
   std::vector<DecimatorInput> inputs(4, sphere);
   for (const int i : { 1, 2, 3 })
   {
-    const PlainMesh& m = i == 2 ? tilted : grid;
-    inputs[i].NumberOfPoints = m.NumberOfPoints();
-    inputs[i].Points = m.Points.data();
-    inputs[i].Colors = i == 3 ? ramp.data() : grey.data();
-    inputs[i].NumberOfTriangles = m.NumberOfTriangles();
-    inputs[i].Triangles = m.Triangles.data();
+    inputs[i] = InputOf(i == 2 ? tilted : grid, i == 3 ? ramp.data() : grey.data());
   }
   for (const DecimatorInput& input : inputs)
   {
@@ -2179,7 +2186,7 @@ CD_TEST_CASE(KeysExactAfterEachPass)
   std::vector<double> points;
   std::vector<float> colors;
   std::vector<int32_t> triangles;
-  DecimatorInput sphere = JitteredSphere(120, points, colors, triangles);
+  const DecimatorInput sphere = JitteredSphere(120, points, colors, triangles);
   const PlainMesh seamed = ToPlain(meshes::SeamSphere(100));
   std::vector<float> seamColors(seamed.Points.size());
   std::mt19937 rng(5);
@@ -2188,12 +2195,7 @@ CD_TEST_CASE(KeysExactAfterEachPass)
   {
     c = unit(rng);
   }
-  DecimatorInput seamSphere;
-  seamSphere.NumberOfPoints = seamed.NumberOfPoints();
-  seamSphere.Points = seamed.Points.data();
-  seamSphere.Colors = seamColors.data();
-  seamSphere.NumberOfTriangles = seamed.NumberOfTriangles();
-  seamSphere.Triangles = seamed.Triangles.data();
+  const DecimatorInput seamSphere = InputOf(seamed, seamColors.data());
   for (const DecimatorInput* input : { &sphere, &seamSphere })
   {
     for (const ErrorMetric metric :
