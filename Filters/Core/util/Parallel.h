@@ -193,6 +193,51 @@ void CollectInOrder(size_t count, int threads, const Make& make, std::vector<T>&
 }
 
 /**
+ * The exclusive scan of a counting sort's counters, `rows` rows of `buckets` (a row per thread),
+ * bucket by bucket and in each bucket row by row: each counter becomes where its row's next item
+ * of its bucket goes, and starts[b] where bucket b starts (buckets + 1 values). By ranges of
+ * buckets on several threads, each range's total first.
+ */
+template <typename Index>
+void ScanCounters(Index* counts, size_t buckets, int rows, Index* starts)
+{
+  const int scanners = ThreadsFor(buckets, rows, size_t(1) << 14);
+  std::vector<Index> totals(static_cast<size_t>(scanners) + 1, 0);
+  Index* total = totals.data();
+  ParallelFor(buckets, scanners,
+              [counts, buckets, rows, total](size_t begin, size_t end, int r)
+              {
+                Index sum = 0;
+                for (size_t b = begin; b < end; ++b)
+                {
+                  for (int t = 0; t < rows; ++t)
+                  {
+                    sum += counts[static_cast<size_t>(t) * buckets + b];
+                  }
+                }
+                total[r + 1] = sum;
+              });
+  std::partial_sum(totals.begin(), totals.end(), totals.begin());
+  ParallelFor(buckets, scanners,
+              [counts, buckets, rows, total, starts](size_t begin, size_t end, int r)
+              {
+                Index running = total[r];
+                for (size_t b = begin; b < end; ++b)
+                {
+                  starts[b] = running;
+                  for (int t = 0; t < rows; ++t)
+                  {
+                    Index& c = counts[static_cast<size_t>(t) * buckets + b];
+                    const Index n = c;
+                    c = running;
+                    running += n;
+                  }
+                }
+              });
+  starts[buckets] = total[scanners];
+}
+
+/**
  * Stable counting sort of the items [0, count) by key(i) in [0, buckets), on up to `threads`
  * threads: place(i, slot) is called once for each item with its slot in the sorted order, and
  * `offsets` (a std::vector or Buffer of the slots' type) receives where each bucket starts
@@ -221,45 +266,8 @@ void CountingSort(size_t count, size_t buckets, int threads, const Key& key, con
                   ++mine[key(i)];
                 }
               });
-  // Each thread's counters become where its next item of each bucket goes: an exclusive scan,
-  // bucket by bucket and in each bucket thread by thread, by ranges of buckets on several
-  // threads (each range's total first).
-  offsets.resize(buckets + 1); // every value written below
-  Index* starts = offsets.data();
-  const int scanners = ThreadsFor(buckets, threads, size_t(1) << 14);
-  std::vector<Index> totals(static_cast<size_t>(scanners) + 1, 0);
-  Index* total = totals.data();
-  ParallelFor(buckets, scanners,
-              [counts, buckets, threads, total](size_t begin, size_t end, int r)
-              {
-                Index sum = 0;
-                for (size_t b = begin; b < end; ++b)
-                {
-                  for (int t = 0; t < threads; ++t)
-                  {
-                    sum += counts[static_cast<size_t>(t) * buckets + b];
-                  }
-                }
-                total[r + 1] = sum;
-              });
-  std::partial_sum(totals.begin(), totals.end(), totals.begin());
-  ParallelFor(buckets, scanners,
-              [counts, buckets, threads, total, starts](size_t begin, size_t end, int r)
-              {
-                Index running = total[r];
-                for (size_t b = begin; b < end; ++b)
-                {
-                  starts[b] = running;
-                  for (int t = 0; t < threads; ++t)
-                  {
-                    Index& c = counts[static_cast<size_t>(t) * buckets + b];
-                    const Index n = c;
-                    c = running;
-                    running += n;
-                  }
-                }
-              });
-  starts[buckets] = total[scanners];
+  offsets.resize(buckets + 1); // every value written by ScanCounters
+  ScanCounters(counts, buckets, threads, offsets.data());
   ParallelFor(count, threads,
               [counts, buckets, key, place](size_t begin, size_t end, int t)
               {
