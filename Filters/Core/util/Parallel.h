@@ -196,7 +196,7 @@ void CollectInOrder(size_t count, int threads, const Make& make, std::vector<T>&
  * The exclusive scan of a counting sort's counters, `rows` rows of `buckets` (a row per thread),
  * bucket by bucket and in each bucket row by row: each counter becomes where its row's next item
  * of its bucket goes, and starts[b] where bucket b starts (buckets + 1 values). By ranges of
- * buckets on several threads, each range's total first.
+ * buckets on up to `rows` threads, each range's total first.
  */
 template <typename Index>
 void ScanCounters(Index* counts, size_t buckets, int rows, Index* starts)
