@@ -2455,6 +2455,101 @@ CD_TEST_CASE(RulesLinkCondition)
   CheckNotCollapsible(rules, mesh);
 }
 
+/**
+ * The topological rules as docs/ALGORITHM.md section 5 lists them, each on its own, the valence
+ * of vl and vr counted in full whatever the rest says: what CheckTopology must agree with.
+ * `valenceRule` false leaves that rule out (to count where it alone decides).
+ */
+CollapseVerdict TopologyByDefinition(const HalfEdgeMesh& mesh, int32_t v0, int32_t v1,
+                                     bool valenceRule)
+{
+  if (v0 == v1 || !mesh.IsCollapsible(v0) || !mesh.IsCollapsible(v1))
+  {
+    return CollapseVerdict::NotCollapsible;
+  }
+  const int32_t sides[2] = { mesh.FindHalfEdge(v0, v1), mesh.FindHalfEdge(v1, v0) };
+  if (sides[0] < 0 && sides[1] < 0)
+  {
+    return CollapseVerdict::NotCollapsible;
+  }
+  if (mesh.IsBoundaryVertex(v0) && sides[0] >= 0 && sides[1] >= 0)
+  {
+    return CollapseVerdict::Boundary; // an interior edge of a boundary vertex
+  }
+  std::set<int32_t> opposite;
+  bool link = false;
+  for (const int32_t h : sides)
+  {
+    if (h >= 0)
+    {
+      const int32_t x = mesh.Origin(HalfEdgeMesh::Prev(h));
+      link = link || (mesh.Twin(HalfEdgeMesh::Next(h)) < 0 && mesh.Twin(HalfEdgeMesh::Prev(h)) < 0);
+      link = link || mesh.IsLocked(x) || opposite.count(x) != 0;
+      link = link || (valenceRule && !mesh.IsBoundaryVertex(x) && mesh.Valence(x) <= 3);
+      opposite.insert(x);
+    }
+  }
+  std::set<int32_t> ring0, ring1;
+  mesh.ForEachNeighbor(v0, [&](int32_t u) { ring0.insert(u); });
+  mesh.ForEachNeighbor(v1, [&](int32_t u) { ring1.insert(u); });
+  for (const int32_t u : ring0)
+  {
+    link = link || (u != v1 && ring1.count(u) != 0 && opposite.count(u) == 0);
+  }
+  return link ? CollapseVerdict::LinkCondition : CollapseVerdict::Legal;
+}
+
+/// Random collapses down to meshes where none is legal (a closed sphere to a tetrahedron):
+/// at each step CheckTopology gives the verdicts of TopologyByDefinition on every edge of a
+/// random vertex, also where the valence of vl or vr alone refuses a collapse.
+CD_TEST_CASE(RulesTopologyByDefinition)
+{
+  CollapseRules rules{ CollapseRuleOptions() };
+  std::mt19937 rng(5);
+  int64_t checked = 0, byValenceAlone = 0, disagreements = 0;
+  for (auto poly : { meshes::Icosphere(1, meshes::Pattern::Constant),
+                     meshes::Icosphere(2, meshes::Pattern::Constant),
+                     meshes::Torus(9, 5, meshes::Pattern::Constant),
+                     meshes::Grid(6, 5, meshes::Pattern::Constant) })
+  {
+    const PlainMesh m = ToPlain(poly);
+    for (int run = 0; run < 20; ++run)
+    {
+      HalfEdgeMesh mesh;
+      mesh.Build(m.NumberOfPoints(), m.Triangles.data(), m.NumberOfTriangles());
+      std::uniform_int_distribution<int32_t> pick(0, m.NumberOfPoints() - 1);
+      for (int attempt = 0; attempt < 4000; ++attempt)
+      {
+        const int32_t v0 = pick(rng);
+        std::vector<int32_t> legal;
+        mesh.ForEachNeighbor(v0,
+                             [&](int32_t v1)
+                             {
+                               const CollapseVerdict expected =
+                                 TopologyByDefinition(mesh, v0, v1, true);
+                               disagreements += rules.CheckTopology(mesh, v0, v1) != expected;
+                               byValenceAlone +=
+                                 expected != TopologyByDefinition(mesh, v0, v1, false);
+                               ++checked;
+                               if (expected == CollapseVerdict::Legal)
+                               {
+                                 legal.push_back(v1);
+                               }
+                             });
+        if (!legal.empty())
+        {
+          mesh.Collapse(v0, legal[rng() % legal.size()]);
+        }
+      }
+    }
+  }
+  std::cout << "  " << checked << " verdicts, " << byValenceAlone
+            << " refused by the valence of vl or vr alone, " << disagreements << " disagreements"
+            << std::endl;
+  CD_CHECK(disagreements == 0);
+  CD_CHECK(byValenceAlone > 0);
+}
+
 /// The pyramid with the apex at height h, as float positions.
 std::vector<float> PyramidPositions(double h)
 {

@@ -148,10 +148,6 @@ CollapseVerdict CollapseRules::CheckTopology(const HalfEdgeMesh& mesh, int32_t v
     {
       return CollapseVerdict::LinkCondition;
     }
-    if (!mesh.IsBoundaryVertex(x) && mesh.IsValenceAtMost(x, 3))
-    {
-      return CollapseVerdict::LinkCondition;
-    }
     opposite[s] = x;
   }
   if (opposite[0] >= 0 && opposite[0] == opposite[1])
@@ -161,9 +157,11 @@ CollapseVerdict CollapseRules::CheckTopology(const HalfEdgeMesh& mesh, int32_t v
 
   // The 1-rings of v0 and v1 may only share vl and vr.
   this->Neighbors.clear();
+  int valence = 0; // v0's
   mesh.ForEachNeighbor(v0,
                        [&](int32_t u)
                        {
+                         ++valence;
                          if (u != v1 && u != opposite[0] && u != opposite[1])
                          {
                            this->Neighbors.push_back(u);
@@ -179,7 +177,25 @@ CollapseVerdict CollapseRules::CheckTopology(const HalfEdgeMesh& mesh, int32_t v
                              this->Neighbors.end();
                          }
                        });
-  return shared ? CollapseVerdict::LinkCondition : CollapseVerdict::Legal;
+  if (shared)
+  {
+    return CollapseVerdict::LinkCondition;
+  }
+  // An interior vl or vr of valence 3 would leave two triangles on the same three vertices. With
+  // the rings apart, its third neighbour can only be the other opposite vertex, and then v0's
+  // fan is closed by three triangles (docs/ALGORITHM.md, section 5): only then are their fans
+  // walked.
+  if (valence == 3 && opposite[0] >= 0 && opposite[1] >= 0)
+  {
+    for (const int32_t x : opposite)
+    {
+      if (!mesh.IsBoundaryVertex(x) && mesh.IsValenceAtMost(x, 3))
+      {
+        return CollapseVerdict::LinkCondition;
+      }
+    }
+  }
+  return CollapseVerdict::Legal;
 }
 
 CollapseVerdict CollapseRules::CheckGeometry(const HalfEdgeMesh& mesh, const float* positions,
