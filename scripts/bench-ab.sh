@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # Two builds of the CLI in alternating rounds on one mesh: the filter's time and its phases
 # (medians), the ratio new / old overall and per round, and whether the outputs are the same
-# file (docs/BENCHMARK.md). The old build is usually a worktree of an earlier commit:
+# file (docs/BENCHMARK.md). Make both builds the same way, each in a worktree of a path of the
+# same length (two builds of the same code in other places ran a phase 30 % apart):
 #   git worktree add /tmp/old <commit> && cmake -S /tmp/old -B /tmp/old/build \
 #     -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF && cmake --build /tmp/old/build \
 #     --target color-decimate
+# and the same for the new commit in /tmp/new (uncommitted changes: git diff | git -C /tmp/new
+# apply).
 #
 # Usage: scripts/bench-ab.sh OLD_CLI NEW_CLI [MESH] [ROUNDS] [color-decimate options...]
 # (default: the 7 mm kitchen of ../shared/data, 5 rounds, the defaults)
