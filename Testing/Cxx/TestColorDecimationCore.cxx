@@ -2456,12 +2456,13 @@ CD_TEST_CASE(RulesLinkCondition)
 }
 
 /**
- * The topological rules as docs/ALGORITHM.md section 5 lists them, each on its own, the valence
- * of vl and vr counted in full whatever the rest says: what CheckTopology must agree with.
- * `valenceRule` false leaves that rule out (to count where it alone decides).
+ * The topological rules as docs/ALGORITHM.md section 5 lists them, each on its own and over
+ * the same mesh queries, the valence of vl and vr counted in full whatever the rest says: what
+ * CheckTopology must agree with. `valenceRule` false leaves that rule out (to count where it
+ * alone decides).
  */
 CollapseVerdict TopologyByDefinition(const HalfEdgeMesh& mesh, int32_t v0, int32_t v1,
-                                     bool valenceRule)
+                                     bool preserveBoundary, bool valenceRule)
 {
   if (v0 == v1 || !mesh.IsCollapsible(v0) || !mesh.IsCollapsible(v1))
   {
@@ -2472,9 +2473,9 @@ CollapseVerdict TopologyByDefinition(const HalfEdgeMesh& mesh, int32_t v0, int32
   {
     return CollapseVerdict::NotCollapsible;
   }
-  if (mesh.IsBoundaryVertex(v0) && sides[0] >= 0 && sides[1] >= 0)
+  if (mesh.IsBoundaryVertex(v0) && (preserveBoundary || (sides[0] >= 0 && sides[1] >= 0)))
   {
-    return CollapseVerdict::Boundary; // an interior edge of a boundary vertex
+    return CollapseVerdict::Boundary; // kept, or an interior edge of a boundary vertex
   }
   std::set<int32_t> opposite;
   bool link = false;
@@ -2499,47 +2500,82 @@ CollapseVerdict TopologyByDefinition(const HalfEdgeMesh& mesh, int32_t v0, int32
   return link ? CollapseVerdict::LinkCondition : CollapseVerdict::Legal;
 }
 
-/// Random collapses down to meshes where none is legal (a closed sphere to a tetrahedron):
-/// at each step CheckTopology gives the verdicts of TopologyByDefinition on every edge of a
-/// random vertex, also where the valence of vl or vr alone refuses a collapse.
-CD_TEST_CASE(RulesTopologyByDefinition)
+/// Closed and open meshes, some with faces deleted at random (holes; what the build cannot
+/// represent as a manifold fan is locked).
+std::vector<PlainMesh> TopologyCases(std::mt19937& rng)
 {
-  CollapseRules rules{ CollapseRuleOptions() };
-  std::mt19937 rng(5);
-  int64_t checked = 0, byValenceAlone = 0, disagreements = 0;
+  std::vector<PlainMesh> cases;
   for (auto poly : { meshes::Icosphere(1, meshes::Pattern::Constant),
                      meshes::Icosphere(2, meshes::Pattern::Constant),
                      meshes::Torus(9, 5, meshes::Pattern::Constant),
                      meshes::Grid(6, 5, meshes::Pattern::Constant) })
   {
-    const PlainMesh m = ToPlain(poly);
-    for (int run = 0; run < 20; ++run)
+    cases.push_back(ToPlain(poly));
+  }
+  for (int k : { 3, 4, 6 })
+  {
+    PlainMesh annulus;
+    Annulus(k, annulus.Triangles, annulus.Positions);
+    annulus.Points.assign(annulus.Positions.begin(), annulus.Positions.end());
+    cases.push_back(annulus);
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    PlainMesh holed = cases[size_t(i)];
+    for (int hole = 0; hole < 2 + 3 * i; ++hole)
     {
+      const size_t f = rng() % size_t(holed.NumberOfTriangles());
+      holed.Triangles.erase(holed.Triangles.begin() + 3 * f, holed.Triangles.begin() + 3 * f + 3);
+    }
+    cases.push_back(holed);
+  }
+  return cases;
+}
+
+/// Random collapses until none is legal (a closed sphere down to a tetrahedron), with and
+/// without PreserveBoundary: after each collapse CheckTopology gives the verdicts of
+/// TopologyByDefinition on both directions of every edge, also where the valence of vl or vr
+/// alone refuses a collapse.
+CD_TEST_CASE(RulesTopologyByDefinition)
+{
+  std::mt19937 rng(5);
+  int64_t checked = 0, byValenceAlone = 0, disagreements = 0;
+  for (const PlainMesh& m : TopologyCases(rng))
+  {
+    for (int run = 0; run < 6; ++run)
+    {
+      CollapseRuleOptions options;
+      options.PreserveBoundary = run % 2 == 1;
+      CollapseRules rules(options);
       HalfEdgeMesh mesh;
       mesh.Build(m.NumberOfPoints(), m.Triangles.data(), m.NumberOfTriangles());
-      std::uniform_int_distribution<int32_t> pick(0, m.NumberOfPoints() - 1);
-      for (int attempt = 0; attempt < 4000; ++attempt)
+      for (;;)
       {
-        const int32_t v0 = pick(rng);
-        std::vector<int32_t> legal;
-        mesh.ForEachNeighbor(v0,
-                             [&](int32_t v1)
-                             {
-                               const CollapseVerdict expected =
-                                 TopologyByDefinition(mesh, v0, v1, true);
-                               disagreements += rules.CheckTopology(mesh, v0, v1) != expected;
-                               byValenceAlone +=
-                                 expected != TopologyByDefinition(mesh, v0, v1, false);
-                               ++checked;
-                               if (expected == CollapseVerdict::Legal)
-                               {
-                                 legal.push_back(v1);
-                               }
-                             });
-        if (!legal.empty())
+        std::vector<std::pair<int32_t, int32_t>> legal;
+        for (int32_t v0 = 0; v0 < mesh.GetNumberOfVertices(); ++v0)
         {
-          mesh.Collapse(v0, legal[rng() % legal.size()]);
+          mesh.ForEachNeighbor(
+            v0,
+            [&](int32_t v1)
+            {
+              const CollapseVerdict expected =
+                TopologyByDefinition(mesh, v0, v1, options.PreserveBoundary, true);
+              disagreements += rules.CheckTopology(mesh, v0, v1) != expected;
+              byValenceAlone +=
+                expected != TopologyByDefinition(mesh, v0, v1, options.PreserveBoundary, false);
+              ++checked;
+              if (expected == CollapseVerdict::Legal)
+              {
+                legal.emplace_back(v0, v1);
+              }
+            });
         }
+        if (legal.empty())
+        {
+          break;
+        }
+        const auto& pick = legal[rng() % legal.size()];
+        mesh.Collapse(pick.first, pick.second);
       }
     }
   }
