@@ -112,59 +112,48 @@ CollapseVerdict CollapseRules::Check(const HalfEdgeMesh& mesh, const float* posi
   return this->CheckGeometry(mesh, positions, v0, v1, stride, newPosition);
 }
 
-CollapseVerdict CollapseRules::CheckTopology(const HalfEdgeMesh& mesh, int32_t v0, int32_t v1)
+namespace
 {
-  if (v0 == v1 || !mesh.IsCollapsible(v0) || !mesh.IsCollapsible(v1))
-  {
-    return CollapseVerdict::NotCollapsible;
-  }
-  const int32_t h01 = mesh.FindHalfEdge(v0, v1);
-  const int32_t h10 = mesh.FindReverseHalfEdge(v0, v1, h01);
-  if (h01 < 0 && h10 < 0)
-  {
-    return CollapseVerdict::NotCollapsible;
-  }
-  const bool edgeOnBoundary = h01 < 0 || h10 < 0;
-  if (mesh.IsBoundaryVertex(v0) && (this->Options.PreserveBoundary || !edgeOnBoundary))
-  {
-    return CollapseVerdict::Boundary;
-  }
-
-  int32_t opposite[2] = { -1, -1 };
-  const int32_t sides[2] = { h01, h10 };
+/// vl and vr, the vertices opposite the edge in the triangles of its half-edges `sides` (-1
+/// where a side has none); false if such a triangle would hang by a vertex, vl or vr is locked,
+/// or they are the same vertex (rules 3 and 4).
+bool FindOpposite(const HalfEdgeMesh& mesh, const int32_t sides[2], int32_t opposite[2])
+{
   for (int s = 0; s < 2; ++s)
   {
     const int32_t h = sides[s];
+    opposite[s] = -1;
     if (h < 0)
     {
       continue;
     }
     if (mesh.Twin(HalfEdgeMesh::Next(h)) < 0 && mesh.Twin(HalfEdgeMesh::Prev(h)) < 0)
     {
-      return CollapseVerdict::LinkCondition; // the triangle would hang by a vertex
+      return false; // the triangle would hang by a vertex
     }
-    const int32_t x = mesh.Origin(HalfEdgeMesh::Prev(h));
-    if (mesh.IsLocked(x))
+    opposite[s] = mesh.Origin(HalfEdgeMesh::Prev(h));
+    if (mesh.IsLocked(opposite[s]))
     {
-      return CollapseVerdict::LinkCondition;
+      return false;
     }
-    opposite[s] = x;
   }
-  if (opposite[0] >= 0 && opposite[0] == opposite[1])
-  {
-    return CollapseVerdict::LinkCondition;
-  }
+  return opposite[0] < 0 || opposite[0] != opposite[1];
+}
 
-  // The 1-rings of v0 and v1 may only share vl and vr.
-  this->Neighbors.clear();
-  int valence = 0; // v0's
+/// Whether the 1-rings of v0 and v1 share a vertex other than vl and vr (rule 5); v0's valence
+/// into `valence`. `neighbors`: scratch.
+bool RingsShare(const HalfEdgeMesh& mesh, int32_t v0, int32_t v1, const int32_t opposite[2],
+                std::vector<int32_t>& neighbors, int& valence)
+{
+  neighbors.clear();
+  valence = 0;
   mesh.ForEachNeighbor(v0,
                        [&](int32_t u)
                        {
                          ++valence;
                          if (u != v1 && u != opposite[0] && u != opposite[1])
                          {
-                           this->Neighbors.push_back(u);
+                           neighbors.push_back(u);
                          }
                        });
   bool shared = false;
@@ -173,27 +162,58 @@ CollapseVerdict CollapseRules::CheckTopology(const HalfEdgeMesh& mesh, int32_t v
                        {
                          if (!shared && u != v0 && u != opposite[0] && u != opposite[1])
                          {
-                           shared = std::find(this->Neighbors.begin(), this->Neighbors.end(), u) !=
-                             this->Neighbors.end();
+                           shared =
+                             std::find(neighbors.begin(), neighbors.end(), u) != neighbors.end();
                          }
                        });
-  if (shared)
+  return shared;
+}
+
+/// Whether an interior vl or vr has valence 3 or less (rule 4's valence), for a collapse whose
+/// rings share nothing else: its third neighbour can then only be the other opposite vertex, and
+/// v0's fan is closed by three triangles (docs/ALGORITHM.md, section 5), so only then are their
+/// fans walked.
+bool OppositeValenceTooLow(const HalfEdgeMesh& mesh, const int32_t opposite[2], int valence0)
+{
+  if (valence0 != 3 || opposite[0] < 0 || opposite[1] < 0)
+  {
+    return false;
+  }
+  for (int s = 0; s < 2; ++s)
+  {
+    if (!mesh.IsBoundaryVertex(opposite[s]) && mesh.IsValenceAtMost(opposite[s], 3))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+} // namespace
+
+CollapseVerdict CollapseRules::CheckTopology(const HalfEdgeMesh& mesh, int32_t v0, int32_t v1)
+{
+  if (v0 == v1 || !mesh.IsCollapsible(v0) || !mesh.IsCollapsible(v1))
+  {
+    return CollapseVerdict::NotCollapsible;
+  }
+  const int32_t h01 = mesh.FindHalfEdge(v0, v1);
+  const int32_t sides[2] = { h01, mesh.FindReverseHalfEdge(v0, v1, h01) };
+  if (sides[0] < 0 && sides[1] < 0)
+  {
+    return CollapseVerdict::NotCollapsible;
+  }
+  const bool edgeOnBoundary = sides[0] < 0 || sides[1] < 0;
+  if (mesh.IsBoundaryVertex(v0) && (this->Options.PreserveBoundary || !edgeOnBoundary))
+  {
+    return CollapseVerdict::Boundary;
+  }
+  int32_t opposite[2];
+  int valence = 0;
+  if (!FindOpposite(mesh, sides, opposite) ||
+      RingsShare(mesh, v0, v1, opposite, this->Neighbors, valence) ||
+      OppositeValenceTooLow(mesh, opposite, valence))
   {
     return CollapseVerdict::LinkCondition;
-  }
-  // An interior vl or vr of valence 3 would leave two triangles on the same three vertices. With
-  // the rings apart, its third neighbour can only be the other opposite vertex, and then v0's
-  // fan is closed by three triangles (docs/ALGORITHM.md, section 5): only then are their fans
-  // walked.
-  if (valence == 3 && opposite[0] >= 0 && opposite[1] >= 0)
-  {
-    for (const int32_t x : opposite)
-    {
-      if (!mesh.IsBoundaryVertex(x) && mesh.IsValenceAtMost(x, 3))
-      {
-        return CollapseVerdict::LinkCondition;
-      }
-    }
   }
   return CollapseVerdict::Legal;
 }
