@@ -1780,7 +1780,6 @@ CD_TEST_CASE(RenumberSameResult)
 }
 
 //------------------------------------------------------------------------------
-/// A jittered sphere with random colours: no two collapses cost exactly the same.
 /// The core's input on a plain mesh's points and triangles, with `colors` (3 a point).
 DecimatorInput InputOf(const PlainMesh& m, const float* colors)
 {
@@ -1793,6 +1792,7 @@ DecimatorInput InputOf(const PlainMesh& m, const float* colors)
   return input;
 }
 
+/// A jittered sphere with random colours: no two collapses cost exactly the same.
 DecimatorInput JitteredSphere(int resolution, std::vector<double>& points,
                               std::vector<float>& colors, std::vector<int32_t>& triangles)
 {
@@ -2532,6 +2532,40 @@ std::vector<PlainMesh> TopologyCases(std::mt19937& rng)
   return cases;
 }
 
+/// What RulesTopologyByDefinition counted.
+struct TopologyCounts
+{
+  int64_t Checked = 0, ByValenceAlone = 0, Disagreements = 0;
+};
+
+/// CheckTopology against TopologyByDefinition on both directions of every edge of `mesh`; the
+/// legal collapses.
+std::vector<std::pair<int32_t, int32_t>> CompareEveryEdge(CollapseRules& rules,
+                                                          const HalfEdgeMesh& mesh,
+                                                          TopologyCounts& counts)
+{
+  const bool preserve = rules.GetOptions().PreserveBoundary;
+  std::vector<std::pair<int32_t, int32_t>> legal;
+  for (int32_t v0 = 0; v0 < mesh.GetNumberOfVertices(); ++v0)
+  {
+    mesh.ForEachNeighbor(v0,
+                         [&](int32_t v1)
+                         {
+                           const CollapseVerdict expected =
+                             TopologyByDefinition(mesh, v0, v1, preserve, true);
+                           counts.Disagreements += rules.CheckTopology(mesh, v0, v1) != expected;
+                           counts.ByValenceAlone +=
+                             expected != TopologyByDefinition(mesh, v0, v1, preserve, false);
+                           ++counts.Checked;
+                           if (expected == CollapseVerdict::Legal)
+                           {
+                             legal.emplace_back(v0, v1);
+                           }
+                         });
+  }
+  return legal;
+}
+
 /// Random collapses until none is legal (a closed sphere down to a tetrahedron), with and
 /// without PreserveBoundary: after each collapse CheckTopology gives the verdicts of
 /// TopologyByDefinition on both directions of every edge, also where the valence of vl or vr
@@ -2539,7 +2573,7 @@ std::vector<PlainMesh> TopologyCases(std::mt19937& rng)
 CD_TEST_CASE(RulesTopologyByDefinition)
 {
   std::mt19937 rng(5);
-  int64_t checked = 0, byValenceAlone = 0, disagreements = 0;
+  TopologyCounts counts;
   for (const PlainMesh& m : TopologyCases(rng))
   {
     for (int run = 0; run < 6; ++run)
@@ -2549,41 +2583,19 @@ CD_TEST_CASE(RulesTopologyByDefinition)
       CollapseRules rules(options);
       HalfEdgeMesh mesh;
       mesh.Build(m.NumberOfPoints(), m.Triangles.data(), m.NumberOfTriangles());
-      for (;;)
+      for (auto legal = CompareEveryEdge(rules, mesh, counts); !legal.empty();
+           legal = CompareEveryEdge(rules, mesh, counts))
       {
-        std::vector<std::pair<int32_t, int32_t>> legal;
-        for (int32_t v0 = 0; v0 < mesh.GetNumberOfVertices(); ++v0)
-        {
-          mesh.ForEachNeighbor(
-            v0,
-            [&](int32_t v1)
-            {
-              const CollapseVerdict expected =
-                TopologyByDefinition(mesh, v0, v1, options.PreserveBoundary, true);
-              disagreements += rules.CheckTopology(mesh, v0, v1) != expected;
-              byValenceAlone +=
-                expected != TopologyByDefinition(mesh, v0, v1, options.PreserveBoundary, false);
-              ++checked;
-              if (expected == CollapseVerdict::Legal)
-              {
-                legal.emplace_back(v0, v1);
-              }
-            });
-        }
-        if (legal.empty())
-        {
-          break;
-        }
         const auto& pick = legal[rng() % legal.size()];
         mesh.Collapse(pick.first, pick.second);
       }
     }
   }
-  std::cout << "  " << checked << " verdicts, " << byValenceAlone
-            << " refused by the valence of vl or vr alone, " << disagreements << " disagreements"
-            << std::endl;
-  CD_CHECK(disagreements == 0);
-  CD_CHECK(byValenceAlone > 0);
+  std::cout << "  " << counts.Checked << " verdicts, " << counts.ByValenceAlone
+            << " refused by the valence of vl or vr alone, " << counts.Disagreements
+            << " disagreements" << std::endl;
+  CD_CHECK(counts.Disagreements == 0);
+  CD_CHECK(counts.ByValenceAlone > 0);
 }
 
 /// The pyramid with the apex at height h, as float positions.
