@@ -39,7 +39,9 @@ runs = {k: [json.load(open(f"{work}/{k}.{n}.json")) for n in range(1, rounds + 1
 filt = {k: [r["filter_seconds"] for r in v] for k, v in runs.items()}
 mo, mn = statistics.median(filt["old"]), statistics.median(filt["new"])
 print(f"filter median: old {mo:.3f} s, new {mn:.3f} s, new/old {mn / mo:.3f}")
-print("per round new/old:", " ".join(f"{b / a:.3f}" for a, b in zip(filt["old"], filt["new"])))
+ratios = [b / a for a, b in zip(filt["old"], filt["new"])]
+print("per round new/old:", " ".join(f"{r:.3f}" for r in ratios),
+      f"(median {statistics.median(ratios):.3f})")
 names = [p["name"] for p in runs["new"][0]["phases"]]
 for name in dict.fromkeys(names):
     med = {}

@@ -1249,6 +1249,36 @@ CD_TEST_CASE(HalfEdgeBuildOpen)
   CD_CHECK(single.IsBoundaryVertex(0) && single.Valence(0) == 2);
 }
 
+/// FanHalfEdge(v, k) is the half-edge from v to the k-th neighbour that ForEachNeighbor lists
+/// (one per face of the fan), -1 once an open fan has ended, and back at the first half-edge
+/// once a closed fan has gone round.
+CD_TEST_CASE(HalfEdgeFanWalk)
+{
+  for (auto poly : { meshes::Grid(6, 4, meshes::Pattern::Constant),
+                     meshes::Icosphere(2, meshes::Pattern::Constant) })
+  {
+    const PlainMesh m = ToPlain(poly);
+    HalfEdgeMesh mesh;
+    mesh.Build(m.NumberOfPoints(), m.Triangles.data(), m.NumberOfTriangles());
+    int walked = 0;
+    for (int32_t v = 0; v < m.NumberOfPoints(); ++v)
+    {
+      std::vector<int32_t> ring;
+      mesh.ForEachNeighbor(v, [&](int32_t u) { ring.push_back(u); });
+      // An open fan lists one more neighbour than it has faces (the last face's far corner).
+      const int faces = static_cast<int>(ring.size()) - (mesh.IsBoundaryVertex(v) ? 1 : 0);
+      for (int k = 0; k < faces; ++k)
+      {
+        const int32_t h = mesh.FanHalfEdge(v, k);
+        CD_CHECK(h >= 0 && mesh.Origin(h) == v && mesh.Target(h) == ring[k]);
+        ++walked;
+      }
+      CD_CHECK(mesh.FanHalfEdge(v, faces) == (mesh.IsBoundaryVertex(v) ? -1 : mesh.Outgoing(v)));
+    }
+    CD_CHECK(walked == 3 * m.NumberOfTriangles());
+  }
+}
+
 CD_TEST_CASE(HalfEdgeNonManifold)
 {
   // Three triangles on the edge 0-1 (a fin), plus an unrelated triangle.

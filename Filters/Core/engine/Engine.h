@@ -45,8 +45,8 @@ namespace colordecimation
 {
 
 /// How many items ahead each stage of a prefetch pipeline works (the vertex, its first face,
-/// its neighbours' records).
-constexpr size_t FarAhead = 16, MiddleAhead = 8, NearAhead = 4;
+/// its neighbours' records; the evaluations' pipeline goes on along the fan, NearestAhead).
+constexpr size_t FarAhead = 16, MiddleAhead = 8, NearAhead = 4, NearestAhead = 2;
 
 /// A vertex's chosen collapse.
 struct Choice
@@ -153,6 +153,9 @@ protected:
   /// The 1-ring of v0 with the targets admissible for a collapse (a boundary vertex only
   /// collapses along its boundary: to its first or last neighbour).
   void GatherRing(int32_t v0, Ring& ring) const;
+  /// Hint that the walk of a fan reaches the face after half-edge h's: the record of the
+  /// neighbour it adds and that next face.
+  void PrefetchFanStep(int32_t h) const;
   /// A seam vertex's boundary candidates less those SeamMap::Admits refuses (section 15).
   void RestrictToSeams(int32_t v0, Ring& ring) const;
   const float* Positions() const { return this->Hot.empty() ? nullptr : this->Hot[0].P; }

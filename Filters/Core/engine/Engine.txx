@@ -30,6 +30,17 @@ inline void EngineBase::GatherRing(int32_t v0, Ring& ring) const
   ring.Pad();
 }
 
+inline void EngineBase::PrefetchFanStep(int32_t h) const
+{
+  const int32_t p = HalfEdgeMesh::Prev(h);
+  COLORDECIMATION_PREFETCH(this->Hot.data() + this->Mesh.Origin(p));
+  const int32_t next = this->Mesh.Twin(p);
+  if (next >= 0)
+  {
+    this->Mesh.PrefetchFace(next);
+  }
+}
+
 inline void EngineBase::RestrictToSeams(int32_t v0, Ring& ring) const
 {
   for (const int k : { 0, ring.Size - 1 })
@@ -237,9 +248,11 @@ LargeVector<double> Engine<Metric>::EvaluateEveryVertex(bool allowBound)
 template <typename Metric>
 void Engine<Metric>::PrefetchEvaluation(const int32_t* vertices, size_t i, size_t end) const
 {
-  // The vertex records a few evaluations ahead, then its first face, then the records of
-  // that face's other two corners (two of its neighbours); the rest of the fan is usually
-  // on the same lines.
+  // The vertex records a few evaluations ahead, then its first face, then along the fan (the
+  // walk of GatherRing, a chain of dependent loads): the records of the first face's corners
+  // (two of its neighbours) and the second face, then the third neighbour and the third face.
+  // Each stage reads only what an earlier one fetched. Vertices in id order (the first
+  // costing) have their fans in faces in order, which the hardware streams: no walk for them.
   if (i + FarAhead < end)
   {
     const int32_t v = vertices[i + FarAhead];
@@ -257,7 +270,15 @@ void Engine<Metric>::PrefetchEvaluation(const int32_t* vertices, size_t i, size_
     if (h >= 0)
     {
       COLORDECIMATION_PREFETCH(this->Hot.data() + this->Mesh.Target(h));
-      COLORDECIMATION_PREFETCH(this->Hot.data() + this->Mesh.Origin(HalfEdgeMesh::Prev(h)));
+      this->PrefetchFanStep(h);
+    }
+  }
+  if (i + NearestAhead < end && vertices[i + NearestAhead] - vertices[i] != int32_t(NearestAhead))
+  {
+    const int32_t h = this->Mesh.FanHalfEdge(vertices[i + NearestAhead], 1);
+    if (h >= 0)
+    {
+      this->PrefetchFanStep(h);
     }
   }
 }

@@ -101,6 +101,24 @@ public:
     }
   }
 
+  /// Hint that the face of half-edge h is about to be read (h >= 0).
+  void PrefetchFace(int32_t h) const
+  {
+    const Corner* face = this->Corners.data() + (h - h % 3);
+    PrefetchRange(face, face + 3);
+  }
+  /// The half-edge leaving v in the k-th face of its fan, in the order of ForEachNeighbor
+  /// (reads the k faces before it); -1 where the fan ends before.
+  int32_t FanHalfEdge(int32_t v, int k) const
+  {
+    int32_t h = this->Out[v];
+    for (; k > 0 && h >= 0; --k)
+    {
+      h = this->Corners[Prev(h)].Twin;
+    }
+    return h;
+  }
+
   int32_t GetNumberOfVertices() const { return static_cast<int32_t>(this->Out.size()); }
   int32_t GetNumberOfFaceSlots() const { return static_cast<int32_t>(this->Corners.size() / 3); }
   int64_t GetNumberOfLiveFaces() const { return this->LiveFaces; }

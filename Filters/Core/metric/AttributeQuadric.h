@@ -127,7 +127,7 @@ public:
                   bool useColor, int threads);
   static constexpr bool KeysByBound(int) { return false; }
   void CostRing(int32_t v0, bool withColorError, Ring& ring, double* costs, Scratch&) const;
-  void Prefetch(int32_t v) const { COLORDECIMATION_PREFETCH(this->States.data() + v); }
+  void Prefetch(int32_t v) const { PrefetchRecord(this->States.data() + v); }
 
   static constexpr bool MovesVertices() { return false; }
   bool Place(int32_t, int32_t, Placement&, double[3]) const { return false; }

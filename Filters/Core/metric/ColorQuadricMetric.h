@@ -55,7 +55,7 @@ public:
   static constexpr bool KeysByBound(int) { return false; }
   /// The cost of every ring member (and, with OptimalPlacement, its placement into scratch).
   void CostRing(int32_t v0, bool withColorError, Ring& ring, double* costs, Scratch& scratch) const;
-  void Prefetch(int32_t v) const { COLORDECIMATION_PREFETCH(this->States.data() + v); }
+  void Prefetch(int32_t v) const { PrefetchRecord(this->States.data() + v); }
 
   /// Whether collapses may move the survivor (OptimalPlacement).
   bool MovesVertices() const { return this->Placing; }

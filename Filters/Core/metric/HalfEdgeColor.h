@@ -179,14 +179,9 @@ public:
                      withColorError && this->UseColor, ring, costs);
   }
 
-  /// Hint that v's state is about to be read: both ends of its record, since a 48-byte record
-  /// straddles two cache lines one time in two.
-  void Prefetch(int32_t v) const
-  {
-    const char* record = reinterpret_cast<const char*>(this->States.data() + v);
-    COLORDECIMATION_PREFETCH(record);
-    COLORDECIMATION_PREFETCH(record + sizeof(VertexMetric) - 1);
-  }
+  /// Hint that v's state is about to be read (a 48-byte record straddles two cache lines one
+  /// time in two).
+  void Prefetch(int32_t v) const { PrefetchRecord(this->States.data() + v); }
 
   // Placement: none (see ColorQuadricMetric for a metric that moves vertices).
   static constexpr bool MovesVertices() { return false; }

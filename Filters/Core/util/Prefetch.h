@@ -3,7 +3,7 @@
  * @brief COLORDECIMATION_PREFETCH(address): a hint to bring the cache line holding `address`
  * in for reading (no effect on compilers without the builtin). Never faults, but only valid
  * addresses are passed (one past the end at most), as for any pointer arithmetic.
- * PrefetchRange: the same for every line of an array range.
+ * PrefetchRange, PrefetchRecord: the same for every line of an array range or of one record.
  */
 #ifndef colordecimation_Prefetch_h
 #define colordecimation_Prefetch_h
@@ -23,22 +23,31 @@
 #endif
 
 #include <cstddef>
+#include <cstdint>
 
 namespace colordecimation
 {
 
-/// Prefetch every cache line of [begin, end): a sweep in address order, which the hardware
-/// streams in far faster than the same lines read in a scattered order.
+/// Prefetch every cache line that [begin, end) touches: a sweep in address order, which the
+/// hardware streams in far faster than the same lines read in a scattered order.
 template <typename T>
 inline void PrefetchRange(const T* begin, const T* end)
 {
-  constexpr size_t CacheLine = 64;
-  const char* first = reinterpret_cast<const char*>(begin);
-  const size_t bytes = static_cast<size_t>(reinterpret_cast<const char*>(end) - first);
-  for (size_t offset = 0; offset < bytes; offset += CacheLine)
+  constexpr uintptr_t CacheLine = 64;
+  const uintptr_t first = reinterpret_cast<uintptr_t>(begin) & ~(CacheLine - 1);
+  const uintptr_t last = reinterpret_cast<uintptr_t>(end);
+  for (uintptr_t line = first; line < last; line += CacheLine)
   {
-    COLORDECIMATION_PREFETCH(first + offset);
+    COLORDECIMATION_PREFETCH(reinterpret_cast<const void*>(line));
   }
+}
+
+/// Prefetch every cache line of one record (a record that is not a divisor of the line's size
+/// straddles two or three of them).
+template <typename T>
+inline void PrefetchRecord(const T* record)
+{
+  PrefetchRange(record, record + 1);
 }
 
 } // namespace colordecimation
