@@ -1249,36 +1249,6 @@ CD_TEST_CASE(HalfEdgeBuildOpen)
   CD_CHECK(single.IsBoundaryVertex(0) && single.Valence(0) == 2);
 }
 
-/// FanHalfEdge(v, k) is the half-edge from v to the k-th neighbour that ForEachNeighbor lists
-/// (one per face of the fan), -1 once an open fan has ended, and back at the first half-edge
-/// once a closed fan has gone round.
-CD_TEST_CASE(HalfEdgeFanWalk)
-{
-  for (auto poly : { meshes::Grid(6, 4, meshes::Pattern::Constant),
-                     meshes::Icosphere(2, meshes::Pattern::Constant) })
-  {
-    const PlainMesh m = ToPlain(poly);
-    HalfEdgeMesh mesh;
-    mesh.Build(m.NumberOfPoints(), m.Triangles.data(), m.NumberOfTriangles());
-    int walked = 0;
-    for (int32_t v = 0; v < m.NumberOfPoints(); ++v)
-    {
-      std::vector<int32_t> ring;
-      mesh.ForEachNeighbor(v, [&](int32_t u) { ring.push_back(u); });
-      // An open fan lists one more neighbour than it has faces (the last face's far corner).
-      const int faces = static_cast<int>(ring.size()) - (mesh.IsBoundaryVertex(v) ? 1 : 0);
-      for (int k = 0; k < faces; ++k)
-      {
-        const int32_t h = mesh.FanHalfEdge(v, k);
-        CD_CHECK(h >= 0 && mesh.Origin(h) == v && mesh.Target(h) == ring[k]);
-        ++walked;
-      }
-      CD_CHECK(mesh.FanHalfEdge(v, faces) == (mesh.IsBoundaryVertex(v) ? -1 : mesh.Outgoing(v)));
-    }
-    CD_CHECK(walked == 3 * m.NumberOfTriangles());
-  }
-}
-
 CD_TEST_CASE(HalfEdgeNonManifold)
 {
   // Three triangles on the edge 0-1 (a fin), plus an unrelated triangle.
@@ -2626,6 +2596,60 @@ CD_TEST_CASE(RulesTopologyByDefinition)
             << " disagreements" << std::endl;
   CD_CHECK(counts.Disagreements == 0);
   CD_CHECK(counts.ByValenceAlone > 0);
+}
+
+/// FanHalfEdge(v, k) on every vertex of `mesh`: the k-th half-edge ForEachOutgoing lists (one
+/// per face of the fan), from v to the k-th neighbour ForEachNeighbor lists; past the last, -1
+/// where the fan is open (its last face has no twin before it) and the first again where it
+/// closes; -1 for a vertex without faces. Returns the number of faces walked.
+int64_t CheckFanWalk(const HalfEdgeMesh& mesh)
+{
+  int64_t walked = 0;
+  for (int32_t v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  {
+    std::vector<int32_t> outgoing, ring;
+    mesh.ForEachOutgoing(v, [&](int32_t h) { outgoing.push_back(h); });
+    mesh.ForEachNeighbor(v, [&](int32_t u) { ring.push_back(u); });
+    const int faces = static_cast<int>(outgoing.size());
+    for (int k = 0; k < faces; ++k)
+    {
+      const int32_t h = mesh.FanHalfEdge(v, k);
+      CD_CHECK(h == outgoing[size_t(k)] && mesh.Origin(h) == v &&
+               mesh.Target(h) == ring[size_t(k)]);
+    }
+    const bool open = faces == 0 || mesh.Twin(HalfEdgeMesh::Prev(outgoing[size_t(faces - 1)])) < 0;
+    CD_CHECK(mesh.FanHalfEdge(v, faces) == (open ? -1 : outgoing[0]));
+    walked += faces;
+  }
+  return walked;
+}
+
+/// FanHalfEdge against ForEachNeighbor on closed, open and holed meshes (locked vertices among
+/// them), after each of random legal collapses until none is legal (removed vertices among
+/// them); on the meshes as built, the faces walked are three per triangle when none is locked.
+CD_TEST_CASE(HalfEdgeFanWalk)
+{
+  std::mt19937 rng(11);
+  TopologyCounts counts;
+  CollapseRules rules{ CollapseRuleOptions() };
+  int64_t meshes = 0;
+  for (const PlainMesh& m : TopologyCases(rng))
+  {
+    HalfEdgeMesh mesh;
+    const MeshBuildReport report =
+      mesh.Build(m.NumberOfPoints(), m.Triangles.data(), m.NumberOfTriangles());
+    const int64_t walked = CheckFanWalk(mesh);
+    CD_CHECK(report.LockedVertices > 0 || walked == 3 * int64_t(m.NumberOfTriangles()));
+    for (auto legal = CompareEveryEdge(rules, mesh, counts); !legal.empty();
+         legal = CompareEveryEdge(rules, mesh, counts))
+    {
+      const auto& pick = legal[rng() % legal.size()];
+      mesh.Collapse(pick.first, pick.second);
+      CheckFanWalk(mesh);
+      ++meshes;
+    }
+  }
+  CD_CHECK(meshes > 100);
 }
 
 /// The pyramid with the apex at height h, as float positions.

@@ -153,8 +153,8 @@ protected:
   /// The 1-ring of v0 with the targets admissible for a collapse (a boundary vertex only
   /// collapses along its boundary: to its first or last neighbour).
   void GatherRing(int32_t v0, Ring& ring) const;
-  /// Hint that the walk of a fan reaches the face after half-edge h's: the record of the
-  /// neighbour it adds and that next face.
+  /// Hint that the walk of a fan reaches the face after half-edge h's (h in a live face): the
+  /// record of the neighbour h's face adds and that next face.
   void PrefetchFanStep(int32_t h) const;
   /// A seam vertex's boundary candidates less those SeamMap::Admits refuses (section 15).
   void RestrictToSeams(int32_t v0, Ring& ring) const;
@@ -303,18 +303,21 @@ public:
    * Evaluate each listed vertex (none twice) into Best, KeyKinds and keys[v], on up to
    * ThreadCount threads; locked and removed vertices get no choice. A vertex v for which
    * newNeighbor(v) gives a vertex v1 (not -1) is first offered to ChooseNewNeighbor(v, v1).
+   * inIdOrder: the vertices come in id order with few gaps (their fans' faces then come in
+   * order too, which the hardware streams without the prefetches along the fans).
    */
   template <typename NewNeighbor>
   void EvaluateAll(const int32_t* vertices, size_t count, bool exact, bool allowBound, double* keys,
-                   const NewNeighbor& newNeighbor);
+                   const NewNeighbor& newNeighbor, bool inIdOrder = false);
   void EvaluateAll(const int32_t* vertices, size_t count, bool exact, bool allowBound, double* keys)
   {
     this->EvaluateAll(vertices, count, exact, allowBound, keys, [](int32_t) { return -1; });
   }
   /// Every vertex's choice into Best and KeyKinds; returns the keys (by vertex).
   LargeVector<double> EvaluateEveryVertex(bool allowBound);
-  /// Fetch what evaluating vertices[i + a few] reads into the cache.
-  void PrefetchEvaluation(const int32_t* vertices, size_t i, size_t end) const;
+  /// Fetch what evaluating vertices[i + a few] reads into the cache; alongFan: the second and
+  /// third faces of their fans too.
+  void PrefetchEvaluation(const int32_t* vertices, size_t i, size_t end, bool alongFan) const;
 
   /// The rules' verdict on v0 -> v1; `moves`: the metric's placement moves v1 (into place).
   bool IsCollapseLegal(int32_t v0, int32_t v1, bool& moves, Placement& place, Workspace& ws) const;

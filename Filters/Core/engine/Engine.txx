@@ -187,16 +187,16 @@ Choice Engine<Metric>::CheapestLegal(int32_t v0, Workspace& ws) const
 template <typename Metric>
 template <typename NewNeighbor>
 void Engine<Metric>::EvaluateAll(const int32_t* vertices, size_t count, bool exact, bool allowBound,
-                                 double* keys, const NewNeighbor& newNeighbor)
+                                 double* keys, const NewNeighbor& newNeighbor, bool inIdOrder)
 {
   // Each evaluation reads the mesh and the per-vertex state, and writes its own vertex's
   // entries only: the vertices can be shared among threads in any way, with the same result.
-  auto evaluate =
-    [this, vertices, exact, allowBound, keys, newNeighbor](Workspace& ws, size_t begin, size_t end)
+  auto evaluate = [this, vertices, exact, allowBound, keys, newNeighbor,
+                   inIdOrder](Workspace& ws, size_t begin, size_t end)
   {
     for (size_t i = begin; i < end; ++i)
     {
-      this->PrefetchEvaluation(vertices, i, end);
+      this->PrefetchEvaluation(vertices, i, end, !inIdOrder);
       const int32_t v = vertices[i];
       const int32_t v1 = newNeighbor(v);
       if (v1 >= 0 && this->ChooseNewNeighbor(v, v1, keys, ws))
@@ -241,18 +241,20 @@ LargeVector<double> Engine<Metric>::EvaluateEveryVertex(bool allowBound)
     all[v] = v;
   }
   LargeVector<double> keys(n);
-  this->EvaluateAll(all.data(), all.size(), false, allowBound, keys.data());
+  this->EvaluateAll(
+    all.data(), all.size(), false, allowBound, keys.data(), [](int32_t) { return -1; }, true);
   return keys;
 }
 
 template <typename Metric>
-void Engine<Metric>::PrefetchEvaluation(const int32_t* vertices, size_t i, size_t end) const
+void Engine<Metric>::PrefetchEvaluation(const int32_t* vertices, size_t i, size_t end,
+                                        bool alongFan) const
 {
-  // The vertex records a few evaluations ahead, then its first face, then along the fan (the
-  // walk of GatherRing, a chain of dependent loads): the records of the first face's corners
-  // (two of its neighbours) and the second face, then the third neighbour and the third face.
-  // Each stage reads only what an earlier one fetched. Vertices in id order (the first
-  // costing) have their fans in faces in order, which the hardware streams: no walk for them.
+  // The vertex records a few evaluations ahead, then its first face, then the records of that
+  // face's other two corners (two of its neighbours). Along the fan (the walk of GatherRing, a
+  // chain of dependent loads), the second face with those, and later the third face and the
+  // third neighbour (the second face's far corner). Each stage reads only what an earlier one
+  // fetched.
   if (i + FarAhead < end)
   {
     const int32_t v = vertices[i + FarAhead];
@@ -270,10 +272,17 @@ void Engine<Metric>::PrefetchEvaluation(const int32_t* vertices, size_t i, size_
     if (h >= 0)
     {
       COLORDECIMATION_PREFETCH(this->Hot.data() + this->Mesh.Target(h));
-      this->PrefetchFanStep(h);
+      if (alongFan)
+      {
+        this->PrefetchFanStep(h);
+      }
+      else
+      {
+        COLORDECIMATION_PREFETCH(this->Hot.data() + this->Mesh.Origin(HalfEdgeMesh::Prev(h)));
+      }
     }
   }
-  if (i + NearestAhead < end && vertices[i + NearestAhead] - vertices[i] != int32_t(NearestAhead))
+  if (alongFan && i + NearestAhead < end)
   {
     const int32_t h = this->Mesh.FanHalfEdge(vertices[i + NearestAhead], 1);
     if (h >= 0)

@@ -108,7 +108,8 @@ public:
     PrefetchRange(face, face + 3);
   }
   /// The half-edge leaving v in the k-th face of its fan, in the order of ForEachNeighbor
-  /// (reads the k faces before it); -1 where the fan ends before.
+  /// (reads the k faces before it): -1 past the end of an open fan (or for a vertex without
+  /// one); a closed fan goes round again. For a locked vertex, the part ForEachNeighbor walks.
   int32_t FanHalfEdge(int32_t v, int k) const
   {
     int32_t h = this->Out[v];

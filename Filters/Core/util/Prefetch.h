@@ -1,9 +1,10 @@
 /**
  * @file Prefetch.h
  * @brief COLORDECIMATION_PREFETCH(address): a hint to bring the cache line holding `address`
- * in for reading (no effect on compilers without the builtin). Never faults, but only valid
- * addresses are passed (one past the end at most), as for any pointer arithmetic.
- * PrefetchRange, PrefetchRecord: the same for every line of an array range or of one record.
+ * in for reading (no effect on compilers without the builtin). Never faults; callers pass
+ * addresses within an array (one past the end at most), or, in PrefetchRange, the start of the
+ * cache line that holds one. PrefetchRange, PrefetchRecord: the same for every line of an array
+ * range or of one record.
  */
 #ifndef colordecimation_Prefetch_h
 #define colordecimation_Prefetch_h
@@ -34,6 +35,10 @@ template <typename T>
 inline void PrefetchRange(const T* begin, const T* end)
 {
   constexpr uintptr_t CacheLine = 64;
+  if (begin == end)
+  {
+    return;
+  }
   const uintptr_t first = reinterpret_cast<uintptr_t>(begin) & ~(CacheLine - 1);
   const uintptr_t last = reinterpret_cast<uintptr_t>(end);
   for (uintptr_t line = first; line < last; line += CacheLine)
@@ -42,8 +47,8 @@ inline void PrefetchRange(const T* begin, const T* end)
   }
 }
 
-/// Prefetch every cache line of one record (a record that is not a divisor of the line's size
-/// straddles two or three of them).
+/// Prefetch every cache line of one record (one whose size does not divide the line's lies on
+/// two lines or more, e.g. 92 bytes on two or three).
 template <typename T>
 inline void PrefetchRecord(const T* record)
 {
