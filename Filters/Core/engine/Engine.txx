@@ -37,7 +37,7 @@ inline void EngineBase::PrefetchFanStep(int32_t h) const
   const int32_t next = this->Mesh.Twin(p);
   if (next >= 0)
   {
-    this->Mesh.PrefetchFace(next);
+    this->Mesh.PrefetchFaces(next / 3, next / 3 + 1);
   }
 }
 

@@ -101,12 +101,6 @@ public:
     }
   }
 
-  /// Hint that the face of half-edge h is about to be read (h >= 0).
-  void PrefetchFace(int32_t h) const
-  {
-    const Corner* face = this->Corners.data() + (h - h % 3);
-    PrefetchRange(face, face + 3);
-  }
   /// The half-edge leaving v in the k-th face of its fan, in the order of ForEachNeighbor
   /// (reads the k faces before it): -1 past the end of an open fan (or for a vertex without
   /// one); a closed fan goes round again. For a locked vertex, the part ForEachNeighbor walks.
