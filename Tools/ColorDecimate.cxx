@@ -19,7 +19,6 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
-#include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"

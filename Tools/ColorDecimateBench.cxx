@@ -19,14 +19,11 @@
 #include "vtkColorHalfEdgeDecimation.h"
 #include "vtkColorHalfEdgeLevelOfDetail.h"
 
-#include "vtkCellArray.h"
-#include "vtkCellArrayIterator.h"
 #include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkQuadricDecimation.h"
 #include "vtkSmartPointer.h"
@@ -48,8 +45,6 @@
 #include <ctime>
 #include <fstream>
 #include <iostream>
-#include <limits>
-#include <memory>
 #include <sstream>
 #include <string>
 #include <sys/stat.h>

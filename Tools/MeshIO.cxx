@@ -40,7 +40,6 @@
 #include <fstream>
 #include <iostream>
 #include <mutex>
-#include <sstream>
 #include <sys/stat.h>
 #include <thread>
 

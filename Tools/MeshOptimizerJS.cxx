@@ -376,8 +376,7 @@ MeshOptimizerJSResult SimplifyWithMeshOptimizerJS(vtkPolyData* mesh,
     "," + Number(settings.Weights[2]);
   // V8 is made to compile the whole module with its optimising compiler when it is loaded,
   // before the call. By default it compiles each function at its first call with its
-  // baseline compiler, and one long call runs that code to its end (the same result, about
-  // 1.5 times slower here).
+  // baseline compiler, and one long call runs that slower code to its end (the same result).
   const NodeRun run =
     RunNode(Checked().Node,
             { "--no-liftoff", "--no-wasm-lazy-compilation", ScriptFolder() + "/simplify.mjs",

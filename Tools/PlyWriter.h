@@ -4,8 +4,8 @@
  * block by block.
  *
  * vtkPLYWriter writes value by value through its generic property code and a process-wide
- * heap (one file at a time in a process); on a level of the 7 mm kitchen it took longer than
- * extracting the level (docs/BENCHMARK.md). This writes the same bytes from whole blocks: the
+ * heap (one file at a time in a process), longer than extracting a level takes
+ * (docs/BENCHMARK.md). This writes the same bytes from whole blocks: the
  * header vtkPLYWriter writes, then each vertex as x y z, nx ny nz (point normals), red green
  * blue [alpha] (point colours), u v (texture coordinates) and each polygon as a byte count,
  * 32-bit ids and red green blue [alpha] (face colours). It keeps what vtkPLYWriter drops:

@@ -46,7 +46,6 @@ public:
   /// Whether the peak was really reset (otherwise PeakAboveBaseline is the process peak
   /// above the baseline, an upper bound).
   bool PeakWasReset() const { return this->Reset; }
-  int64_t Baseline() const { return this->BaselineBytes; }
 
 private:
   int64_t BaselineBytes;

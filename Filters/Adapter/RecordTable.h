@@ -19,7 +19,6 @@
 
 #include "vtkType.h"
 
-#include <cstdint>
 #include <string>
 
 class vtkTable;

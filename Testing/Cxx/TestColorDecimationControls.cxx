@@ -22,7 +22,6 @@
 
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <iostream>
 #include <map>
 #include <random>

@@ -27,7 +27,6 @@
 #include <iostream>
 #include <limits>
 #include <map>
-#include <sstream>
 
 using namespace colordecimation;
 using namespace colordecimation::testing;

@@ -12,11 +12,9 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <utility>
 #include <vector>
 
 namespace colordecimation
@@ -270,8 +268,8 @@ vtkSmartPointer<vtkPoints> UVSpherePoints(int r, int meridians)
 
 /// The triangles of UVSphere in vtkSphereSource's order: the fans around the north and the
 /// south pole, then two triangles per quad of the bands, meridian by meridian. Stored with
-/// 32-bit ids where they fit (the same ids as vtkSphereSource's 64-bit ones; the benchmark's 80M
-/// sphere then takes 1.2 GB instead of 2.5, and the tests read that storage too).
+/// 32-bit ids where they fit (the same ids as vtkSphereSource's 64-bit ones, in half the memory
+/// for the benchmark's largest spheres; the tests read that storage too).
 template <typename Id, typename IdArray>
 vtkSmartPointer<vtkCellArray> UVSphereTriangles(int r, int meridians, int columns)
 {

@@ -16,11 +16,9 @@
 #include "ColorDecimationMeshes.h"
 #include "vtkColorHalfEdgeDecimation.h"
 
-#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
-#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -32,7 +30,6 @@
 #include <cmath>
 #include <cstring>
 #include <iostream>
-#include <map>
 #include <random>
 #include <set>
 #include <sstream>

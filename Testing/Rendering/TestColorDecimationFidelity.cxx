@@ -29,7 +29,6 @@
 #include <iostream>
 #include <sstream>
 #include <string>
-#include <vector>
 
 namespace fid = colordecimation::fidelity;
 namespace meshes = colordecimation::meshes;

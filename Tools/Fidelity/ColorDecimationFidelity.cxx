@@ -24,7 +24,6 @@
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>

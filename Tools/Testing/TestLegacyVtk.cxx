@@ -28,7 +28,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataReader.h"
 #include "vtkPolyDataWriter.h"
 #include "vtkShortArray.h"
 #include "vtkSmartPointer.h"
@@ -38,7 +37,6 @@
 #include "vtkUnstructuredGridWriter.h"
 
 #include <fstream>
-#include <iostream>
 #include <string>
 #include <vector>
 

@@ -22,17 +22,13 @@
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
-#include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSmartPointer.h"
-#include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <cstring>
 #include <fstream>
-#include <iostream>
 #include <string>
 #include <utility>
 #include <vector>

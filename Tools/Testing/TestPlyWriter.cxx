@@ -20,17 +20,14 @@
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
-#include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
-#include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVersionMacros.h"
 
 #include <cmath>
-#include <iostream>
 #include <string>
 #include <sys/stat.h>
 

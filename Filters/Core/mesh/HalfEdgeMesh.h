@@ -37,7 +37,6 @@
 #include "vtkColorDecimationModule.h" // for export macro
 
 #include <cstdint>
-#include <vector>
 
 namespace colordecimation
 {

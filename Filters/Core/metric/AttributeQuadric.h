@@ -28,7 +28,6 @@
 #include "vtkColorDecimationModule.h" // for export macro
 
 #include <cstdint>
-#include <vector>
 
 namespace colordecimation
 {

@@ -29,8 +29,6 @@
 #include "util/Buffer.h"
 #include "vtkColorDecimationModule.h" // for export macro
 
-#include <cstdint>
-#include <vector>
 
 namespace colordecimation
 {

@@ -2,7 +2,6 @@
 
 #include "mesh/FaceWalk.h"
 #include "mesh/HalfEdgeMesh.h"
-#include "util/Parallel.h"
 
 #include <algorithm>
 

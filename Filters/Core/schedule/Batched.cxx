@@ -8,7 +8,6 @@
 #include "util/Buffer.h"
 
 #include <atomic>
-#include <climits>
 #include <cmath>
 #include <numeric>
 

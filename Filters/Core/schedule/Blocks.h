@@ -16,7 +16,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
 
 namespace colordecimation
 {
@@ -53,8 +52,6 @@ public:
   explicit BlockPartition(int shift);
 
   const BlockLevel& Small() const { return this->Levels[0]; }
-  const BlockLevel& Wide() const { return this->Levels[1]; }
-  const BlockLevel& Shifted() const { return this->Levels[2]; }
   const BlockLevel* begin() const { return this->Levels; }
   const BlockLevel* end() const { return this->Levels + 3; }
   uint8_t AllFlags() const { return 1 | 2 | 4; }

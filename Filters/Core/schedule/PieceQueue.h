@@ -37,9 +37,6 @@ public:
   double NextSquaredError() const { return this->SquaredErrors[this->Order[this->Next]]; }
   /// The next piece's live faces and their vertices; it leaves the queue.
   void Pop(const HalfEdgeMesh& mesh, std::vector<int32_t>& faces, std::vector<int32_t>& vertices);
-  /// The faces of piece p (live or not), for costing.
-  const int32_t* Faces(size_t p) const { return this->P.Faces.data() + this->P.Start[p]; }
-  size_t FaceCount(size_t p) const { return size_t(this->P.Start[p + 1] - this->P.Start[p]); }
   size_t Bytes() const;
   /// The faces of all its pieces, removed or not.
   size_t FaceTotal() const { return this->P.Faces.size(); }

@@ -29,7 +29,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <vector>
 
 namespace colordecimation
 {

@@ -23,7 +23,6 @@
 #define COLORDECIMATION_PREFETCH(address) ((void)(address))
 #endif
 
-#include <cstddef>
 #include <cstdint>
 
 namespace colordecimation
