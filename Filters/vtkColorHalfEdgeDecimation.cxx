@@ -461,6 +461,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   this->ResetStatistics();
   if (!input || !output)
   {
+    vtkErrorMacro(<< "No " << (input ? "output" : "input") << " vtkPolyData.");
     return 0;
   }
   output->GetFieldData()->PassData(input->GetFieldData());

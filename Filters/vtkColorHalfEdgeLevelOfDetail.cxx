@@ -17,7 +17,6 @@
 #include "vtkCellArray.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
-#include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
@@ -442,6 +441,7 @@ int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(reques
   this->Cached->InputTriangles = this->Cached->OutputTriangles = 0;
   if (!input || !output)
   {
+    vtkErrorMacro(<< "No " << (input ? "output" : "input") << " data object.");
     return 0;
   }
   output->GetFieldData()->PassData(input->GetFieldData());

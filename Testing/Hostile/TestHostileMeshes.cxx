@@ -17,9 +17,11 @@
 #include "vtkColorHalfEdgeDecimation.h"
 #include "vtkColorHalfEdgeLevelOfDetail.h"
 #include "vtkDataArray.h"
-#include "vtkDoubleArray.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkLogger.h"
 #include "vtkMath.h"
@@ -35,7 +37,6 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -43,7 +44,6 @@
 #include <map>
 #include <numeric>
 #include <set>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -1166,6 +1166,22 @@ CD_TEST_CASE(EmptyAndNoSurface)
                  run.HasWarning("Dropped 1 triangles that repeat"),
                "only a triangle repeating a point: dropped with a warning");
   CD_CHECK_MSG(run.Output->GetNumberOfCells() == 0, "only a repeating triangle: empty output");
+
+  // No data object in or out (a request made by hand, not by an executive): an error each.
+  vtkNew<vtkColorHalfEdgeDecimation> decimation;
+  vtkNew<vtkColorHalfEdgeLevelOfDetail> levels;
+  for (vtkAlgorithm* filter :
+       { static_cast<vtkAlgorithm*>(decimation), static_cast<vtkAlgorithm*>(levels) })
+  {
+    EventRecorder events;
+    events.Watch(filter);
+    vtkNew<vtkInformationVector> mesh, record, out;
+    vtkInformationVector* in[2] = { mesh, record };
+    vtkNew<vtkInformation> request;
+    request->Set(vtkDemandDrivenPipeline::REQUEST_DATA());
+    CD_CHECK_MSG(filter->ProcessRequest(request, in, out) == 0 && events.HasError("No input"),
+                 filter->GetClassName() << ": no input data object: an error");
+  }
 }
 
 /// Quads and strips: triangulated (quietly), then decimated.
