@@ -545,8 +545,8 @@ public:
    * The phase breakdown of the last execution: how many phases, and each one's name and
    * wall-clock seconds, in the order they ran. "input" (checks, points, triangles, colours),
    * the decimation's set-up ("spatial order", "connectivity", "frame", "reference normals",
-   * "pieces", "metric state", "error planes"), "first costing", the schedule's steps ("collapses" for
-   * Greedy; "batch selection", "block collapses", "deferred collapses", "re-costing" for
+   * "pieces", "metric state", "error planes"), "first costing", the schedule's steps ("collapses"
+   * for Greedy; "batch selection", "block collapses", "deferred collapses", "re-costing" for
    * Batched, each summed over the passes), "restore order", "prune" (with PruneComponents)
    * and "output" (the output mesh and the collapse record). Together they cover the
    * execution but for bookkeeping between the filter and the decimation (microseconds). An

@@ -29,7 +29,6 @@
 #include "util/Buffer.h"
 #include "vtkColorDecimationModule.h" // for export macro
 
-
 namespace colordecimation
 {
 class HalfEdgeMesh;
