@@ -531,8 +531,8 @@ void vtkColorHalfEdgeDecimation::Decimate(vtkInformationVector** inputVector,
   // 4. The output: the surviving triangles on the points they use, in input order, and the
   // collapse record when asked for.
   colordecimation::adapter::OutputOptions written;
-  written.OriginalIdsName =
-    this->GenerateOriginalPointIds ? this->OriginalPointIdsArrayName : nullptr;
+  written.OriginalIdsName = colordecimation::adapter::OriginalIdsName(
+    this, this->GenerateOriginalPointIds != 0, this->OriginalPointIdsArrayName);
   written.ConsistentOrientation = this->ConsistentOrientation != 0;
   written.Threads = threads;
   const vtkIdType numOutTriangles =

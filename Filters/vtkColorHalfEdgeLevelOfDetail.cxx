@@ -324,7 +324,8 @@ bool vtkColorHalfEdgeLevelOfDetail::ExtractLevel(vtkPolyData* input, vtkDataObje
   // 3. The output, as the decimation writes it; the statistics summed over the meshes.
   const vtkIdType triangles = colordecimation::adapter::WriteLevel(
     this, input, cache.Mesh, cache.Where,
-    this->GenerateOriginalPointIds ? this->OriginalPointIdsArrayName : nullptr,
+    colordecimation::adapter::OriginalIdsName(this, this->GenerateOriginalPointIds != 0,
+                                              this->OriginalPointIdsArrayName),
     std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads()), output);
   this->Cached->InputTriangles += collapses.InputTriangles;
   this->Cached->OutputTriangles += triangles;
@@ -454,7 +455,8 @@ int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(reques
   }
   if (!record)
   {
-    vtkErrorMacro(<< "No collapse record on input port 1 (SetRecordConnection); output is empty.");
+    vtkErrorMacro(<< "No collapse record on input port 1 (SetRecordConnection; in ParaView, the "
+                     "Record input); output is empty.");
     return 1;
   }
   auto* composite = vtkCompositeDataSet::SafeDownCast(input);

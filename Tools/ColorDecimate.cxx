@@ -69,7 +69,8 @@ struct Options
   /// --max-error P%: P percent of the input's bounding-box diagonal, set once it is read (-1:
   /// a distance, or none).
   double MaximumErrorPercent = -1;
-  bool ReductionGiven = false; ///< --reduction on the command line
+  bool ReductionGiven = false;    ///< --reduction on the command line
+  std::string MethodOptionsGiven; ///< those of MethodOptions on the command line, for messages
   /// Set once the input is read: its colour array's mapping to bytes, for every PLY file
   /// written (each file's own range would give the same point other bytes in each).
   ColorMapping PlyColors;
@@ -749,8 +750,7 @@ int ReadInput(const Options& options, Input& input)
   {
     if (!name->empty() && !FindColorArray(input.Mesh, *name))
     {
-      return Fail("'" + options.Input + "' has no point array named '" + *name +
-                  "' (point arrays: " + PointArrayNames(input.Mesh) + ")");
+      return Fail(NoNumericPointArray(input.Mesh, options.Input, *name));
     }
   }
   if (!options.Quiet)
@@ -1043,6 +1043,55 @@ int PrepareRecordRun(vtkColorHalfEdgeDecimation* filter, const Options& options)
   return Continue;
 }
 
+/// The options of the decimation's method: a level read from a record (--from-record) is the
+/// method that made the record's, whatever they say.
+const char* const MethodOptions[] = { "--paper",
+                                      "--metric",
+                                      "--color-weight",
+                                      "--geometry-weight",
+                                      "--boundary-weight",
+                                      "--edge-length-weight",
+                                      "--kept-vertex-error-weight",
+                                      "--piece-weight",
+                                      "--no-scene-relative-weights",
+                                      "--color-space",
+                                      "--placement",
+                                      "--preserve-boundary",
+                                      "--no-seams",
+                                      "--max-normal-angle",
+                                      "--schedule",
+                                      "--lock-array" };
+
+/// Those of MethodOptions given on the command line, comma separated.
+std::string GivenMethodOptions(const CLI::App& app)
+{
+  std::string given;
+  for (const char* name : MethodOptions)
+  {
+    if (app.count(name) > 0)
+    {
+      given += (given.empty() ? "" : ", ") + std::string(name);
+    }
+  }
+  return given;
+}
+
+/// Settings given that the run does not read: said on stderr, not dropped silently.
+void WarnUnreadSettings(vtkColorHalfEdgeDecimation* filter, const Options& options)
+{
+  if (filter->GetOptimalPlacement() &&
+      filter->GetErrorMetric() != vtkColorHalfEdgeDecimation::ColorQuadric)
+  {
+    std::cerr << Program << ": warning: --placement moves points in the color-quadric metric "
+              << "only (--metric color-quadric): ignored\n";
+  }
+  if (!options.FromRecord.empty() && !options.MethodOptionsGiven.empty())
+  {
+    std::cerr << Program << ": warning: --from-record gives the levels of the method that made "
+              << "the record: " << options.MethodOptionsGiven << " ignored\n";
+  }
+}
+
 /// Levels come from the record, which holds neither the pieces PruneComponents removes after
 /// the collapses nor ConsistentOrientation's winding: those options would be ignored.
 int CheckLevelOptions(vtkColorHalfEdgeDecimation* filter, const Options& options)
@@ -1234,6 +1283,7 @@ int Run(const Options& given)
   // The settings first, so that combinations the levels cannot honour fail before any reading.
   vtkNew<vtkColorHalfEdgeDecimation> filter;
   Configure(filter, options);
+  WarnUnreadSettings(filter, options);
   if (options.ReductionGiven && filter->GetTargetNumberOfTriangles() > 0)
   {
     return Fail("--reduction and --target-triangles each set the target: give one", 2);
@@ -1317,6 +1367,7 @@ int main(int argc, char* argv[])
     return status;
   }
   options.ReductionGiven = app.count("--reduction") > 0;
+  options.MethodOptionsGiven = GivenMethodOptions(app);
   const std::string error = CheckFiles(options);
   return error.empty() ? Run(options) : ReportUsageError(app, error);
 }

@@ -1463,8 +1463,8 @@ vtkSmartPointer<vtkPolyData> LoadInput(const Input& input, const Options& option
                                          : "`" + input.Source + "`";
   if (!options.Array.empty() && !mesh->GetPointData()->GetArray(options.Array.c_str()))
   {
-    std::cerr << Program << ": '" << input.Source << "' has no point array named '" << options.Array
-              << "' (point arrays: " << PointArrayNames(mesh) << ")" << std::endl;
+    std::cerr << Program << ": " << NoNumericPointArray(mesh, input.Source, options.Array)
+              << std::endl;
     return nullptr;
   }
   if (!options.Array.empty())

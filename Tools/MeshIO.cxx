@@ -7,6 +7,7 @@
 #include "PlyReader.h"
 #include "PlyWriter.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -742,6 +743,19 @@ std::string PointArrayNames(vtkPolyData* mesh)
     names += (names.empty() ? "" : ", ") + std::string(name);
   }
   return names.empty() ? std::string("none") : names;
+}
+
+std::string NoNumericPointArray(vtkPolyData* mesh, const std::string& source,
+                                const std::string& name)
+{
+  vtkAbstractArray* other = mesh->GetPointData()->GetAbstractArray(name.c_str());
+  if (other)
+  {
+    return "the point array '" + name + "' of '" + source + "' is a " + other->GetClassName() +
+      ", not numbers: colours and locks are numeric arrays";
+  }
+  return "'" + source + "' has no point array named '" + name +
+    "' (point arrays: " + PointArrayNames(mesh) + ")";
 }
 
 vtkDataArray* FindFaceColorArray(vtkPolyData* mesh, const std::string& name)

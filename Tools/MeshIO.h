@@ -86,6 +86,13 @@ vtkSmartPointer<vtkPolyData> Triangulated(vtkPolyData* mesh);
 /// Names of the point-data arrays, comma separated (for messages).
 std::string PointArrayNames(vtkPolyData* mesh);
 
+/**
+ * Why `mesh` (read from `source`) has no numeric point array named `name`, for an error: no
+ * array of that name (the names it has are listed), or one that is not numbers (text).
+ */
+std::string NoNumericPointArray(vtkPolyData* mesh, const std::string& source,
+                                const std::string& name);
+
 /// The colour array: the named point array, or the active point scalars when `name` is empty.
 vtkDataArray* FindColorArray(vtkPolyData* mesh, const std::string& name);
 

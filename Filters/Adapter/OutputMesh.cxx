@@ -605,6 +605,22 @@ void EmptyOutput(vtkDataObject* input, vtkDataObject* output) noexcept
   }
 }
 
+const char* OriginalIdsName(vtkObject* self, bool generate, const char* name)
+{
+  if (!generate)
+  {
+    return nullptr;
+  }
+  if (!name || !*name)
+  {
+    vtkWarningWithObjectMacro(self, << "GenerateOriginalPointIds is on but "
+                                       "OriginalPointIdsArrayName is empty: the ids are written "
+                                       "as 'vtkOriginalPointIds'.");
+    return "vtkOriginalPointIds";
+  }
+  return name;
+}
+
 vtkIdType WriteLevel(vtkObject* self, vtkPolyData* input, const InputMesh& mesh,
                      const std::vector<int32_t>& where, const char* originalIdsName, int threads,
                      vtkPolyData* output)

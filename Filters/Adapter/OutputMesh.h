@@ -34,6 +34,13 @@ struct OutputOptions
 };
 
 /**
+ * The name to write the original point ids under: none when `generate` is off; `name`, or
+ * "vtkOriginalPointIds" with a warning on `self` when it is empty (ids asked for are not
+ * dropped).
+ */
+const char* OriginalIdsName(vtkObject* self, bool generate, const char* name);
+
+/**
  * Fill `output` from the decimated mesh: points (moved ones at their new position), triangles
  * (each wound as its input triangle, or with ConsistentOrientation as its piece), point data
  * (moved ones with their new colour), the original point ids, and cell data. Arrays whose

@@ -313,7 +313,8 @@ bool ReadRecordTable(vtkTable* table, const MeshIdentity& mesh, CollapseRecord& 
   if (!table || !ReadIdentity(table, recorded))
   {
     why = std::string("it is not a collapse record (no ") + PointsField + ", " + TrianglesField +
-      " and " + ChecksumField + " in its field data)";
+      " and " + ChecksumField +
+      " in its field data: make it with the decimation's GenerateCollapseRecord on)";
     return false;
   }
   if (recorded.Points == mesh.Points && recorded.Triangles == mesh.Triangles &&

@@ -1278,6 +1278,17 @@ CD_TEST_CASE(ExistingOriginalIds)
   CD_CHECK_MSG(run.Errors == 0 && run.HasWarning("already has a point array"),
                "a warning about the replaced array");
   // The invariants check that the output array holds valid, distinct input ids.
+
+  // The ids asked for under an empty name: written under the default one, with a warning.
+  for (const char* name : { "", static_cast<const char*>(nullptr) })
+  {
+    run = Run(ColorMesh(), 0.9,
+              [name](vtkColorHalfEdgeDecimation* filter)
+              { filter->SetOriginalPointIdsArrayName(name); });
+    CD_CHECK_MSG(run.Errors == 0 && run.HasWarning("OriginalPointIdsArrayName is empty") &&
+                   run.Output->GetPointData()->GetArray("vtkOriginalPointIds"),
+                 "an empty name: the ids under vtkOriginalPointIds, with a warning");
+  }
 }
 
 /**
