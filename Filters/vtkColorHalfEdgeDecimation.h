@@ -501,12 +501,12 @@ public:
   ///@{
   /**
    * When on (default), the output gets a vtkIdTypeArray point-data array (named by
-   * OriginalPointIdsArrayName, default "vtkOriginalPointIds") with each output point's id in
-   * the input. When the input already has a point array of that name holding one integer
-   * id >= 0 per point (as vtkDataSetSurfaceFilter writes, pointing into the data set it came
-   * from), the ids are composed: each output point gets its input point's id from that array,
-   * so the link back to the original data set is kept. An input array of that name of another
-   * kind is replaced, with a warning.
+   * OriginalPointIdsArrayName, default "vtkOriginalPointIds"; an empty name writes that one,
+   * with a warning) with each output point's id in the input. When the input already has a point
+   * array of that name holding one integer id >= 0 per point (as vtkDataSetSurfaceFilter writes,
+   * pointing into the data set it came from), the ids are composed: each output point gets its
+   * input point's id from that array, so the link back to the original data set is kept. An input
+   * array of that name of another kind is replaced, with a warning.
    */
   vtkSetMacro(GenerateOriginalPointIds, vtkTypeBool);
   vtkGetMacro(GenerateOriginalPointIds, vtkTypeBool);
