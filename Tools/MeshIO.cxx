@@ -14,6 +14,7 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
+#include "vtkErrorCode.h"
 #include "vtkGenericDataObjectReader.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
@@ -633,6 +634,28 @@ bool WritePlyMesh(vtkPolyData* mesh, const std::string& path, const std::string&
   }
   return WritePly(out, path, pointColors, faceColors, error);
 }
+
+/// ": why" a VTK writer failed: its first message, unless the executive's "returned failure"
+/// is all there is (vtkXMLWriter out of disk space says no more), then its error code.
+std::string WriteFailure(unsigned long code, const MessageCatcher& caught)
+{
+  for (const std::string& message : caught.Errors)
+  {
+    if (message.find("returned failure for request") == std::string::npos)
+    {
+      return ": " + MessageCatcher::Clean(message);
+    }
+  }
+  if (code == vtkErrorCode::OutOfDiskSpaceError)
+  {
+    return ": out of disk space";
+  }
+  if (code != vtkErrorCode::NoError)
+  {
+    return ": " + std::string(vtkErrorCode::GetStringFromErrorCode(code));
+  }
+  return caught.Errors.empty() ? std::string() : ": " + caught.FirstError();
+}
 } // namespace
 
 bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& colorArrayName,
@@ -641,6 +664,7 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& co
   const std::string ext = Extension(path);
   MessageCatcher::Scope scope;
   int ok = 0;
+  unsigned long code = vtkErrorCode::NoError;
   if (ext == ".ply")
   {
     if (!WritePlyMesh(mesh, path, colorArrayName, mapping, error))
@@ -659,6 +683,7 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& co
     writer->SetCompressorTypeToZLib();
     writer->SetInputData(mesh);
     ok = writer->Write();
+    code = writer->GetErrorCode();
   }
   else if (ext == ".vtk")
   {
@@ -667,6 +692,7 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& co
     writer->SetFileTypeToBinary();
     writer->SetInputData(mesh);
     ok = writer->Write();
+    code = writer->GetErrorCode();
   }
   else
   {
@@ -676,8 +702,7 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, const std::string& co
   }
   if (!ok || !scope.Get()->Errors.empty())
   {
-    error = "cannot write '" + path + "'" +
-      (scope.Get()->Errors.empty() ? std::string() : ": " + scope.Get()->FirstError());
+    error = "cannot write '" + path + "'" + WriteFailure(code, *scope.Get());
     return false;
   }
   return true;
