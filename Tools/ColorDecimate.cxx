@@ -1044,7 +1044,8 @@ int PrepareRecordRun(vtkColorHalfEdgeDecimation* filter, const Options& options)
 }
 
 /// The options of the decimation's method: a level read from a record (--from-record) is the
-/// method that made the record's, whatever they say.
+/// method that made the record's, whatever they say. (--placement and --lock-array have
+/// checks of their own.)
 const char* const MethodOptions[] = { "--paper",
                                       "--metric",
                                       "--color-weight",
@@ -1055,12 +1056,10 @@ const char* const MethodOptions[] = { "--paper",
                                       "--piece-weight",
                                       "--no-scene-relative-weights",
                                       "--color-space",
-                                      "--placement",
                                       "--preserve-boundary",
                                       "--no-seams",
                                       "--max-normal-angle",
-                                      "--schedule",
-                                      "--lock-array" };
+                                      "--schedule" };
 
 /// Those of MethodOptions given on the command line, comma separated.
 std::string GivenMethodOptions(const CLI::App& app)

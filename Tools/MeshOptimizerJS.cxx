@@ -376,7 +376,8 @@ MeshOptimizerJSResult SimplifyWithMeshOptimizerJS(vtkPolyData* mesh,
     "," + Number(settings.Weights[2]);
   // V8 is made to compile the whole module with its optimising compiler when it is loaded,
   // before the call. By default it compiles each function at its first call with its
-  // baseline compiler, and one long call runs that slower code to its end (the same result).
+  // baseline compiler, and one long call runs that slower code to its end (the same result;
+  // simplify.mjs's header).
   const NodeRun run =
     RunNode(Checked().Node,
             { "--no-liftoff", "--no-wasm-lazy-compilation", ScriptFolder() + "/simplify.mjs",

@@ -314,7 +314,8 @@ bool ReadRecordTable(vtkTable* table, const MeshIdentity& mesh, CollapseRecord& 
   {
     why = std::string("it is not a collapse record (no ") + PointsField + ", " + TrianglesField +
       " and " + ChecksumField +
-      " in its field data: make it with the decimation's GenerateCollapseRecord on)";
+      " in its field data: make it with the decimation's GenerateCollapseRecord on, "
+      "color-decimate's --save-record)";
     return false;
   }
   if (recorded.Points == mesh.Points && recorded.Triangles == mesh.Triangles &&

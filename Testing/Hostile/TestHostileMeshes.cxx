@@ -1285,9 +1285,19 @@ CD_TEST_CASE(ExistingOriginalIds)
     run = Run(ColorMesh(), 0.9,
               [name](vtkColorHalfEdgeDecimation* filter)
               { filter->SetOriginalPointIdsArrayName(name); });
-    CD_CHECK_MSG(run.Errors == 0 && run.HasWarning("OriginalPointIdsArrayName is empty") &&
-                   run.Output->GetPointData()->GetArray("vtkOriginalPointIds"),
+    auto* ids =
+      vtkIdTypeArray::SafeDownCast(run.Output->GetPointData()->GetArray("vtkOriginalPointIds"));
+    CD_CHECK_MSG(run.Errors == 0 && run.HasWarning("OriginalPointIdsArrayName is empty") && ids &&
+                   ids->GetNumberOfTuples() == run.Output->GetNumberOfPoints(),
                  "an empty name: the ids under vtkOriginalPointIds, with a warning");
+    std::set<vtkIdType> distinct;
+    for (vtkIdType i = 0; ids && i < ids->GetNumberOfTuples(); ++i)
+    {
+      distinct.insert(ids->GetValue(i));
+    }
+    CD_CHECK_MSG(ids && distinct.size() == size_t(ids->GetNumberOfTuples()) &&
+                   *distinct.begin() >= 0 && *distinct.rbegin() < ColorMesh()->GetNumberOfPoints(),
+                 "the ids are distinct input point ids");
   }
 }
 

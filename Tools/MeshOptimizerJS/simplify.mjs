@@ -22,8 +22,8 @@
 // MeshOptimizerJS.cxx runs it as `node --no-liftoff --no-wasm-lazy-compilation simplify.mjs
 // ...`, so that V8 compiles the whole WebAssembly module with its optimising compiler when it
 // is loaded, before the call. By default V8 compiles each function at its first call with its
-// baseline compiler, and one long call runs that code to its end (the same result, about 1.5
-// times slower).
+// baseline compiler, and one long call runs that slower code to its end (the same result;
+// docs/BENCHMARK.md, "The set-up against the loop").
 //
 // Exit status: 0 done, 2 bad command line or input, 3 the package is missing or not the
 // pinned version.

@@ -4,8 +4,8 @@
 #         [-DMAKE_FILE=path -DMAKE_FILE_KIND=junk|points-only|ascii-ply-no-face|ushort-ply|
 #                                           float-color-grid|strip|face-color-ply|
 #                                           ply-extras|ply-no-index-list|ply-long-face|
-#                                           ascii-vtk-cut|stl-cut|stl-bogus-count|string-array-vtk|
-#                                           link-dev-full|
+#                                           ascii-vtk-cut|stl-cut|stl-bogus-count|
+#                                           string-array-vtk|link-dev-full|
 #                                           truncated -DMAKE_FILE_FROM=path -DMAKE_FILE_SIZE=n]
 #         [-DCHECK_FILE=path -DCHECK_FILE_REGEX=re] [-DCHECK_FILE_ABSENT=path]
 #         -P RunCheck.cmake -- COMMAND [ARG ...]
