@@ -1295,7 +1295,7 @@ CD_TEST_CASE(ExistingOriginalIds)
     {
       distinct.insert(ids->GetValue(i));
     }
-    CD_CHECK_MSG(ids && distinct.size() == size_t(ids->GetNumberOfTuples()) &&
+    CD_CHECK_MSG(ids && !distinct.empty() && distinct.size() == size_t(ids->GetNumberOfTuples()) &&
                    *distinct.begin() >= 0 && *distinct.rbegin() < ColorMesh()->GetNumberOfPoints(),
                  "the ids are distinct input point ids");
   }
