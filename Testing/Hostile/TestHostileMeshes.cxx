@@ -1290,14 +1290,9 @@ CD_TEST_CASE(ExistingOriginalIds)
     CD_CHECK_MSG(run.Errors == 0 && run.HasWarning("OriginalPointIdsArrayName is empty") && ids &&
                    ids->GetNumberOfTuples() == run.Output->GetNumberOfPoints(),
                  "an empty name: the ids under vtkOriginalPointIds, with a warning");
-    std::set<vtkIdType> distinct;
-    for (vtkIdType i = 0; ids && i < ids->GetNumberOfTuples(); ++i)
-    {
-      distinct.insert(ids->GetValue(i));
-    }
-    CD_CHECK_MSG(ids && !distinct.empty() && distinct.size() == size_t(ids->GetNumberOfTuples()) &&
-                   *distinct.begin() >= 0 && *distinct.rbegin() < ColorMesh()->GetNumberOfPoints(),
-                 "the ids are distinct input point ids");
+    // The invariants read the ids under the name the filter writes them (valid, distinct input
+    // ids, the points and point data copied bit-exactly).
+    CD_CHECK_MSG(run.Broken.empty(), "the ids are distinct input point ids");
   }
 }
 

@@ -302,6 +302,18 @@ void CheckPointArrayCopied(vtkDataArray* in, vtkDataArray* out, vtkIdTypeArray* 
  * ColorQuadric metric's OptimalPlacement, points move and take a new colour: their
  * coordinates and the colour array are then not compared.
  */
+/// The name the filter writes its original ids under: null when it writes none, its
+/// OriginalPointIdsArrayName, or vtkOriginalPointIds when that is empty.
+const char* WrittenIdsName(vtkColorHalfEdgeDecimation* filter)
+{
+  const char* name = filter->GetOriginalPointIdsArrayName();
+  if (!filter->GetGenerateOriginalPointIds())
+  {
+    return nullptr;
+  }
+  return name && *name ? name : "vtkOriginalPointIds";
+}
+
 /**
  * The input's own ids of the filter's id array name, when the filter composes with them (one
  * integer id in [0, 2^53] per point), else null.
@@ -334,9 +346,8 @@ vtkDataArray* UpstreamIds(vtkPolyData* input, const char* idsName)
 vtkSmartPointer<vtkIdTypeArray> InputIds(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter,
                                          vtkPolyData* output, Broken& broken)
 {
-  const char* idsName = filter->GetOriginalPointIdsArrayName();
-  if (!filter->GetGenerateOriginalPointIds() || !idsName || !*idsName ||
-      output->GetNumberOfPoints() == 0)
+  const char* idsName = WrittenIdsName(filter);
+  if (!idsName || output->GetNumberOfPoints() == 0)
   {
     return nullptr;
   }
@@ -381,7 +392,7 @@ void CheckOriginalIds(vtkPolyData* input, vtkColorHalfEdgeDecimation* filter, vt
                       vtkIdTypeArray* original, Broken& broken)
 {
   const vtkIdType numOutPoints = output->GetNumberOfPoints();
-  const char* idsName = filter->GetOriginalPointIdsArrayName();
+  const char* idsName = WrittenIdsName(filter);
   vtkPointData* outPD = output->GetPointData();
   if (!original || original->GetNumberOfTuples() != numOutPoints ||
       original->GetNumberOfComponents() != 1 ||
