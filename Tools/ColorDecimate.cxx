@@ -502,16 +502,12 @@ bool SameFile(const std::string& a, const std::string& b)
   return ea || eb ? a == b : ca == cb;
 }
 
-/// No file the run writes is a file it reads, nor another file it writes.
-std::string CheckCollisions(const Options& options)
+using Named = std::pair<std::string, std::string>; // what a file is, its path
+
+/// The files the run may write (a path is empty where the option is not given).
+std::vector<Named> WrittenFiles(const Options& options)
 {
-  using Named = std::pair<std::string, std::string>; // what it is, its path
-  std::vector<Named> read, written;
-  if (!IsDemoSpec(options.Input))
-  {
-    read.emplace_back("INPUT", options.Input);
-  }
-  read.emplace_back("--from-record file", options.FromRecord);
+  std::vector<Named> written;
   for (size_t i = 0; i < options.Levels.size(); ++i)
   {
     written.emplace_back("level " + std::to_string(i + 1) + " file",
@@ -522,6 +518,19 @@ std::string CheckCollisions(const Options& options)
   written.emplace_back("--snapshot file", options.Snapshot);
   written.emplace_back("--write-demo file", options.WriteInput);
   written.emplace_back("--save-record file", options.SaveRecord);
+  return written;
+}
+
+/// No file the run writes is a file it reads, nor another file it writes.
+std::string CheckCollisions(const Options& options)
+{
+  std::vector<Named> read;
+  if (!IsDemoSpec(options.Input))
+  {
+    read.emplace_back("INPUT", options.Input);
+  }
+  read.emplace_back("--from-record file", options.FromRecord);
+  const std::vector<Named> written = WrittenFiles(options);
   for (size_t i = 0; i < written.size(); ++i)
   {
     const auto& [what, path] = written[i];
@@ -540,6 +549,31 @@ std::string CheckCollisions(const Options& options)
           "')";
       }
     }
+  }
+  return "";
+}
+
+/**
+ * Every file the run writes goes into a folder that exists: a mistyped folder is reported
+ * before the input is read and decimated, not after. (A folder that exists but refuses the
+ * file, a full disk, is still reported when the file is written.)
+ */
+std::string CheckOutputFolders(const Options& options)
+{
+  namespace fs = std::filesystem;
+  for (const auto& [what, path] : WrittenFiles(options))
+  {
+    const fs::path folder = fs::path(path).parent_path();
+    std::error_code error;
+    if (path.empty() || folder.empty() || fs::is_directory(folder, error))
+    {
+      continue;
+    }
+    const bool exists = fs::exists(folder, error);
+    const std::string named = what == "OUTPUT" ? std::string() : "the " + what + " ";
+    return "cannot write " + named + "'" + path + "': " +
+      (exists ? "'" + folder.string() + "' is not a folder"
+              : "no folder '" + folder.string() + "'");
   }
   return "";
 }
@@ -1292,6 +1326,11 @@ int Run(const Options& given)
   if (status != Continue)
   {
     return status;
+  }
+  const std::string folderError = CheckOutputFolders(options);
+  if (!folderError.empty())
+  {
+    return Fail(folderError);
   }
   Input input;
   status = ReadInput(options, input);

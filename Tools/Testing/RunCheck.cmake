@@ -5,7 +5,7 @@
 #                                           float-color-grid|strip|face-color-ply|
 #                                           ply-extras|ply-no-index-list|ply-long-face|
 #                                           ascii-vtk-cut|stl-cut|stl-bogus-count|
-#                                           string-array-vtk|link-dev-full|
+#                                           string-array-vtk|link-dev-full|folder|
 #                                           truncated -DMAKE_FILE_FROM=path -DMAKE_FILE_SIZE=n]
 #         [-DCHECK_FILE=path -DCHECK_FILE_REGEX=re] [-DCHECK_FILE_ABSENT=path]
 #         -P RunCheck.cmake -- COMMAND [ARG ...]
@@ -26,7 +26,8 @@
 # (VTK's reader crashed on it), "stl-bogus-count" a binary STL of two
 # whole triangles (4 points) whose header counts 16,843,009, "stl-cut" the same with 20 bytes
 # of a third triangle, "string-array-vtk" a legacy VTK polydata of two triangles with a point
-# array of text named Labels, "link-dev-full" a symbolic link to /dev/full (a full disk), "truncated" the first MAKE_FILE_SIZE bytes of MAKE_FILE_FROM.
+# array of text named Labels, "link-dev-full" a symbolic link to /dev/full (a full disk),
+# "folder" an empty folder, "truncated" the first MAKE_FILE_SIZE bytes of MAKE_FILE_FROM.
 # CHECK_FILE must exist after the command and match CHECK_FILE_REGEX (it is removed first,
 # unless it is MAKE_FILE: a file from an earlier run cannot pass); CHECK_FILE_ABSENT must not
 # (it is removed first too).
@@ -120,6 +121,9 @@ if (DEFINED MAKE_FILE)
       "property float z\nelement face 2\nproperty list uchar int vertex_indices\n"
       "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n"
       "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2 255 0 0\n3 0 2 3 0 255 0\n")
+  elseif (MAKE_FILE_KIND STREQUAL "folder")
+    file(REMOVE_RECURSE "${MAKE_FILE}")
+    file(MAKE_DIRECTORY "${MAKE_FILE}")
   elseif (MAKE_FILE_KIND STREQUAL "link-dev-full")
     file(REMOVE "${MAKE_FILE}")
     file(CREATE_LINK /dev/full "${MAKE_FILE}" SYMBOLIC)
