@@ -14,6 +14,7 @@
 #include "Core/Decimator.h"
 #include "Core/util/PhaseTimes.h"
 
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
@@ -33,6 +34,7 @@
 #include <exception>
 #include <limits>
 #include <new>
+#include <string>
 
 vtkStandardNewMacro(vtkColorHalfEdgeDecimation);
 
@@ -100,17 +102,49 @@ bool CheckInput(vtkColorHalfEdgeDecimation* self, vtkPolyData* input)
   return true;
 }
 
-/// Whether `array` (the `role` array named `name`) is point data with a tuple per point; an
-/// error (the output is then empty) if not.
-bool IsPointArray(vtkColorHalfEdgeDecimation* self, const char* role, const char* name,
-                  vtkDataArray* array, int association, vtkIdType numPoints)
+/// The name of the array selected with SetInputArrayToProcess(index, ...); null if none is, or
+/// if it is selected by attribute type.
+const char* SelectedName(vtkAlgorithm* self, int index)
 {
-  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  vtkInformationVector* arrays =
+    self->GetInformation()->Get(vtkAlgorithm::INPUT_ARRAYS_TO_PROCESS());
+  vtkInformation* selection = arrays && arrays->GetNumberOfInformationObjects() > index
+    ? arrays->GetInformationObject(index)
+    : nullptr;
+  return selection && selection->Has(vtkDataObject::FIELD_NAME())
+    ? selection->Get(vtkDataObject::FIELD_NAME())
+    : nullptr;
+}
+
+/// Why the `role` array selected as `name` (SetInputArrayToProcess) is not read: it is selected
+/// by another association than the points', or it is not numeric, or not point data, or not there.
+std::string Unusable(vtkPolyData* input, const char* role, const char* name, int association)
+{
+  const std::string array = std::string("The ") + role + " array '" + name + "' ";
+  if (vtkAbstractArray* found = input->GetPointData()->GetAbstractArray(name))
   {
-    vtkErrorWithObjectMacro(self, << "The " << role << " array '" << name
-                                  << "' is not a point-data array; output is empty.");
-    return false;
+    if (association == vtkDataObject::FIELD_ASSOCIATION_CELLS ||
+        association == vtkDataObject::FIELD_ASSOCIATION_NONE)
+    {
+      return array + "is selected from the " +
+        (association == vtkDataObject::FIELD_ASSOCIATION_CELLS ? "cell" : "field") +
+        " data, not the point data";
+    }
+    return array + (found->IsNumeric() ? "cannot be read" : "is not numeric");
   }
+  if (input->GetCellData()->GetAbstractArray(name) || input->GetFieldData()->GetAbstractArray(name))
+  {
+    return array + "is " + (input->GetCellData()->GetAbstractArray(name) ? "cell" : "field") +
+      " data, not point data";
+  }
+  return std::string("No ") + role + " array named '" + name + "'";
+}
+
+/// Whether `array` (the `role` array named `name`, point data) has a tuple per point; an error
+/// (the output is then empty) if not.
+bool IsPointArray(vtkColorHalfEdgeDecimation* self, const char* role, const char* name,
+                  vtkDataArray* array, vtkIdType numPoints)
+{
   if (array->GetNumberOfTuples() != numPoints)
   {
     vtkErrorWithObjectMacro(self, << "The " << role << " array '" << name << "' has "
@@ -134,16 +168,10 @@ bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int assoc
   const char* name = array && array->GetName() ? array->GetName() : "";
   if (!array)
   {
-    vtkInformation* selection = self->GetInputArrayInformation(0);
-    const char* asked = selection && selection->Has(vtkDataObject::FIELD_NAME())
-      ? selection->Get(vtkDataObject::FIELD_NAME())
-      : nullptr;
+    const char* asked = SelectedName(self, 0);
     if (asked && *asked)
     {
-      vtkAbstractArray* found = input->GetPointData()->GetAbstractArray(asked);
-      const bool other = found && !found->IsNumeric();
-      vtkWarningWithObjectMacro(self, << (other ? "The colour array '" : "No colour array named '")
-                                      << asked << (other ? "' is not numeric" : "'")
+      vtkWarningWithObjectMacro(self, << Unusable(input, "colour", asked, association)
                                       << " (SetInputArrayToProcess): decimating by geometry "
                                          "alone.");
     }
@@ -160,7 +188,13 @@ bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int assoc
     }
     return true;
   }
-  if (!IsPointArray(self, "colour", name, array, association, numPoints))
+  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  {
+    vtkWarningWithObjectMacro(self, << Unusable(input, "colour", name, association)
+                                    << " (SetInputArrayToProcess): decimating by geometry alone.");
+    return true;
+  }
+  if (!IsPointArray(self, "colour", name, array, numPoints))
   {
     return false;
   }
@@ -203,17 +237,14 @@ bool ReadLocks(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int associ
     }
     return true;
   }
-  if (!array)
+  if (!array || association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
   {
-    vtkAbstractArray* found = input->GetPointData()->GetAbstractArray(name);
-    const bool other = found && !found->IsNumeric();
-    vtkWarningWithObjectMacro(self, << (other ? "The lock array '" : "No lock array named '")
-                                    << name << (other ? "' is not numeric" : "'")
+    vtkWarningWithObjectMacro(self, << Unusable(input, "lock", name, association)
                                     << " (SetInputArrayToProcess(1, ...)): no point is locked.");
     return true;
   }
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  if (!IsPointArray(self, "lock", name, array, association, numPoints))
+  if (!IsPointArray(self, "lock", name, array, numPoints))
   {
     return false;
   }
@@ -330,11 +361,22 @@ void WriteRecord(vtkColorHalfEdgeDecimation* self,
                                              self->GetCollapseScheduleAsString(), table);
 }
 
-/// Non-manifold places are kept as they are: say so (reoriented triangles are legitimate).
+/// Non-manifold places are kept as they are: say so (reoriented triangles are legitimate), as
+/// when seams lock so many points that the triangles barely share any (a triangle soup).
 void ReportBuild(vtkColorHalfEdgeDecimation* self,
-                 const colordecimation::DecimatorStatistics& stats)
+                 const colordecimation::DecimatorStatistics& stats, vtkIdType numPoints)
 {
   const colordecimation::MeshBuildReport& build = stats.Build;
+  if (stats.SeamLockedVertices > 0 && 4 * stats.SeamLockedVertices >= numPoints)
+  {
+    vtkWarningWithObjectMacro(
+      self,
+      << stats.SeamLockedVertices << " of the " << numPoints
+      << " points are kept as they are: each shares its position with two or more other "
+         "points (an attribute seam of more than two sides). If the triangles do not share their "
+         "points (a triangle soup, as from an STL or OBJ file read without merging), "
+         "merge the coincident points first (vtkCleanPolyData, vtkStaticCleanPolyData).");
+  }
   if (stats.ReorientedTriangles > 0)
   {
     vtkDebugWithObjectMacro(
@@ -459,6 +501,16 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->ResetStatistics();
+  vtkDataObject* given = vtkDataObject::GetData(inputVector[0], 0);
+  if (given && !input && output)
+  {
+    // A block of another type in a composite input (the pipeline passes it on): left empty,
+    // as the level filter leaves it.
+    vtkWarningMacro(<< "A block of the input is a " << given->GetClassName()
+                    << ", not a vtkPolyData: its output is empty (extract its surface first: "
+                       "vtkGeometryFilter).");
+    return 1;
+  }
   if (!input || !output)
   {
     vtkErrorMacro(<< "No " << (input ? "output" : "input") << " vtkPolyData.");
@@ -525,7 +577,7 @@ void vtkColorHalfEdgeDecimation::Decimate(vtkInformationVector** inputVector,
                     this->UpdateProgress(0.05 + 0.85 * fraction);
                     return !this->GetAbortExecute();
                   });
-  ReportBuild(this, stats);
+  ReportBuild(this, stats, input->GetNumberOfPoints());
   this->KeepStatistics(stats);
 
   // 4. The output: the surviving triangles on the points they use, in input order, and the
@@ -611,13 +663,7 @@ int vtkColorHalfEdgeDecimation::FillOutputPortInformation(int port, vtkInformati
 //------------------------------------------------------------------------------
 const char* vtkColorHalfEdgeDecimation::GetLockArrayName()
 {
-  vtkInformationVector* arrays = this->GetInformation()->Get(INPUT_ARRAYS_TO_PROCESS());
-  vtkInformation* selection = arrays && arrays->GetNumberOfInformationObjects() > 1
-    ? arrays->GetInformationObject(1)
-    : nullptr;
-  const char* name = selection && selection->Has(vtkDataObject::FIELD_NAME())
-    ? selection->Get(vtkDataObject::FIELD_NAME())
-    : nullptr;
+  const char* name = SelectedName(this, 1);
   return name && *name && std::strcmp(name, "None") != 0 ? name : nullptr;
 }
 
@@ -681,6 +727,8 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PruneComponents: " << (this->PruneComponents ? "On" : "Off") << "\n";
   os << indent << "ConsistentOrientation: " << (this->ConsistentOrientation ? "On" : "Off") << "\n";
   os << indent << "PreserveSeams: " << (this->PreserveSeams ? "On" : "Off") << "\n";
+  const char* colors = SelectedName(this, 0);
+  os << indent << "ColorArrayName: " << (colors ? colors : "(the active point scalars)") << "\n";
   os << indent
      << "LockArrayName: " << (this->GetLockArrayName() ? this->GetLockArrayName() : "(none)")
      << "\n";

@@ -44,9 +44,10 @@
  * The colour is the array selected with SetInputArrayToProcess(0, ...) (by default the
  * active point scalars): unsigned char RGB/RGBA (/255), float or double RGB (used as they are
  * in [0,1], otherwise scaled by the array's range), other numeric types (scaled by their
- * range), or a one-component grey value. Alpha is carried through but not measured. Without
- * a colour array the filter decimates by geometry alone (a warning only when an array
- * selected by name is not there).
+ * range), or a grey value (one component, or the first of two: grey and alpha). Alpha is
+ * carried through but not measured. Without a colour array the filter decimates by geometry
+ * alone (a warning only when an array selected by name is not there, not numeric, or cell or
+ * field data rather than point data).
  *
  * Collapses keep the surface a 2-manifold where it was one (link condition), never flip a
  * triangle normal by more than MaximumNormalAngle, never create a degenerate triangle, and
@@ -62,7 +63,8 @@
  * Composite data (a vtkMultiBlockDataSet of meshes, ...): VTK's pipeline runs the filter on
  * each mesh, so both outputs are composites of the input's structure (the record's holds each
  * mesh's table, for vtkColorHalfEdgeLevelOfDetail), and the statistics (ActualReduction, ...)
- * are those of the last mesh.
+ * are those of the last mesh. A block that is not a vtkPolyData gives an empty block, with a
+ * warning.
  *
  * Distributed data: when the input is one piece of several (UPDATE_NUMBER_OF_PIECES > 1, as
  * in ParaView run with MPI), the filter asks upstream for one level of ghost cells. Ghost
@@ -74,10 +76,16 @@
  *
  * Input: polygons and triangle strips are triangulated (quietly: debug output); vertices and
  * lines are dropped (with a warning). Without point scalars the mesh is decimated by its
- * geometry (a warning only when an array selected by name is missing). Empty input gives
- * empty output. Points with NaN or infinite coordinates, cell point ids out of range, or a
- * colour array whose tuple count differs from the number of points are errors: the output is
- * then empty.
+ * geometry (a warning only when an array selected by name is missing). Triangles that do not
+ * share their points (a triangle soup) cannot collapse: a warning says to merge the points
+ * first. Empty input gives empty output. Points with NaN or infinite coordinates, cell point
+ * ids out of range, or a colour array whose tuple count differs from the number of points are
+ * errors: the output is then empty.
+ *
+ * Progress: after reading the input (5 %), the set-up's phases report a step each (to 22 %),
+ * then the collapses. AbortExecute is honoured between those steps and between the collapse
+ * passes (Batched) or every 8,192 collapses (Greedy); the output is then the mesh as far as it
+ * got (the input itself when the abort came during the set-up).
  *
  * @sa
  * vtkColorHalfEdgeLevelOfDetail vtkQuadricDecimation vtkDecimatePro vtkQuadricClustering
@@ -465,6 +473,8 @@ public:
 
   /**
    * The collapse record of the last execution (output port 1; see GenerateCollapseRecord).
+   * Null for a composite input, whose record is a composite data set of the same structure:
+   * GetOutputDataObject(1) returns it.
    */
   vtkTable* GetCollapseRecord();
 

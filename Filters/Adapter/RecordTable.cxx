@@ -254,7 +254,7 @@ bool ReadColumns(vtkTable* table, CollapseRecord& record, std::string& why)
   }
   if (!ReadIds(removed, record.Removed) || !ReadIds(survivor, record.Survivor))
   {
-    why = "its point ids are not all integers";
+    why = "its point ids are not all whole numbers from -1 to 2^31 - 1";
     return false;
   }
   // The costs are the schedule's, kept for the user (the levels do not read them): any value.

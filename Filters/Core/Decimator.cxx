@@ -7,6 +7,7 @@
 #include "schedule/Batched.h"
 #include "schedule/Greedy.h"
 
+#include <algorithm>
 #include <type_traits>
 
 namespace colordecimation
@@ -47,6 +48,53 @@ size_t StateBytes(const DecimatorOptions& options, const DecimatorInput& input, 
   }
   return bytes;
 }
+
+/// The share of the progress the set-up's phases report, a step each (spatial order ...
+/// error planes: Engine::Start's laps); the collapses report the rest.
+constexpr double SetUpShare = 0.2;
+constexpr int SetUpSteps = 7;
+
+/// The engine's set-up, reporting its phases' progress; false when it was asked to abort.
+template <typename Metric>
+bool StartReporting(Engine<Metric>& engine, const DecimatorInput& input, DecimatorStatistics& stats,
+                    const ProgressFunction& progress)
+{
+  bool go = true;
+  int steps = 0;
+  if (progress)
+  {
+    stats.Phases.SetObserver(
+      [&]
+      {
+        steps = std::min(steps + 1, SetUpSteps);
+        go = go && progress(SetUpShare * steps / SetUpSteps);
+      });
+  }
+  engine.Start(input, stats);
+  stats.Phases.SetObserver(nullptr);
+  return go;
+}
+
+/// The schedule's collapses, reporting the rest of the progress.
+template <typename Metric>
+void Collapse(Engine<Metric>& engine, CollapseSchedule schedule, DecimatorStatistics& stats,
+              const ProgressFunction& progress)
+{
+  ProgressFunction collapsing;
+  if (progress)
+  {
+    collapsing = [&progress](double done)
+    { return progress(SetUpShare + (1.0 - SetUpShare) * done); };
+  }
+  if (schedule == CollapseSchedule::Batched)
+  {
+    CollapseInBatches(engine, stats, collapsing);
+  }
+  else
+  {
+    CollapseGreedily(engine, stats, collapsing);
+  }
+}
 } // namespace
 
 Decimator::Decimator(const DecimatorOptions& options)
@@ -81,7 +129,7 @@ DecimatorStatistics Decimator::RunWith(const DecimatorInput& input, int64_t targ
   stats.InputTriangles = input.NumberOfTriangles;
   stats.TargetTriangles = std::max<int64_t>(targetTriangles, 0);
   stats.Phases.Start();
-  engine->Start(input, stats);
+  const bool go = StartReporting(*engine, input, stats, progress);
   if constexpr (std::is_same_v<Metric, AttributeQuadricMetric>)
   {
     stats.SceneWeightScale = engine->GetMetric().GetSceneWeightScale();
@@ -95,14 +143,11 @@ DecimatorStatistics Decimator::RunWith(const DecimatorInput& input, int64_t targ
       size_t(std::max<int64_t>(input.NumberOfTriangles - stats.TargetTriangles, 0) + 64) +
       3 * engine->GetPieceFaces());
   }
-  if (this->Options.Schedule == CollapseSchedule::Batched)
+  if (go)
   {
-    CollapseInBatches(*engine, stats, progress);
+    Collapse(*engine, this->Options.Schedule, stats, progress);
   }
-  else
-  {
-    CollapseGreedily(*engine, stats, progress);
-  }
+  stats.Aborted = stats.Aborted || !go;
   // The schedule's figure is its collapses'; the pieces removed whole count too.
   stats.ActualError =
     std::max(stats.ActualError, engine->ToInputDistance(engine->GetLargestPieceError()));

@@ -758,9 +758,11 @@ void CheckProgress(int schedule)
   const RunResult r = RunWithProgress(mesh, 0.9, log, schedule);
   CD_CHECK(std::abs(r.ActualReduction - 0.9) <= 0.01);
   CD_CHECK(log.Values.size() >= 3);
-  int between = 0;
+  int between = 0, setUp = 0;
   for (size_t i = 0; i < log.Values.size(); ++i)
   {
+    // The set-up's phases report the first fifth of the run's share (0.05 + 0.85 * 0.2).
+    setUp += (log.Values[i] > 0.05 && log.Values[i] <= 0.22 + 1e-12) ? 1 : 0;
     CD_CHECK(log.Values[i] >= 0.0 && log.Values[i] <= 1.0);
     if (i > 0)
     {
@@ -770,6 +772,7 @@ void CheckProgress(int schedule)
     between += (log.Values[i] > 0.05 && log.Values[i] < 1.0) ? 1 : 0;
   }
   CD_CHECK_MSG(between >= 2, "only " << between << " progress reports during the decimation");
+  CD_CHECK_MSG(setUp >= 6, "only " << setUp << " progress reports during the set-up");
   CD_CHECK(!log.Values.empty() && log.Values.back() == 1.0);
 }
 
@@ -805,6 +808,10 @@ void CheckAbort(int schedule)
     CD_CHECK(r.ActualReduction < 0.89);
     CD_CHECK(r.Output->GetNumberOfPolys() > complete.Output->GetNumberOfPolys());
     CD_CHECK(r.Output->GetNumberOfPolys() > 0);
+    // An abort asked before the set-up's end stops the run before the first collapse.
+    CD_CHECK_MSG(abortAt > 0.0 || r.Collapses == 0,
+                 r.Collapses << " collapses after an abort "
+                                "during the set-up");
     // The filter's progress stays where the run stopped; only the executive of VTK 9.1-9.2
     // reports its 1.0 at the end of every RequestData, aborted or not.
     const auto ones = std::count(log.Values.begin(), log.Values.end(), 1.0);
@@ -890,16 +897,35 @@ CD_TEST_CASE(PrintSelf)
   filter->SetKeptVertexErrorWeight(0.375);
   filter->SetBoundaryWeight(4.5);
   filter->SceneRelativeWeightsOff();
+  std::ostringstream unselected;
+  filter->Print(unselected);
+  CD_CHECK(unselected.str().find("ColorArrayName: (the active point scalars)") !=
+           std::string::npos);
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "MyColours");
+  filter->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Pinned");
   std::ostringstream os;
   filter->Print(os);
   const std::string text = os.str();
-  for (const char* expected :
-       { "ErrorMetric: Geometry", "TargetReduction: 0.25", "PreserveBoundary: On",
-         "MaximumNormalAngle: 33.5", "GeometryWeight: 7.25", "GenerateOriginalPointIds: Off",
-         "OriginalPointIdsArrayName: SourcePoint", "CollapseSchedule: Batched",
-         "NumberOfThreads: 3", "EdgeLengthWeight: 0.125", "KeptVertexErrorWeight: 0.375",
-         "BoundaryWeight: 4.5", "SceneRelativeWeights: Off", "SceneWeightScale: 1",
-         "ActualReduction: ", "NumberOfCollapses: ", "StateMemory: ", "NumberOfThreadsUsed: " })
+  for (const char* expected : { "ErrorMetric: Geometry",
+                                "TargetReduction: 0.25",
+                                "PreserveBoundary: On",
+                                "MaximumNormalAngle: 33.5",
+                                "GeometryWeight: 7.25",
+                                "GenerateOriginalPointIds: Off",
+                                "OriginalPointIdsArrayName: SourcePoint",
+                                "CollapseSchedule: Batched",
+                                "NumberOfThreads: 3",
+                                "EdgeLengthWeight: 0.125",
+                                "KeptVertexErrorWeight: 0.375",
+                                "BoundaryWeight: 4.5",
+                                "SceneRelativeWeights: Off",
+                                "SceneWeightScale: 1",
+                                "ColorArrayName: MyColours",
+                                "LockArrayName: Pinned",
+                                "ActualReduction: ",
+                                "NumberOfCollapses: ",
+                                "StateMemory: ",
+                                "NumberOfThreadsUsed: " })
   {
     CD_CHECK_MSG(text.find(expected) != std::string::npos, "PrintSelf lacks '" << expected << "'");
   }

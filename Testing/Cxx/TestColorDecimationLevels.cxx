@@ -15,9 +15,11 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPartitionedDataSet.h"
@@ -601,6 +603,34 @@ void ExpectMixedBlocks(vtkColorHalfEdgeLevelOfDetail* lod, vtkMultiBlockDataSet*
   CD_CHECK(kept > 0);
 }
 
+/// The decimation of `group` with a block that is no mesh: a warning (no pipeline failure), that
+/// block empty, the meshes decimated.
+void ExpectImageBlockLeftEmpty(vtkMultiBlockDataSet* group)
+{
+  vtkNew<vtkMultiBlockDataSet> withImage;
+  withImage->ShallowCopy(group);
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(4, 4, 4);
+  withImage->SetBlock(2, image);
+  vtkNew<vtkColorHalfEdgeDecimation> run;
+  EventRecorder messages;
+  messages.Watch(run);
+  run->SetInputData(withImage);
+  CD_CHECK(run->GetExecutive()->Update() == 1);
+  CD_CHECK(messages.Errors == 0 && messages.Warnings == 1 &&
+           messages.HasWarning("is a vtkImageData, not a vtkPolyData"));
+  const auto blocks = Leaves(run->GetOutputDataObject(0));
+  int decimated = 0, empty = 0;
+  for (const auto& [index, block] : blocks)
+  {
+    auto* mesh = vtkPolyData::SafeDownCast(block);
+    decimated += mesh && mesh->GetNumberOfPolys() > 0 ? 1 : 0;
+    empty += !mesh || mesh->GetNumberOfCells() == 0 ? 1 : 0;
+  }
+  CD_CHECK_MSG(decimated == 2 && empty == static_cast<int>(blocks.size()) - 2,
+               decimated << " meshes decimated of " << blocks.size() << " blocks");
+}
+
 /// A single record serves a composite of one mesh (whatever other blocks it has), not one of
 /// several; the other way round, a single mesh takes a composite record of one mesh, as its
 /// table, and a composite record of several is refused, naming what it is.
@@ -689,6 +719,7 @@ CD_TEST_CASE(CompositeInput)
 
   run->SetInputData(group);
   ExpectMixedBlocks(lod, group, meshes, messages);
+  ExpectImageBlockLeftEmpty(group);
 
   // A composite record given as data and edited in place (a column removed, the table marked
   // modified): read again, and refused.
@@ -849,6 +880,7 @@ CD_TEST_CASE(BadRecords)
   };
   expectError(tampered("SurvivingPointId", 3, mesh->GetNumberOfPoints()), nullptr, "out of range");
   expectError(tampered("RemovedPointId", 0, -1), nullptr, "out of range");
+  expectError(tampered("SurvivingPointId", 3, -5), nullptr, "whole numbers from -1 to 2^31 - 1");
   expectError(tampered("RemovedPointId", 5, ColumnValues(run.Record, "RemovedPointId")[2]), nullptr,
               "an earlier one removed");
   expectError(tampered("NumberOfTriangles", 4, mesh->GetNumberOfCells()), nullptr,

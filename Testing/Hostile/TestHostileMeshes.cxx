@@ -428,7 +428,8 @@ CD_TEST_CASE(DoubleSidedTriangle)
   }
 }
 
-/// Every triangle with its own three points (a triangle soup): nothing can collapse.
+/// Every triangle with its own three points (a triangle soup): nothing can collapse, and a
+/// warning says why (the seams lock the points) and what to do (merge them).
 CD_TEST_CASE(TriangleSoup)
 {
   auto grid = colordecimation::meshes::Grid(10, 10, Pattern::SharpRegions);
@@ -447,10 +448,14 @@ CD_TEST_CASE(TriangleSoup)
   auto mesh = Make(points, triangles);
   colordecimation::meshes::ApplyPattern(mesh, Pattern::SharpRegions);
   RunResult run = Run(mesh, 0.9);
-  ExpectNoMessages(run);
+  CD_CHECK_MSG(run.Errors == 0 && run.Warnings == 1 && run.HasWarning("a triangle soup") &&
+                 run.HasWarning("of the 600 points are kept") &&
+                 run.HasWarning("merge the coincident points first"),
+               "one warning: " << run.WarningText());
   CD_CHECK_MSG(run.Collapses == 0, "no collapse");
   CD_CHECK_MSG(OriginalTriangles(run.Output) == OriginalTriangles(Run(mesh, 0.0).Output),
                "the output is the input");
+  ExpectNoMessages(Run(grid, 0.9)); // its points shared: no warning
 }
 
 /// Coincident duplicates of every point, unused: dropped, and the result does not change.
@@ -1055,12 +1060,27 @@ CD_TEST_CASE(BadColorArrays)
   rgb->SetNumberOfTuples(mesh->GetNumberOfCells());
   rgb->Fill(100);
   cellColors->GetCellData()->AddArray(rgb);
-  for (int association : { vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS,
-                           vtkDataObject::FIELD_ASSOCIATION_CELLS })
+  // Colours per cell are not measured: a warning, and the decimation by geometry alone (the
+  // triangles of a run without colour), as for a name the input does not have.
+  auto uncoloured = Copy(mesh);
+  uncoloured->GetPointData()->SetScalars(nullptr);
+  const RunResult byGeometry = Run(uncoloured, 0.9);
+  for (int association :
+       { vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS, vtkDataObject::FIELD_ASSOCIATION_CELLS,
+         vtkDataObject::FIELD_ASSOCIATION_POINTS })
   {
-    ExpectEmptyWithError(Run(cellColors, 0.9, ColorFrom(association, "CellRGB")),
-                         "not a point-data array");
+    const RunResult run = Run(cellColors, 0.9, ColorFrom(association, "CellRGB"));
+    CD_CHECK_MSG(run.Errors == 0 && run.Warnings == 1 &&
+                   run.HasWarning("The colour array 'CellRGB' is cell data, not point data"),
+                 "association " << association << ": one warning: " << run.WarningText());
+    CD_CHECK_MSG(OriginalTriangles(run.Output) == OriginalTriangles(byGeometry.Output),
+                 "association " << association << ": the triangles of a run without colour");
   }
+  const RunResult fromCells =
+    Run(cellColors, 0.9, ColorFrom(vtkDataObject::FIELD_ASSOCIATION_CELLS, "RGB"));
+  CD_CHECK_MSG(fromCells.Errors == 0 && fromCells.Warnings == 1 &&
+                 fromCells.HasWarning("'RGB' is selected from the cell data, not the point data"),
+               "a point array selected from the cell data: " << fromCells.WarningText());
 
   auto noScalars = Copy(mesh); // the colours stay, as an array that is not the scalars
   noScalars->GetPointData()->SetScalars(nullptr);

@@ -36,7 +36,8 @@ enum class CollapseSchedule
   Batched = 1
 };
 
-/// Called now and then with the fraction done; returning false aborts the run.
+/// Called now and then with the fraction of the run done (the set-up's phases its first
+/// fifth, the collapses the rest); returning false aborts the run.
 using ProgressFunction = std::function<bool(double)>;
 
 struct DecimatorOptions

@@ -11,8 +11,11 @@
 #ifndef colordecimation_PhaseTimes_h
 #define colordecimation_PhaseTimes_h
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <functional>
+#include <utility>
 #include <vector>
 
 namespace colordecimation
@@ -34,22 +37,32 @@ public:
     this->Last = Clock::now();
   }
 
-  /// The time since the last Lap (or Start) is phase `name`'s (added to it if it is there).
+  /// The time since the last Lap (or Start) is phase `name`'s (added to it if it is there);
+  /// then the observer, if there is one, is called.
   void Lap(const char* name)
   {
     const Clock::time_point now = Clock::now();
     const double seconds = std::chrono::duration<double>(now - this->Last).count();
     this->Last = now;
-    for (Phase& phase : this->Phases)
+    auto phase = std::find_if(this->Phases.begin(), this->Phases.end(),
+                              [name](const Phase& p) { return std::strcmp(p.Name, name) == 0; });
+    if (phase != this->Phases.end())
     {
-      if (std::strcmp(phase.Name, name) == 0)
-      {
-        phase.Seconds += seconds;
-        return;
-      }
+      phase->Seconds += seconds;
     }
-    this->Phases.push_back({ name, seconds });
+    else
+    {
+      this->Phases.push_back({ name, seconds });
+    }
+    if (this->Observer)
+    {
+      this->Observer();
+    }
   }
+
+  /// Called after each Lap from now on (an empty function: none); the set-up reports its
+  /// progress by it.
+  void SetObserver(std::function<void()> observer) { this->Observer = std::move(observer); }
 
   /// Add another run's phases after these; the next Lap measures from now (the time since
   /// this one's last Lap, spent in the other run's set-up before its Start, is not counted).
@@ -65,6 +78,7 @@ private:
   using Clock = std::chrono::steady_clock;
   std::vector<Phase> Phases;
   Clock::time_point Last = Clock::now();
+  std::function<void()> Observer;
 };
 
 } // namespace colordecimation
