@@ -116,21 +116,28 @@ const char* SelectedName(vtkAlgorithm* self, int index)
     : nullptr;
 }
 
-/// Why the `role` array selected as `name` (SetInputArrayToProcess) is not read: it is selected
-/// by another association than the points', or it is not numeric, or not point data, or not there.
+/// Why the `role` array selected as `name` (SetInputArrayToProcess) is not read: it is not
+/// point data (by `association`, or where the input holds it), not numeric, or not there.
 std::string Unusable(vtkPolyData* input, const char* role, const char* name, int association)
 {
-  const std::string array = std::string("The ") + role + " array '" + name + "' ";
-  if (vtkAbstractArray* found = input->GetPointData()->GetAbstractArray(name))
+  const std::string array =
+    std::string("The ") + role + " array " + (*name ? "'" + std::string(name) + "' " : "");
+  vtkAbstractArray* inPoints = input->GetPointData()->GetAbstractArray(name);
+  if (association == vtkDataObject::FIELD_ASSOCIATION_CELLS ||
+      association == vtkDataObject::FIELD_ASSOCIATION_NONE)
   {
-    if (association == vtkDataObject::FIELD_ASSOCIATION_CELLS ||
-        association == vtkDataObject::FIELD_ASSOCIATION_NONE)
+    const bool cells = association == vtkDataObject::FIELD_ASSOCIATION_CELLS;
+    vtkFieldData* place = cells ? input->GetCellData() : input->GetFieldData();
+    const std::string where = cells ? "cell" : "field";
+    if (place->GetAbstractArray(name) || !inPoints)
     {
-      return array + "is selected from the " +
-        (association == vtkDataObject::FIELD_ASSOCIATION_CELLS ? "cell" : "field") +
-        " data, not the point data";
+      return array + "is " + where + " data, not point data";
     }
-    return array + (found->IsNumeric() ? "cannot be read" : "is not numeric");
+    return array + "is selected from the " + where + " data, not the point data";
+  }
+  if (inPoints)
+  {
+    return array + (inPoints->IsNumeric() ? "cannot be read" : "is not numeric");
   }
   if (input->GetCellData()->GetAbstractArray(name) || input->GetFieldData()->GetAbstractArray(name))
   {
@@ -156,10 +163,11 @@ bool IsPointArray(vtkColorHalfEdgeDecimation* self, const char* role, const char
 }
 
 /// The colour array (of the given association), converted to RGB in [0,1]; false (with an
-/// error) for a bad one. Without one, the decimation goes by geometry alone: quietly for a mesh
-/// without point scalars, or with an empty name (ParaView's choice when the input has no
-/// point scalars) and no point scalars; with a warning when an array selected by name is not
-/// there, or an empty name leaves the input's point scalars `scalars` unused.
+/// error) for one of the wrong length or without components. Without one, the decimation goes
+/// by geometry alone: quietly for a mesh without point scalars, or with an empty name
+/// (ParaView's choice when the input has no point scalars) and no point scalars; with a
+/// warning when the array selected is not there, not numeric or not point data, or an empty
+/// name leaves the input's point scalars `scalars` unused.
 bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int association,
                 vtkPolyData* input, int threads, InputMesh& mesh)
 {
@@ -215,9 +223,10 @@ bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int assoc
   return true;
 }
 
-/// The points to lock, from the lock array if one is selected; false (with an error) for a
-/// bad one. A name the input does not have, an array that is not numeric, or a selection by
-/// attribute type rather than by name is a warning: nothing is locked.
+/// The points to lock, from the lock array if one is selected; false (with an error) for one
+/// of the wrong length. A name the input does not have, an array that is not numeric or not
+/// point data, or a selection by attribute type rather than by name is a warning: nothing is
+/// locked.
 bool ReadLocks(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int association,
                vtkPolyData* input, InputMesh& mesh)
 {
@@ -362,20 +371,19 @@ void WriteRecord(vtkColorHalfEdgeDecimation* self,
 }
 
 /// Non-manifold places are kept as they are: say so (reoriented triangles are legitimate), as
-/// when seams lock so many points that the triangles barely share any (a triangle soup).
+/// when the triangles barely share an edge (a triangle soup).
 void ReportBuild(vtkColorHalfEdgeDecimation* self,
-                 const colordecimation::DecimatorStatistics& stats, vtkIdType numPoints)
+                 const colordecimation::DecimatorStatistics& stats)
 {
   const colordecimation::MeshBuildReport& build = stats.Build;
-  if (stats.SeamLockedVertices > 0 && 4 * stats.SeamLockedVertices >= numPoints)
+  if (stats.InputTriangles > 1 && 4 * build.BoundaryEdges >= 9 * stats.InputTriangles)
   {
     vtkWarningWithObjectMacro(
-      self,
-      << stats.SeamLockedVertices << " of the " << numPoints
-      << " points are kept as they are: each shares its position with two or more other "
-         "points (an attribute seam of more than two sides). If the triangles do not share their "
-         "points (a triangle soup, as from an STL or OBJ file read without merging), "
-         "merge the coincident points first (vtkCleanPolyData, vtkStaticCleanPolyData).");
+      self, << build.BoundaryEdges << " of the " << 3 * stats.InputTriangles
+            << " triangle edges are open (no other triangle shares them): the triangles "
+               "barely share points, and a lone triangle cannot collapse. If the mesh is a "
+               "triangle soup (as from an STL or OBJ file read without merging), merge the "
+               "coincident points first (vtkCleanPolyData, vtkStaticCleanPolyData).");
   }
   if (stats.ReorientedTriangles > 0)
   {
@@ -500,7 +508,6 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  this->ResetStatistics();
   vtkDataObject* given = vtkDataObject::GetData(inputVector[0], 0);
   if (given && !input && output)
   {
@@ -509,8 +516,9 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
     vtkWarningMacro(<< "A block of the input is a " << given->GetClassName()
                     << ", not a vtkPolyData: its output is empty (extract its surface first: "
                        "vtkGeometryFilter).");
-    return 1;
+    return 1; // the statistics stay those of the last mesh
   }
+  this->ResetStatistics();
   if (!input || !output)
   {
     vtkErrorMacro(<< "No " << (input ? "output" : "input") << " vtkPolyData.");
@@ -577,7 +585,7 @@ void vtkColorHalfEdgeDecimation::Decimate(vtkInformationVector** inputVector,
                     this->UpdateProgress(0.05 + 0.85 * fraction);
                     return !this->GetAbortExecute();
                   });
-  ReportBuild(this, stats, input->GetNumberOfPoints());
+  ReportBuild(this, stats);
   this->KeepStatistics(stats);
 
   // 4. The output: the surviving triangles on the points they use, in input order, and the
@@ -728,7 +736,11 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ConsistentOrientation: " << (this->ConsistentOrientation ? "On" : "Off") << "\n";
   os << indent << "PreserveSeams: " << (this->PreserveSeams ? "On" : "Off") << "\n";
   const char* colors = SelectedName(this, 0);
-  os << indent << "ColorArrayName: " << (colors ? colors : "(the active point scalars)") << "\n";
+  os << indent << "ColorArrayName: "
+     << (!colors     ? "(the active point scalars)"
+           : *colors ? colors
+                     : "(none)")
+     << "\n";
   os << indent
      << "LockArrayName: " << (this->GetLockArrayName() ? this->GetLockArrayName() : "(none)")
      << "\n";

@@ -76,16 +76,17 @@
  *
  * Input: polygons and triangle strips are triangulated (quietly: debug output); vertices and
  * lines are dropped (with a warning). Without point scalars the mesh is decimated by its
- * geometry (a warning only when an array selected by name is missing). Triangles that do not
- * share their points (a triangle soup) cannot collapse: a warning says to merge the points
- * first. Empty input gives empty output. Points with NaN or infinite coordinates, cell point
- * ids out of range, or a colour array whose tuple count differs from the number of points are
- * errors: the output is then empty.
+ * geometry (a warning only when the array selected is missing, not numeric, or not point
+ * data). Triangles that barely share an edge (a triangle soup) cannot collapse: a warning
+ * says to merge the points first. Empty input gives empty output. Points with NaN or infinite
+ * coordinates, cell point ids out of range, or a colour array whose tuple count differs from
+ * the number of points are errors: the output is then empty.
  *
  * Progress: after reading the input (5 %), the set-up's phases report a step each (to 22 %),
- * then the collapses. AbortExecute is honoured between those steps and between the collapse
- * passes (Batched) or every 8,192 collapses (Greedy); the output is then the mesh as far as it
- * got (the input itself when the abort came during the set-up).
+ * then the collapses. AbortExecute is read at each of those reports: during the set-up it
+ * takes effect at the set-up's end (no collapse is made, the output is the input's
+ * triangles), later between the collapse passes (Batched) or every 8,192 collapses (Greedy),
+ * the output then being the mesh as far as it got.
  *
  * @sa
  * vtkColorHalfEdgeLevelOfDetail vtkQuadricDecimation vtkDecimatePro vtkQuadricClustering

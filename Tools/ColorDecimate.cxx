@@ -564,16 +564,20 @@ std::string CheckOutputFolders(const Options& options)
   for (const auto& [what, path] : WrittenFiles(options))
   {
     const fs::path folder = fs::path(path).parent_path();
-    std::error_code error;
-    if (path.empty() || folder.empty() || fs::is_directory(folder, error))
+    if (path.empty() || folder.empty())
     {
       continue;
     }
-    const bool exists = fs::exists(folder, error);
+    std::error_code error;
+    const fs::file_status status = fs::status(folder, error);
+    if (fs::is_directory(status) || status.type() == fs::file_type::none)
+    {
+      continue; // a folder, or one that cannot be looked at (the writer then says why)
+    }
     const std::string named = what == "OUTPUT" ? std::string() : "the " + what + " ";
     return "cannot write " + named + "'" + path + "': " +
-      (exists ? "'" + folder.string() + "' is not a folder"
-              : "no folder '" + folder.string() + "'");
+      (status.type() == fs::file_type::not_found ? "no folder '" + folder.string() + "'"
+                                                 : "'" + folder.string() + "' is not a folder");
   }
   return "";
 }

@@ -49,29 +49,37 @@ size_t StateBytes(const DecimatorOptions& options, const DecimatorInput& input, 
   return bytes;
 }
 
-/// The share of the progress the set-up's phases report, a step each (spatial order ...
-/// error planes: Engine::Start's laps); the collapses report the rest.
+/// The share of the progress the set-up reports, a step for each of its phases (Engine::Start's
+/// laps: six, or eight with the pieces) and the rest at its end; the collapses report the rest.
 constexpr double SetUpShare = 0.2;
-constexpr int SetUpSteps = 7;
+constexpr int SetUpSteps = 8;
 
-/// The engine's set-up, reporting its phases' progress; false when it was asked to abort.
+/// The engine's set-up, reporting its phases' progress; false when an abort was asked during
+/// it (the set-up still ends: the output is written from its mesh).
 template <typename Metric>
 bool StartReporting(Engine<Metric>& engine, const DecimatorInput& input, DecimatorStatistics& stats,
                     const ProgressFunction& progress)
 {
+  if (!progress)
+  {
+    engine.Start(input, stats);
+    return true;
+  }
   bool go = true;
   int steps = 0;
-  if (progress)
+  const auto report = [&](int step)
   {
-    stats.Phases.SetObserver(
-      [&]
-      {
-        steps = std::min(steps + 1, SetUpSteps);
-        go = go && progress(SetUpShare * steps / SetUpSteps);
-      });
-  }
+    steps = std::min(step, SetUpSteps);
+    go = go && progress(SetUpShare * steps / SetUpSteps);
+  };
+  struct Observed // the observer refers to this frame: it goes with it, also on an exception
+  {
+    PhaseTimes& Phases;
+    ~Observed() { this->Phases.SetObserver(nullptr); }
+  } observed{ stats.Phases };
+  stats.Phases.SetObserver([&] { report(steps + 1); });
   engine.Start(input, stats);
-  stats.Phases.SetObserver(nullptr);
+  report(SetUpSteps);
   return go;
 }
 

@@ -762,7 +762,7 @@ void CheckProgress(int schedule)
   for (size_t i = 0; i < log.Values.size(); ++i)
   {
     // The set-up's phases report the first fifth of the run's share (0.05 + 0.85 * 0.2).
-    setUp += (log.Values[i] > 0.05 && log.Values[i] <= 0.22 + 1e-12) ? 1 : 0;
+    setUp += (log.Values[i] > 0.05 && log.Values[i] <= 0.22 + 1e-9) ? 1 : 0;
     CD_CHECK(log.Values[i] >= 0.0 && log.Values[i] <= 1.0);
     if (i > 0)
     {
@@ -793,8 +793,9 @@ void CheckAbort(int schedule)
   const RunResult complete = RunWithProgress(mesh, 0.9, full, schedule);
   CD_CHECK(std::abs(complete.ActualReduction - 0.9) <= 0.01);
 
-  // Abort in the middle (at the first report past 30 %) and right at the start.
-  for (double abortAt : { 0.3, 0.0 })
+  // Abort in the middle (at the first report past 30 %), during the set-up (its reports go
+  // from 5 % to 22 %) and right at the start.
+  for (double abortAt : { 0.3, 0.1, 0.0 })
   {
     ProgressLog log;
     log.AbortAt = abortAt;
@@ -809,9 +810,8 @@ void CheckAbort(int schedule)
     CD_CHECK(r.Output->GetNumberOfPolys() > complete.Output->GetNumberOfPolys());
     CD_CHECK(r.Output->GetNumberOfPolys() > 0);
     // An abort asked before the set-up's end stops the run before the first collapse.
-    CD_CHECK_MSG(abortAt > 0.0 || r.Collapses == 0,
-                 r.Collapses << " collapses after an abort "
-                                "during the set-up");
+    CD_CHECK_MSG(abortAt > 0.2 || r.Collapses == 0,
+                 r.Collapses << " collapses after an abort during the set-up");
     // The filter's progress stays where the run stopped; only the executive of VTK 9.1-9.2
     // reports its 1.0 at the end of every RequestData, aborted or not.
     const auto ones = std::count(log.Values.begin(), log.Values.end(), 1.0);

@@ -18,6 +18,7 @@
 #include "vtkColorHalfEdgeLevelOfDetail.h"
 #include "vtkDataArray.h"
 #include "vtkDemandDrivenPipeline.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -449,9 +450,25 @@ CD_TEST_CASE(TriangleSoup)
   colordecimation::meshes::ApplyPattern(mesh, Pattern::SharpRegions);
   RunResult run = Run(mesh, 0.9);
   CD_CHECK_MSG(run.Errors == 0 && run.Warnings == 1 && run.HasWarning("a triangle soup") &&
-                 run.HasWarning("of the 600 points are kept") &&
+                 run.HasWarning("600 of the 600 triangle edges are open") &&
                  run.HasWarning("merge the coincident points first"),
                "one warning: " << run.WarningText());
+  // The same without seams, and with the metric whose placement locks every seam point.
+  for (const bool placement : { false, true })
+  {
+    const RunResult other = Run(mesh, 0.9,
+                                [placement](vtkColorHalfEdgeDecimation* f)
+                                {
+                                  f->SetPreserveSeams(placement);
+                                  f->SetOptimalPlacement(placement);
+                                  if (placement)
+                                  {
+                                    f->SetErrorMetricToColorQuadric();
+                                  }
+                                });
+    CD_CHECK_MSG(other.Warnings == 1 && other.HasWarning("600 of the 600 triangle edges"),
+                 "placement " << placement << ": " << other.WarningText());
+  }
   CD_CHECK_MSG(run.Collapses == 0, "no collapse");
   CD_CHECK_MSG(OriginalTriangles(run.Output) == OriginalTriangles(Run(mesh, 0.0).Output),
                "the output is the input");
@@ -1076,6 +1093,14 @@ CD_TEST_CASE(BadColorArrays)
     CD_CHECK_MSG(OriginalTriangles(run.Output) == OriginalTriangles(byGeometry.Output),
                  "association " << association << ": the triangles of a run without colour");
   }
+  vtkNew<vtkUnsignedCharArray> fieldColors;
+  fieldColors->DeepCopy(rgb);
+  cellColors->GetFieldData()->AddArray(fieldColors); // "CellRGB" as field data too
+  const RunResult fromField =
+    Run(cellColors, 0.9, ColorFrom(vtkDataObject::FIELD_ASSOCIATION_NONE, "CellRGB"));
+  CD_CHECK_MSG(fromField.Errors == 0 && fromField.Warnings == 1 &&
+                 fromField.HasWarning("'CellRGB' is field data, not point data"),
+               "a field-data array: " << fromField.WarningText());
   const RunResult fromCells =
     Run(cellColors, 0.9, ColorFrom(vtkDataObject::FIELD_ASSOCIATION_CELLS, "RGB"));
   CD_CHECK_MSG(fromCells.Errors == 0 && fromCells.Warnings == 1 &&
