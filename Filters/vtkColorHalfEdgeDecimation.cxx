@@ -516,6 +516,7 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
     vtkWarningMacro(<< "A block of the input is a " << given->GetClassName()
                     << ", not a vtkPolyData: its output is empty (extract its surface first: "
                        "vtkGeometryFilter).");
+    output->Initialize();
     return 1; // the statistics stay those of the last mesh
   }
   this->ResetStatistics();
