@@ -139,12 +139,11 @@ std::string Unusable(vtkPolyData* input, const char* role, const char* name, int
   {
     return array + (inPoints->IsNumeric() ? "cannot be read" : "is not numeric");
   }
-  if (input->GetCellData()->GetAbstractArray(name) || input->GetFieldData()->GetAbstractArray(name))
-  {
-    return array + "is " + (input->GetCellData()->GetAbstractArray(name) ? "cell" : "field") +
-      " data, not point data";
-  }
-  return std::string("No ") + role + " array named '" + name + "'";
+  const char* elsewhere = input->GetCellData()->GetAbstractArray(name) ? "cell"
+    : input->GetFieldData()->GetAbstractArray(name)                    ? "field"
+                                                                       : nullptr;
+  return elsewhere ? array + "is " + elsewhere + " data, not point data"
+                   : std::string("No ") + role + " array named '" + name + "'";
 }
 
 /// Whether `array` (the `role` array named `name`, point data) has a tuple per point; an error
@@ -174,10 +173,10 @@ bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int assoc
   const vtkIdType numPoints = input->GetNumberOfPoints();
   vtkDataArray* scalars = input->GetPointData()->GetScalars();
   const char* name = array && array->GetName() ? array->GetName() : "";
-  if (!array)
+  if (!array || association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
   {
-    const char* asked = SelectedName(self, 0);
-    if (asked && *asked)
+    const char* asked = array ? name : SelectedName(self, 0);
+    if (array || (asked && *asked))
     {
       vtkWarningWithObjectMacro(self, << Unusable(input, "colour", asked, association)
                                       << " (SetInputArrayToProcess): decimating by geometry "
@@ -194,12 +193,6 @@ bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int assoc
     {
       vtkDebugWithObjectMacro(self, << "No point scalars: decimating by geometry alone.");
     }
-    return true;
-  }
-  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
-  {
-    vtkWarningWithObjectMacro(self, << Unusable(input, "colour", name, association)
-                                    << " (SetInputArrayToProcess): decimating by geometry alone.");
     return true;
   }
   if (!IsPointArray(self, "colour", name, array, numPoints))
@@ -506,9 +499,9 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
                                             vtkInformationVector** inputVector,
                                             vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkDataObject* given = vtkDataObject::GetData(inputVector[0], 0);
+  vtkPolyData* input = vtkPolyData::SafeDownCast(given);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   if (given && !input && output)
   {
     // A block of another type in a composite input (the pipeline passes it on): left empty,
