@@ -116,6 +116,28 @@ const char* SelectedName(vtkAlgorithm* self, int index)
     : nullptr;
 }
 
+/// The association of the array selected with SetInputArrayToProcess(index, ...), -1 if none is.
+int SelectedAssociation(vtkAlgorithm* self, int index)
+{
+  vtkInformationVector* arrays =
+    self->GetInformation()->Get(vtkAlgorithm::INPUT_ARRAYS_TO_PROCESS());
+  vtkInformation* selection = arrays && arrays->GetNumberOfInformationObjects() > index
+    ? arrays->GetInformationObject(index)
+    : nullptr;
+  return selection && selection->Has(vtkDataObject::FIELD_ASSOCIATION())
+    ? selection->Get(vtkDataObject::FIELD_ASSOCIATION())
+    : -1;
+}
+
+/// Whether a vtkPolyData has the place that `association` selects from (a graph's vertices or
+/// edges and a table's rows it has not: VTK's own look-up would report an error there).
+bool PolyDataHas(int association)
+{
+  return association != vtkDataObject::FIELD_ASSOCIATION_VERTICES &&
+    association != vtkDataObject::FIELD_ASSOCIATION_EDGES &&
+    association != vtkDataObject::FIELD_ASSOCIATION_ROWS;
+}
+
 /// Why the `role` array selected as `name` (SetInputArrayToProcess) is not read: it is not
 /// point data (by `association`, or where the input holds it), not numeric, or not there.
 std::string Unusable(vtkPolyData* input, const char* role, const char* name, int association)
@@ -123,6 +145,14 @@ std::string Unusable(vtkPolyData* input, const char* role, const char* name, int
   const std::string array =
     std::string("The ") + role + " array " + (*name ? "'" + std::string(name) + "' " : "");
   vtkAbstractArray* inPoints = input->GetPointData()->GetAbstractArray(name);
+  if (!PolyDataHas(association))
+  {
+    const char* where = association == vtkDataObject::FIELD_ASSOCIATION_VERTICES
+      ? "a graph's vertex"
+      : association == vtkDataObject::FIELD_ASSOCIATION_EDGES ? "a graph's edge"
+                                                              : "a table's row";
+    return array + "is selected from " + where + " data, which a vtkPolyData does not have";
+  }
   if (association == vtkDataObject::FIELD_ASSOCIATION_CELLS ||
       association == vtkDataObject::FIELD_ASSOCIATION_NONE)
   {
@@ -673,8 +703,10 @@ const char* vtkColorHalfEdgeDecimation::GetLockArrayName()
 vtkDataArray* vtkColorHalfEdgeDecimation::GetLockArray(vtkInformationVector** inputVector,
                                                        int& association)
 {
-  return this->GetLockArrayName() ? this->GetInputArrayToProcess(1, inputVector, association)
-                                  : nullptr;
+  association = SelectedAssociation(this, 1);
+  return this->GetLockArrayName() && PolyDataHas(association)
+    ? this->GetInputArrayToProcess(1, inputVector, association)
+    : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -683,9 +715,16 @@ bool vtkColorHalfEdgeDecimation::ReadPointArrays(vtkInformationVector** inputVec
 {
   int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
   int lockAssociation = vtkDataObject::FIELD_ASSOCIATION_POINTS;
-  vtkDataArray* colors = this->ErrorMetric != Geometry
-    ? this->GetInputArrayToProcess(0, inputVector, association)
-    : nullptr;
+  const int selected = SelectedAssociation(this, 0);
+  vtkDataArray* colors = nullptr;
+  if (this->ErrorMetric != Geometry && PolyDataHas(selected))
+  {
+    colors = this->GetInputArrayToProcess(0, inputVector, association);
+  }
+  else if (this->ErrorMetric != Geometry)
+  {
+    association = selected;
+  }
   vtkDataArray* locks = this->GetLockArray(inputVector, lockAssociation);
   return (this->ErrorMetric == Geometry ||
           ReadColors(this, colors, association, input, threads, mesh)) &&

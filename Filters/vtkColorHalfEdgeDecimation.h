@@ -47,7 +47,8 @@
  * range), or a grey value (one component, or the first of two: grey and alpha). Alpha is
  * carried through but not measured. Without a colour array the filter decimates by geometry
  * alone (a warning only when an array selected by name is not there, not numeric, or cell or
- * field data rather than point data).
+ * field data rather than point data, or is selected from a place a vtkPolyData does not have:
+ * a graph's vertices or edges, a table's rows).
  *
  * Collapses keep the surface a 2-manifold where it was one (link condition), never flip a
  * triangle normal by more than MaximumNormalAngle, never create a degenerate triangle, and

@@ -402,6 +402,16 @@ CD_TEST_CASE(LockArrayBadInput)
   CD_CHECK(cells.Errors == 0 && cells.Warnings == 1 &&
            cells.HasWarning("The lock array 'celllock' is cell data, not point data"));
   CD_CHECK(GetOriginalTriangles(cells.Output) == GetOriginalTriangles(plain.Output));
+  // Selected from a place a vtkPolyData does not have: a warning saying so (no error from VTK's
+  // look-up), nothing locked.
+  const RunResult rows =
+    Decimate(grid, 0.9,
+             [](vtkColorHalfEdgeDecimation* f) {
+               f->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_ROWS, "rowlock");
+             });
+  CD_CHECK(rows.Errors == 0 && rows.Warnings == 1 &&
+           rows.HasWarning("The lock array 'rowlock' is selected from a table's row data"));
+  CD_CHECK(GetOriginalTriangles(rows.Output) == GetOriginalTriangles(plain.Output));
   auto withShortLock = Copy(grid);
   vtkNew<vtkUnsignedCharArray> shortLock;
   shortLock->SetName("short");
