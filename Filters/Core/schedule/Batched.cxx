@@ -353,8 +353,8 @@ void BatchedSchedule<Metric>::CollapseBlock(Candidate* begin, Candidate* end, in
       // v0's former neighbours may now have a neighbour in another finer block (or no longer
       // have one). All of them and their fans are in this block: no other thread reads or
       // writes them.
-      this->Blocks.FlagInterior(this->E.GetMesh(), ws.FormerNeighbors.data(),
-                                ws.FormerNeighbors.size(), level.OtherFlags);
+      this->Blocks.FlagAfterCollapse(this->E.GetMesh(), v0, v1, ws.FormerNeighbors.data(),
+                                     ws.FormerNeighbors.size(), level.OtherFlags);
     }
   }
 }
@@ -394,8 +394,8 @@ void BatchedSchedule<Metric>::CollapseDeferred(int32_t pass, DecimatorStatistics
       // v0's former neighbours (v1 among them) may now have one in another block, or no longer
       // have one (a collapse inside a block never changes that block's flags: all it touches
       // is in the block).
-      this->Blocks.FlagInterior(mesh, ws.FormerNeighbors.data(), ws.FormerNeighbors.size(),
-                                this->Blocks.AllFlags());
+      this->Blocks.FlagAfterCollapse(mesh, v0, v1, ws.FormerNeighbors.data(),
+                                     ws.FormerNeighbors.size(), this->Blocks.AllFlags());
     }
   }
   this->Gather(lane, stats); // the mesh counted these faces itself: lane.RemovedFaces is 0
@@ -544,8 +544,9 @@ void BatchedSchedule<Metric>::TrySeamCollapse(int32_t v0, int32_t v1, int32_t pa
                               lane.Block, this->Keys[v0], pair.SquaredError[side] });
     }
     this->StampWithTwins(pair.To[side], pass, ws, lane, true);
-    this->Blocks.FlagInterior(this->E.GetMesh(), ws.FormerNeighbors.data(),
-                              ws.FormerNeighbors.size(), this->Blocks.AllFlags());
+    this->Blocks.FlagAfterCollapse(this->E.GetMesh(), pair.From[side], pair.To[side],
+                                   ws.FormerNeighbors.data(), ws.FormerNeighbors.size(),
+                                   this->Blocks.AllFlags());
   }
 }
 

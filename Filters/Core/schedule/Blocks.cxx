@@ -17,15 +17,28 @@ BlockPartition::BlockPartition(int shift)
   this->Levels[2] = { shift + 3, int32_t(1) << (shift + 2), 4, 1 | 2 };
 }
 
-void BlockPartition::FlagInterior(const HalfEdgeMesh& mesh, const int32_t* vertices, size_t count,
-                                  uint8_t flags)
+void BlockPartition::FlagFan(const HalfEdgeMesh& mesh, int32_t v, uint8_t flags)
+{
+  uint8_t outside = 0; // the flags of the levels where v has a neighbour in another block
+  mesh.ForEachNeighbor(v, [this, &outside, v](int32_t u) { outside |= this->Crossings(u, v); });
+  this->Interior[v] = static_cast<uint8_t>((this->Interior[v] & ~flags) | (flags & ~outside));
+}
+
+void BlockPartition::FlagAfterCollapse(const HalfEdgeMesh& mesh, int32_t v0, int32_t v1,
+                                       const int32_t* formerNeighbors, size_t count, uint8_t flags)
 {
   for (size_t i = 0; i < count; ++i)
   {
-    const int32_t v = vertices[i];
-    uint8_t outside = 0; // the flags of the levels where v has a neighbour in another block
-    mesh.ForEachNeighbor(v, [this, &outside, v](int32_t u) { outside |= this->Crossings(u, v); });
-    this->Interior[v] = static_cast<uint8_t>((this->Interior[v] & ~flags) | (flags & ~outside));
+    const int32_t u = formerNeighbors[i];
+    const uint8_t interior = this->Interior[u];
+    // A level where u had a neighbour across, and v0 was one: v0 may have been the only one.
+    if (u == v1 || (this->Crossings(u, v0) & flags & ~interior) != 0)
+    {
+      this->FlagFan(mesh, u, flags);
+      continue;
+    }
+    // Elsewhere what u had stands, less the levels where v1 lies across.
+    this->Interior[u] = static_cast<uint8_t>(interior & ~(this->Crossings(u, v1) & flags));
   }
 }
 

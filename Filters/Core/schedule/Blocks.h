@@ -58,10 +58,14 @@ public:
 
   /// Interior flags for every vertex, on `threads` threads.
   void FlagEveryInterior(const HalfEdgeMesh& mesh, int threads);
-  /// The given flags anew for the listed vertices (after collapses that crossed blocks of
-  /// those levels: v0's former neighbours may now have a neighbour in another block, or no
-  /// longer have one).
-  void FlagInterior(const HalfEdgeMesh& mesh, const int32_t* vertices, size_t count, uint8_t flags);
+  /**
+   * The given flags anew after the collapse v0 -> v1, for v0's former neighbours (v1 among
+   * them): they may now have a neighbour in another block of those levels, or no longer have
+   * one. v1's fan is walked; another former neighbour u lost v0 and gained v1, so its fan is
+   * walked only where v0 may have been its one neighbour across a block's border.
+   */
+  void FlagAfterCollapse(const HalfEdgeMesh& mesh, int32_t v0, int32_t v1,
+                         const int32_t* formerNeighbors, size_t count, uint8_t flags);
   /// How many live, unlocked vertices' flags differ from those FlagEveryInterior would compute
   /// now (for tests: should be 0).
   int64_t CountStaleFlags(const HalfEdgeMesh& mesh, int threads);
@@ -91,10 +95,13 @@ private:
     return crossings;
   }
 
+  /// The given flags of v anew from its fan.
+  void FlagFan(const HalfEdgeMesh& mesh, int32_t v, uint8_t flags);
+
   BlockLevel Levels[3];
   /// Vertex -> for each level (its Flag), all its neighbours are in its block. A collapse
   /// inside a block never changes that level's flag; one across blocks may, either way, for
-  /// v0's former neighbours (FlagInterior).
+  /// v0's former neighbours (FlagAfterCollapse).
   LargeVector<uint8_t> Interior;
   /// BlockFaces[b]: the first face of small block b, i.e. the first whose smallest vertex is in
   /// it or after it; one entry per block and one more. Empty: no block is swept.
