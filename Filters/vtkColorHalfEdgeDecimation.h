@@ -460,7 +460,8 @@ public:
    * record is a level of detail of the input, nested in the finer ones: set TargetReduction to
    * 1 to record down to the topological limit, then extract any level with
    * vtkColorHalfEdgeLevelOfDetail. With the Greedy schedule a level is exactly what a direct
-   * run to that target gives. Off (default): the second output is an empty table.
+   * run to that target gives (without PruneComponents: below). Off (default): the second
+   * output is an empty table.
    *
    * Not with the ColorQuadric metric's OptimalPlacement (its collapses move the survivor): the
    * record is then empty, with a warning. The pieces PieceWeight removes are (a row for each

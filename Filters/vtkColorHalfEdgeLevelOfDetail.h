@@ -23,7 +23,8 @@
  * those points and the cell data of those triangles copied bit-exactly, and the original
  * point ids (GenerateOriginalPointIds, composed with an upstream array as the decimation
  * does). With the Greedy schedule a level is exactly the output of a direct run to that
- * target (same triangles, same order); with Batched it is the same prefix of the Batched run's
+ * target (same triangles, same order; without the decimation's PruneComponents, whose
+ * removals after the run are not in the record); with Batched it is the same prefix of the Batched run's
  * order. Levels are nested: the points of a coarser level are a subset of those of each finer
  * one, and RemovedPointId -> SurvivingPointId is each removed point's parent (-1 for the
  * points of a piece removed whole, see vtkColorHalfEdgeDecimation::SetPieceWeight).

@@ -11,6 +11,8 @@
   Decimation (Paper)" has the values SetPaperDefaults() sets, in every property.
 - On a coloured sphere made here (Sphere + Calculator writing an unsigned char RGB array) the
   filter reaches its target and every output point keeps its input colour and position.
+- The GUI's Apply shows the mesh in the render view and the collapse record in no view (for
+  both decimation proxies), opening no other view.
 - A screenshot of the result (colours shown as they are, lighting on) matches the baseline.
 """
 import argparse
@@ -231,8 +233,26 @@ check(locked.GetProperty("NumberOfThreadsUsed").GetElement(0) >= 1,
 Delete(locked)
 Delete(with_lock)
 
-# --- Screenshot against the baseline -----------------------------------------------------
+# --- What the GUI's Apply shows -----------------------------------------------------------
+# Apply (pqApplyBehavior) shows each output port in its preferred view: the mesh in the render
+# view, the collapse record (a table, empty unless asked for) in none, so that no spreadsheet
+# view opens beside it. Both decimation proxies.
 view = CreateView("RenderView")
+controller = servermanager.vtkSMParaViewPipelineControllerWithRendering()
+for name in ("ColorHalfEdgeDecimation", "ColorHalfEdgeDecimationPaper"):
+    applied = getattr(servermanager.filters, name)(Input=colors)
+    applied.UpdatePipeline()
+    views_before = len(GetViews())
+    shown = [controller.ShowInPreferredView(applied.SMProxy, port, view.SMProxy)
+             for port in range(applied.SMProxy.GetNumberOfOutputPorts())]
+    names = [v.GetXMLName() if v else None for v in shown]
+    print("%s: Apply shows its ports in %r" % (name, names))
+    check(names == ["RenderView", None], "%s: Apply shows its ports in %r" % (name, names))
+    check(len(GetViews()) == views_before, "%s: Apply opened a view" % name)
+    Hide(applied, view)
+    Delete(applied)
+
+# --- Screenshot against the baseline -----------------------------------------------------
 view.ViewSize = [400, 400]
 view.OrientationAxesVisibility = 0
 if hasattr(view, "UseColorPaletteForBackground"):
