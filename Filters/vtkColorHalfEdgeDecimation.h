@@ -71,9 +71,10 @@
  * in ParaView run with MPI), the filter asks upstream for one level of ghost cells. Ghost
  * cells are left out and every point they use is kept in place, as are ghost (duplicate)
  * points, so the decimated pieces still meet without cracks. When such a piece comes
- * without any ghost cell or ghost point, the points it shares with other pieces are not
- * known; they lie on its open boundary, so the whole open boundary of the piece is kept in
- * place instead (genuine mesh boundaries of that piece are then kept as they are).
+ * without any ghost cell, the points it shares with other pieces are not known (ghost points
+ * alone do not tell them); they lie on its open boundary, so the whole open boundary of the
+ * piece is kept in place instead (genuine mesh boundaries of that piece are then kept as they
+ * are).
  *
  * Input: polygons and triangle strips are triangulated (quietly: debug output); vertices and
  * lines are dropped (with a warning). Without point scalars the mesh is decimated by its

@@ -3,6 +3,7 @@
 #include "ColorDecimationTestUtilities.h"
 
 #include "Decimator.h"
+#include "engine/Engine.h"
 #include "lod/CollapseRecord.h"
 #include "mesh/Components.h"
 #include "mesh/HalfEdgeMesh.h"
@@ -2169,6 +2170,56 @@ CD_TEST_CASE(NewNeighborChoices)
       CD_CHECK(CountMeshDifferences(one, three) == 0);
     }
   }
+}
+
+/**
+ * Equal costs go to the lowest vertex id, also in the choice over the legal collapses alone
+ * (the re-costing of a refused vertex): on a flat grid without colour, where every collapse of
+ * an interior vertex costs the same (1 + Q with Q = 0, the paper's metric by geometry alone),
+ * each interior vertex's legal choice is its legal neighbour of lowest id, not the first legal
+ * one its walk meets (which depends on where the walk starts).
+ */
+CD_TEST_CASE(LegalChoiceTies)
+{
+  PlainMesh grid = ToPlain(meshes::FlatGrid(14, 14, meshes::Pattern::Constant));
+  // Triangles in a shuffled order, so that the walks start at various places.
+  std::vector<std::array<int32_t, 3>> triangles(size_t(grid.NumberOfTriangles()));
+  std::memcpy(triangles.data(), grid.Triangles.data(), grid.Triangles.size() * sizeof(int32_t));
+  std::shuffle(triangles.begin(), triangles.end(), std::mt19937(3));
+  std::memcpy(grid.Triangles.data(), triangles.data(), grid.Triangles.size() * sizeof(int32_t));
+  Engine<HalfEdgeColorMetric> engine{ DecimatorOptions() };
+  DecimatorStatistics stats;
+  engine.Start(InputOf(grid, nullptr), stats);
+  Engine<HalfEdgeColorMetric>::Workspace& ws = engine.GetWorkspace(0);
+  const HalfEdgeMesh& mesh = engine.GetMesh();
+  const float* positions = engine.GetHot()[0].P;
+  int checked = 0, walkOrderDiffers = 0;
+  for (int32_t v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  {
+    if (!mesh.IsCollapsible(v) || mesh.IsBoundaryVertex(v))
+    {
+      continue;
+    }
+    int32_t lowest = -1, firstInWalk = -1;
+    mesh.ForEachNeighbor(v,
+                         [&](int32_t u)
+                         {
+                           CD_CHECK(engine.CollapseCost(v, u) == 1.0);
+                           if (ws.Rules.IsLegal(mesh, positions, v, u, HotStride))
+                           {
+                             firstInWalk = firstInWalk < 0 ? u : firstInWalk;
+                             lowest = lowest < 0 ? u : std::min(lowest, u);
+                           }
+                         });
+    const Choice legal = engine.Evaluate(v, true, false, ws);
+    CD_CHECK_MSG(legal.Target == lowest,
+                 "vertex " << v << ": legal choice " << legal.Target << ", not " << lowest);
+    checked += lowest >= 0;
+    walkOrderDiffers += lowest >= 0 && firstInWalk != lowest;
+  }
+  std::cout << "  " << checked << " interior vertices with a legal collapse, " << walkOrderDiffers
+            << " whose walk meets another legal neighbour first" << std::endl;
+  CD_CHECK(checked > 100 && walkOrderDiffers > 0);
 }
 
 /**

@@ -159,8 +159,13 @@ Choice Engine<Metric>::CheapestLegal(int32_t v0, Workspace& ws) const
       ws.Order.push_back(j);
     }
   }
+  // Cost order, equal costs by vertex id (as Cheapest takes them).
   std::sort(ws.Order.begin(), ws.Order.end(),
-            [&ws](int a, int b) { return ws.Costs[a] < ws.Costs[b]; });
+            [&ws, &ring](int a, int b)
+            {
+              return ws.Costs[a] < ws.Costs[b] ||
+                (ws.Costs[a] == ws.Costs[b] && ring.Vertex[a] < ring.Vertex[b]);
+            });
   Choice choice;
   for (int j : ws.Order)
   {

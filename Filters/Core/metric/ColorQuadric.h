@@ -29,6 +29,8 @@
 #include "util/Buffer.h"
 #include "vtkColorDecimationModule.h" // for export macro
 
+#include <algorithm>
+
 namespace colordecimation
 {
 class HalfEdgeMesh;
@@ -109,7 +111,7 @@ struct BasicColorQuadric
   {
     double ad[Dimension];
     other.MultiplyA(d, ad);
-    const double c = other.Evaluate(d);
+    const double c = std::max(other.Evaluate(d), 0.0); // as Quadric::AddShifted
     for (int k = 0; k < MatrixSize; ++k)
     {
       this->A[k] = static_cast<T>(this->A[k] + other.A[k]);

@@ -11,6 +11,7 @@
 #ifndef colordecimation_Quadric_h
 #define colordecimation_Quadric_h
 
+#include <algorithm>
 #include <cmath>
 
 namespace colordecimation
@@ -85,7 +86,9 @@ struct Quadric
     const double ad0 = other.A00 * d[0] + other.A01 * d[1] + other.A02 * d[2];
     const double ad1 = other.A01 * d[0] + other.A11 * d[1] + other.A12 * d[2];
     const double ad2 = other.A02 * d[0] + other.A12 * d[1] + other.A22 * d[2];
-    const double c = other.Evaluate(d);
+    // other(d) >= 0 in exact arithmetic, a hair below 0 if rounded: clamped, C never falls (the
+    // premise of the engine's re-costing, see AttributeQuadric::AddShifted).
+    const double c = std::max(other.Evaluate(d), 0.0);
     this->A00 += other.A00;
     this->A01 += other.A01;
     this->A02 += other.A02;
