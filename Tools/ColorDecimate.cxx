@@ -990,7 +990,7 @@ Json Statistics(vtkColorHalfEdgeDecimation* filter, const Options& options, cons
   stats["metric"] = fromRecord ? Json() : Json(MetricName(filter->GetErrorMetric()));
   stats["schedule"] = fromRecord ? Json() : Json(ScheduleName(filter->GetCollapseSchedule()));
   stats["threads"] = filter->GetNumberOfThreadsUsed();
-  stats["scene_weight_scale"] = filter->GetSceneWeightScale();
+  stats["scene_weight_scale"] = fromRecord ? Json() : Json(filter->GetSceneWeightScale());
   stats["target_reduction"] = filter->GetTargetReduction();
   stats["paper"] = fromRecord ? Json() : Json(options.Paper);
   stats["settings"] = fromRecord ? Json() : Settings(filter);

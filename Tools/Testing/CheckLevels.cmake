@@ -7,7 +7,7 @@
 # reporting points, triangles, collapses and its times (with MESH_CHECK, the points and
 # triangles of its file). With --lod the top-level "output" is
 # null (no OUTPUT file is written); with --from-record (FROM_RECORD) so are the decimation's
-# figures, since none ran.
+# figures, since none ran, and the method's keys, which the record does not hold.
 if (NOT EXISTS "${STATS}")
   message(FATAL_ERROR "${STATS} was not written")
 endif ()
@@ -53,7 +53,8 @@ endforeach ()
 
 set(nulls)
 if (FROM_RECORD)
-  list(APPEND nulls reduction collapses output_triangles filter_seconds phases)
+  list(APPEND nulls reduction collapses output_triangles filter_seconds phases metric schedule
+    scene_weight_scale paper settings)
 else ()
   list(APPEND nulls output)
 endif ()
