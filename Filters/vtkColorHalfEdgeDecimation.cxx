@@ -102,15 +102,21 @@ bool CheckInput(vtkColorHalfEdgeDecimation* self, vtkPolyData* input)
   return true;
 }
 
+/// What SetInputArrayToProcess(index, ...) selected; null if nothing is.
+vtkInformation* Selection(vtkAlgorithm* self, int index)
+{
+  vtkInformationVector* arrays =
+    self->GetInformation()->Get(vtkAlgorithm::INPUT_ARRAYS_TO_PROCESS());
+  return arrays && arrays->GetNumberOfInformationObjects() > index
+    ? arrays->GetInformationObject(index)
+    : nullptr;
+}
+
 /// The name of the array selected with SetInputArrayToProcess(index, ...); null if none is, or
 /// if it is selected by attribute type.
 const char* SelectedName(vtkAlgorithm* self, int index)
 {
-  vtkInformationVector* arrays =
-    self->GetInformation()->Get(vtkAlgorithm::INPUT_ARRAYS_TO_PROCESS());
-  vtkInformation* selection = arrays && arrays->GetNumberOfInformationObjects() > index
-    ? arrays->GetInformationObject(index)
-    : nullptr;
+  vtkInformation* selection = Selection(self, index);
   return selection && selection->Has(vtkDataObject::FIELD_NAME())
     ? selection->Get(vtkDataObject::FIELD_NAME())
     : nullptr;
@@ -119,11 +125,7 @@ const char* SelectedName(vtkAlgorithm* self, int index)
 /// The association of the array selected with SetInputArrayToProcess(index, ...), -1 if none is.
 int SelectedAssociation(vtkAlgorithm* self, int index)
 {
-  vtkInformationVector* arrays =
-    self->GetInformation()->Get(vtkAlgorithm::INPUT_ARRAYS_TO_PROCESS());
-  vtkInformation* selection = arrays && arrays->GetNumberOfInformationObjects() > index
-    ? arrays->GetInformationObject(index)
-    : nullptr;
+  vtkInformation* selection = Selection(self, index);
   return selection && selection->Has(vtkDataObject::FIELD_ASSOCIATION())
     ? selection->Get(vtkDataObject::FIELD_ASSOCIATION())
     : -1;
@@ -256,11 +258,7 @@ bool ReadLocks(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int associ
   const char* name = self->GetLockArrayName();
   if (!name)
   {
-    vtkInformationVector* arrays =
-      self->GetInformation()->Get(vtkAlgorithm::INPUT_ARRAYS_TO_PROCESS());
-    vtkInformation* selection = arrays && arrays->GetNumberOfInformationObjects() > 1
-      ? arrays->GetInformationObject(1)
-      : nullptr;
+    vtkInformation* selection = Selection(self, 1);
     if (selection && selection->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE()))
     {
       vtkWarningWithObjectMacro(self, << "The lock array is selected by attribute type; select "
