@@ -131,6 +131,24 @@ int SelectedAssociation(vtkAlgorithm* self, int index)
     : -1;
 }
 
+/// Where an array is selected from, for PrintSelf: " (point data)" and so on.
+const char* AssociationName(int association)
+{
+  switch (association)
+  {
+    case vtkDataObject::FIELD_ASSOCIATION_POINTS:
+      return " (point data)";
+    case vtkDataObject::FIELD_ASSOCIATION_CELLS:
+      return " (cell data)";
+    case vtkDataObject::FIELD_ASSOCIATION_NONE:
+      return " (field data)";
+    case vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS:
+      return " (point data, else cell data)";
+    default:
+      return " (not a vtkPolyData's data)";
+  }
+}
+
 /// Whether a vtkPolyData has the place that `association` selects from (a graph's vertices or
 /// edges and a table's rows it has not: VTK's own look-up would report an error there).
 bool PolyDataHas(int association)
@@ -771,10 +789,10 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
      << (!colors     ? "(the active point scalars)"
            : *colors ? colors
                      : "(none)")
-     << "\n";
+     << (colors && *colors ? AssociationName(SelectedAssociation(this, 0)) : "") << "\n";
   os << indent
      << "LockArrayName: " << (this->GetLockArrayName() ? this->GetLockArrayName() : "(none)")
-     << "\n";
+     << (this->GetLockArrayName() ? AssociationName(SelectedAssociation(this, 1)) : "") << "\n";
   os << indent << "PreserveBoundary: " << (this->PreserveBoundary ? "On" : "Off") << "\n";
   os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";
   os << indent << "GeometryWeight: " << this->GeometryWeight << "\n";

@@ -901,6 +901,10 @@ CD_TEST_CASE(PrintSelf)
   filter->Print(unselected);
   CD_CHECK(unselected.str().find("ColorArrayName: (the active point scalars)") !=
            std::string::npos);
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "MyColours");
+  std::ostringstream cells;
+  filter->Print(cells);
+  CD_CHECK(cells.str().find("ColorArrayName: MyColours (cell data)") != std::string::npos);
   filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "MyColours");
   filter->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Pinned");
   std::ostringstream os;
@@ -920,8 +924,8 @@ CD_TEST_CASE(PrintSelf)
                                 "BoundaryWeight: 4.5",
                                 "SceneRelativeWeights: Off",
                                 "SceneWeightScale: 1",
-                                "ColorArrayName: MyColours",
-                                "LockArrayName: Pinned",
+                                "ColorArrayName: MyColours (point data)",
+                                "LockArrayName: Pinned (point data)",
                                 "ActualReduction: ",
                                 "NumberOfCollapses: ",
                                 "StateMemory: ",
