@@ -19,6 +19,7 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -100,6 +101,15 @@ bool CheckInput(vtkColorHalfEdgeDecimation* self, vtkPolyData* input)
     return false;
   }
   return true;
+}
+
+/// Marks the request of an update once the filter has run on one of its blocks (RequestData).
+vtkInformationIntegerKey* BlockSeenKey()
+{
+  // Registered with VTK's key manager, which deletes it at exit.
+  static vtkInformationIntegerKey* key =
+    vtkInformationIntegerKey::MakeKey("BLOCK_SEEN", "vtkColorHalfEdgeDecimation");
+  return key;
 }
 
 /// What SetInputArrayToProcess(index, ...) selected; null if nothing is.
@@ -541,13 +551,20 @@ const char* vtkColorHalfEdgeDecimation::GetColorSpaceAsString()
 }
 
 //------------------------------------------------------------------------------
-int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
+int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* request,
                                             vtkInformationVector** inputVector,
                                             vtkInformationVector* outputVector)
 {
   vtkDataObject* given = vtkDataObject::GetData(inputVector[0], 0);
   vtkPolyData* input = vtkPolyData::SafeDownCast(given);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  // The blocks of a composite input come one call each, with one request for the update: the
+  // first call of an update is the one whose request is not marked yet.
+  const bool firstOfUpdate = !request || !request->Has(BlockSeenKey());
+  if (request)
+  {
+    request->Set(BlockSeenKey(), 1);
+  }
   if (given && !input && output)
   {
     // A block of another type in a composite input (the pipeline passes it on): left empty,
@@ -556,7 +573,11 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* vtkNotUsed(request),
                     << ", not a vtkPolyData: its output is empty (extract its surface first: "
                        "vtkGeometryFilter).");
     output->Initialize();
-    return 1; // the statistics stay those of the last mesh
+    if (firstOfUpdate)
+    {
+      this->ResetStatistics(); // none of an earlier update's figures stays
+    }
+    return 1; // otherwise the statistics stay those of this update's last mesh
   }
   this->ResetStatistics();
   if (!input || !output)

@@ -64,8 +64,8 @@
  * Composite data (a vtkMultiBlockDataSet of meshes, ...): VTK's pipeline runs the filter on
  * each mesh, so both outputs are composites of the input's structure (the record's holds each
  * mesh's table, for vtkColorHalfEdgeLevelOfDetail), and the statistics (ActualReduction, ...)
- * are those of the last mesh. A block that is not a vtkPolyData gives an empty block, with a
- * warning.
+ * are those of the last mesh (none, all 0, when no block is a mesh). A block that is not a
+ * vtkPolyData gives an empty block, with a warning.
  *
  * Distributed data: when the input is one piece of several (UPDATE_NUMBER_OF_PIECES > 1, as
  * in ParaView run with MPI), the filter asks upstream for one level of ghost cells. Ghost
@@ -159,8 +159,8 @@ public:
    * Set every property of the method to the paper's (Kim, Choi and Lee): the HalfEdgeColor
    * metric, the Greedy schedule, no boundary planes (BoundaryWeight 0), no edge-length term,
    * GeometryWeight 1, RGB colours, MaximumNormalAngle 90, PreserveBoundary off (and
-   * ColorWeight 1, SceneRelativeWeights off, OptimalPlacement off, which the paper's metric does
-   * not read; PieceWeight 0).
+   * ColorWeight 1, SceneRelativeWeights off, OptimalPlacement off, KeptVertexErrorWeight 1,
+   * which the paper's metric does not read; PieceWeight 0).
    * TargetReduction, TargetNumberOfTriangles, MaximumError, PruneComponents,
    * ConsistentOrientation, PreserveSeams, NumberOfThreads, the lock array, the original point
    * ids and GenerateCollapseRecord are left as they are.

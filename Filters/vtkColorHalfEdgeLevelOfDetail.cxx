@@ -272,7 +272,7 @@ bool vtkColorHalfEdgeLevelOfDetail::UpdateCache(vtkPolyData* input, vtkDataObjec
   }
   cache = Cache();
   this->SetProgressText(ReadingText);
-  this->UpdateProgress(0.0);
+  this->UpdateMeshProgress(0.0);
   const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
   if (input->GetNumberOfPoints() == 0 || input->GetNumberOfCells() == 0)
   {
@@ -319,7 +319,7 @@ bool vtkColorHalfEdgeLevelOfDetail::ExtractLevel(vtkPolyData* input, vtkDataObje
     this->TargetNumberOfTriangles, this->TargetReduction, collapses.InputTriangles);
   const size_t count = colordecimation::LevelLength(collapses, target, this->MaximumError);
   colordecimation::ResolveSurvivors(collapses, count, cache.Where, this->MaximumError);
-  this->UpdateProgress(0.5);
+  this->UpdateMeshProgress(0.5);
 
   // 3. The output, as the decimation writes it; the statistics summed over the meshes.
   const vtkIdType triangles = colordecimation::adapter::WriteLevel(
@@ -368,6 +368,8 @@ bool vtkColorHalfEdgeLevelOfDetail::ExtractBlocks(vtkCompositeDataSet* input,
   }
   std::map<unsigned int, Cache> kept;
   bool complete = true;
+  size_t meshIndex = 0; // each mesh reports its progress within its share of the run's
+  this->ProgressShare = meshes > 0 ? 1.0 / static_cast<double>(meshes) : 1.0;
   for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
   {
     const unsigned int index = it->GetCurrentFlatIndex();
@@ -381,6 +383,7 @@ bool vtkColorHalfEdgeLevelOfDetail::ExtractBlocks(vtkCompositeDataSet* input,
                       << ", not a vtkPolyData: its level is empty.");
       continue;
     }
+    this->ProgressFirst = static_cast<double>(meshIndex++) * this->ProgressShare;
     if (mesh->GetNumberOfPoints() == 0)
     {
       continue; // an empty mesh: an empty level, as for a single mesh
@@ -405,6 +408,12 @@ bool vtkColorHalfEdgeLevelOfDetail::ExtractBlocks(vtkCompositeDataSet* input,
   }
   this->Cached->ByBlock = std::move(kept); // meshes no longer in the input are let go
   return complete;
+}
+
+//------------------------------------------------------------------------------
+void vtkColorHalfEdgeLevelOfDetail::UpdateMeshProgress(double fraction)
+{
+  this->UpdateProgress(this->ProgressFirst + this->ProgressShare * fraction);
 }
 
 //------------------------------------------------------------------------------
@@ -440,6 +449,8 @@ int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(reques
   this->ActualReduction = this->ActualError = 0.0;
   this->NumberOfCollapses = this->NumberOfRecordedCollapses = 0;
   this->Cached->InputTriangles = this->Cached->OutputTriangles = 0;
+  this->ProgressFirst = 0; // a single mesh's progress is the run's (ExtractBlocks shares it)
+  this->ProgressShare = 1;
   if (!input || !output)
   {
     vtkErrorMacro(<< "No " << (input ? "output" : "input") << " data object.");

@@ -24,8 +24,8 @@
  * point ids (GenerateOriginalPointIds, composed with an upstream array as the decimation
  * does). With the Greedy schedule a level is exactly the output of a direct run to that
  * target (same triangles, same order; without the decimation's PruneComponents, whose
- * removals after the run are not in the record); with Batched it is the same prefix of the Batched run's
- * order. Levels are nested: the points of a coarser level are a subset of those of each finer
+ * removals after the run are not in the record); with Batched it is the same prefix of the Batched
+ * run's order. Levels are nested: the points of a coarser level are a subset of those of each finer
  * one, and RemovedPointId -> SurvivingPointId is each removed point's parent (-1 for the
  * points of a piece removed whole, see vtkColorHalfEdgeDecimation::SetPieceWeight).
  *
@@ -184,8 +184,14 @@ private:
   vtkColorHalfEdgeLevelOfDetail(const vtkColorHalfEdgeLevelOfDetail&) = delete;
   void operator=(const vtkColorHalfEdgeLevelOfDetail&) = delete;
 
+  /// Progress within the mesh being extracted (0 to 1), mapped to its share of the run's.
+  void UpdateMeshProgress(double fraction);
+
   struct Caches;
   std::unique_ptr<Caches> Cached;
+  /// The share of the run's progress of the mesh being extracted: [First, First + Share).
+  double ProgressFirst = 0;
+  double ProgressShare = 1;
 };
 
 #endif

@@ -38,7 +38,9 @@
 #include <iterator>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
+#include <vector>
 
 using namespace colordecimation;
 using namespace colordecimation::testing;
@@ -629,6 +631,47 @@ void ExpectImageBlockLeftEmpty(vtkMultiBlockDataSet* group)
   }
   CD_CHECK_MSG(decimated == 2 && empty == static_cast<int>(blocks.size()) - 2,
                decimated << " meshes decimated of " << blocks.size() << " blocks");
+  CD_CHECK(run->GetNumberOfCollapses() > 0); // the last mesh's, the image block after it
+
+  // The figures are those of the update: an update again without a change keeps them; a
+  // composite of the image alone leaves none of the earlier update's.
+  const double reduction = run->GetActualReduction();
+  run->Update();
+  CD_CHECK(run->GetActualReduction() == reduction && reduction > 0);
+  vtkNew<vtkMultiBlockDataSet> imageOnly;
+  imageOnly->SetBlock(0, image);
+  run->SetInputData(imageOnly);
+  CD_CHECK(run->GetExecutive()->Update() == 1);
+  CD_CHECK_MSG(run->GetActualReduction() == 0 && run->GetNumberOfCollapses() == 0 &&
+                 run->GetNumberOfPhases() == 0,
+               "an earlier update's figures: reduction " << run->GetActualReduction() << ", "
+                                                         << run->GetNumberOfCollapses()
+                                                         << " collapses");
+}
+
+/// The level filter's progress on a composite input of several meshes, read anew: each mesh in
+/// its share, from 0 to 1 without going back.
+void ExpectCompositeProgress(vtkMultiBlockDataSet* group, vtkDataObject* records)
+{
+  vtkNew<vtkColorHalfEdgeLevelOfDetail> lod; // no cache: every mesh and record is read
+  std::vector<double> reported;
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetClientData(&reported);
+  progress->SetCallback(
+    [](vtkObject*, unsigned long, void* reported, void* amount)
+    { static_cast<std::vector<double>*>(reported)->push_back(*static_cast<double*>(amount)); });
+  lod->AddObserver(vtkCommand::ProgressEvent, progress);
+  lod->SetInputData(group);
+  lod->SetRecordData(records);
+  lod->Update();
+  std::ostringstream values;
+  for (const double value : reported)
+  {
+    values << " " << value;
+  }
+  CD_CHECK_MSG(reported.size() >= 5 && std::is_sorted(reported.begin(), reported.end()) &&
+                 reported.back() == 1.0,
+               "progress:" << values.str());
 }
 
 /// A single record serves a composite of one mesh (whatever other blocks it has), not one of
@@ -720,6 +763,7 @@ CD_TEST_CASE(CompositeInput)
   run->SetInputData(group);
   ExpectMixedBlocks(lod, group, meshes, messages);
   ExpectImageBlockLeftEmpty(group);
+  ExpectCompositeProgress(group, recorded);
 
   // A composite record given as data and edited in place (a column removed, the table marked
   // modified): read again, and refused.
