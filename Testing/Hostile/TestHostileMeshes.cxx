@@ -1043,6 +1043,28 @@ void CheckNoColor(vtkPolyData* mesh, const std::string& label)
  * empty output. No colour array (no scalars, or no point data at all): geometry alone,
  * quietly.
  */
+/**
+ * A colour array selected from a place a vtkPolyData does not have (a graph's vertices or edges,
+ * a table's rows): a warning saying so and the triangles of a run without colour
+ * (`byGeometry`), without VTK's own error from the look-up.
+ */
+void ExpectPlacesPolyDataLacks(vtkPolyData* mesh, const RunResult& byGeometry)
+{
+  for (const auto& place :
+       { std::make_pair(vtkDataObject::FIELD_ASSOCIATION_VERTICES, "a graph's vertex data"),
+         std::make_pair(vtkDataObject::FIELD_ASSOCIATION_EDGES, "a graph's edge data"),
+         std::make_pair(vtkDataObject::FIELD_ASSOCIATION_ROWS, "a table's row data") })
+  {
+    const RunResult run = Run(mesh, 0.9, ColorFrom(place.first, "RGB"));
+    CD_CHECK_MSG(run.Errors == 0 && run.Warnings == 1 &&
+                   run.HasWarning(std::string("'RGB' is selected from ") + place.second +
+                                  ", which a vtkPolyData does not have"),
+                 "association " << place.first << ": one warning: " << run.WarningText());
+    CD_CHECK_MSG(OriginalTriangles(run.Output) == OriginalTriangles(byGeometry.Output),
+                 "association " << place.first << ": the triangles of a run without colour");
+  }
+}
+
 CD_TEST_CASE(BadColorArrays)
 {
   auto mesh = ColorMesh();
@@ -1107,22 +1129,7 @@ CD_TEST_CASE(BadColorArrays)
                  fromCells.HasWarning("'RGB' is selected from the cell data, not the point data"),
                "a point array selected from the cell data: " << fromCells.WarningText());
 
-  // A place a vtkPolyData does not have (a graph's vertices or edges, a table's rows): the
-  // same warning-and-geometry, without VTK's own error from the look-up.
-  for (const auto& place :
-       { std::make_pair(vtkDataObject::FIELD_ASSOCIATION_VERTICES, "a graph's vertex data"),
-         std::make_pair(vtkDataObject::FIELD_ASSOCIATION_EDGES, "a graph's edge data"),
-         std::make_pair(vtkDataObject::FIELD_ASSOCIATION_ROWS, "a table's row data") })
-  {
-    const RunResult run = Run(mesh, 0.9, ColorFrom(place.first, "RGB"));
-    CD_CHECK_MSG(run.Errors == 0 && run.Warnings == 1 &&
-                   run.HasWarning(std::string("'RGB' is selected from ") + place.second +
-                                  ", which a vtkPolyData does not have"),
-                 "association " << place.first << ": one warning: " << run.WarningText());
-    CD_CHECK_MSG(OriginalTriangles(run.Output) == OriginalTriangles(byGeometry.Output),
-                 "association " << place.first << ": the triangles of a run without colour");
-  }
-
+  ExpectPlacesPolyDataLacks(mesh, byGeometry);
   auto noScalars = Copy(mesh); // the colours stay, as an array that is not the scalars
   noScalars->GetPointData()->SetScalars(nullptr);
   CheckNoColor(noScalars, "no scalars");
