@@ -225,8 +225,9 @@ bool IsPointArray(vtkColorHalfEdgeDecimation* self, const char* role, const char
 /// error) for one of the wrong length or without components. Without one, the decimation goes
 /// by geometry alone: quietly for a mesh without point scalars, or with an empty name
 /// (ParaView's choice when the input has no point scalars) and no point scalars; with a
-/// warning when the array selected is not there, not numeric or not point data, or an empty
-/// name leaves the input's point scalars `scalars` unused.
+/// warning when the array selected is not there, not numeric or not point data, is selected
+/// from a place a vtkPolyData does not have (by name or by attribute type), or an empty name
+/// leaves the input's point scalars `scalars` unused.
 bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int association,
                 vtkPolyData* input, int threads, InputMesh& mesh)
 {
@@ -241,6 +242,12 @@ bool ReadColors(vtkColorHalfEdgeDecimation* self, vtkDataArray* array, int assoc
       vtkWarningWithObjectMacro(self, << Unusable(input, "colour", asked, association)
                                       << " (SetInputArrayToProcess): decimating by geometry "
                                          "alone.");
+    }
+    else if (!asked && !PolyDataHas(association))
+    {
+      vtkWarningWithObjectMacro(self, << Unusable(input, "colour", "", association)
+                                      << " (SetInputArrayToProcess, by attribute type): "
+                                         "decimating by geometry alone.");
     }
     else if (asked && scalars)
     {
@@ -558,8 +565,10 @@ int vtkColorHalfEdgeDecimation::RequestData(vtkInformation* request,
   vtkDataObject* given = vtkDataObject::GetData(inputVector[0], 0);
   vtkPolyData* input = vtkPolyData::SafeDownCast(given);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  // The blocks of a composite input come one call each, with one request for the update: the
-  // first call of an update is the one whose request is not marked yet.
+  // The blocks of a composite input come one call each, with one request made for the update:
+  // the first call of an update is the one whose request is not marked yet. (A single input's
+  // request is the executive's own and stays marked; only a composite's blocks can be other
+  // than a vtkPolyData, where the mark is read.)
   const bool firstOfUpdate = !request || !request->Has(BlockSeenKey());
   if (request)
   {

@@ -47,8 +47,8 @@
  * range), or a grey value (one component, or the first of two: grey and alpha). Alpha is
  * carried through but not measured. Without a colour array the filter decimates by geometry
  * alone (a warning only when an array selected by name is not there, not numeric, or cell or
- * field data rather than point data, or is selected from a place a vtkPolyData does not have:
- * a graph's vertices or edges, a table's rows).
+ * field data rather than point data, or when an array is selected, by name or by attribute
+ * type, from a place a vtkPolyData does not have: a graph's vertices or edges, a table's rows).
  *
  * Collapses keep the surface a 2-manifold where it was one (link condition), never flip a
  * triangle normal by more than MaximumNormalAngle, never create a degenerate triangle, and
@@ -64,7 +64,8 @@
  * Composite data (a vtkMultiBlockDataSet of meshes, ...): VTK's pipeline runs the filter on
  * each mesh, so both outputs are composites of the input's structure (the record's holds each
  * mesh's table, for vtkColorHalfEdgeLevelOfDetail), and the statistics (ActualReduction, ...)
- * are those of the last mesh (none, all 0, when no block is a mesh). A block that is not a
+ * are those of the last mesh (all 0 when the blocks present hold no mesh; a composite without
+ * any block does not run the filter, and leaves them as they were). A block that is not a
  * vtkPolyData gives an empty block, with a warning.
  *
  * Distributed data: when the input is one piece of several (UPDATE_NUMBER_OF_PIECES > 1, as

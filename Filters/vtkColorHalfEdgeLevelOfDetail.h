@@ -24,10 +24,10 @@
  * point ids (GenerateOriginalPointIds, composed with an upstream array as the decimation
  * does). With the Greedy schedule a level is exactly the output of a direct run to that
  * target (same triangles, same order; without the decimation's PruneComponents, whose
- * removals after the run are not in the record); with Batched it is the same prefix of the Batched
- * run's order. Levels are nested: the points of a coarser level are a subset of those of each finer
- * one, and RemovedPointId -> SurvivingPointId is each removed point's parent (-1 for the
- * points of a piece removed whole, see vtkColorHalfEdgeDecimation::SetPieceWeight).
+ * removals after the run are not in the record); with Batched it is the same prefix of the
+ * Batched run's order. Levels are nested: the points of a coarser level are a subset of those
+ * of each finer one, and RemovedPointId -> SurvivingPointId is each removed point's parent (-1
+ * for the points of a piece removed whole, see vtkColorHalfEdgeDecimation::SetPieceWeight).
  *
  * The level is the longest prefix that a run would make: up to the first collapse that leaves
  * at most the target (TargetNumberOfTriangles when > 0, else (1 - TargetReduction) of the

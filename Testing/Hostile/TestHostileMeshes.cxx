@@ -17,6 +17,7 @@
 #include "vtkColorHalfEdgeDecimation.h"
 #include "vtkColorHalfEdgeLevelOfDetail.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDemandDrivenPipeline.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -1038,12 +1039,6 @@ void CheckNoColor(vtkPolyData* mesh, const std::string& label)
 }
 
 /**
- * Colour array of the wrong length (one tuple short as the scalars or selected by name, five
- * tuples long), or as cell data (selected as cell data, or as points then cells): errors,
- * empty output. No colour array (no scalars, or no point data at all): geometry alone,
- * quietly.
- */
-/**
  * A colour array selected from a place a vtkPolyData does not have (a graph's vertices or edges,
  * a table's rows): a warning saying so and the triangles of a run without colour
  * (`byGeometry`), without VTK's own error from the look-up.
@@ -1063,8 +1058,26 @@ void ExpectPlacesPolyDataLacks(vtkPolyData* mesh, const RunResult& byGeometry)
     CD_CHECK_MSG(OriginalTriangles(run.Output) == OriginalTriangles(byGeometry.Output),
                  "association " << place.first << ": the triangles of a run without colour");
   }
+  // Selected by attribute type there: the same warning, without a name.
+  const RunResult byType =
+    Run(mesh, 0.9,
+        [](vtkColorHalfEdgeDecimation* f)
+        {
+          f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_ROWS,
+                                    vtkDataSetAttributes::SCALARS);
+        });
+  CD_CHECK_MSG(byType.Errors == 0 && byType.Warnings == 1 &&
+                 byType.HasWarning("The colour array is selected from a table's row data"),
+               "rows by attribute type: " << byType.WarningText());
+  CD_CHECK(OriginalTriangles(byType.Output) == OriginalTriangles(byGeometry.Output));
 }
 
+/**
+ * Colour array of the wrong length (one tuple short as the scalars or selected by name, five
+ * tuples long), or as cell data (selected as cell data, or as points then cells): errors,
+ * empty output. No colour array (no scalars, or no point data at all): geometry alone,
+ * quietly.
+ */
 CD_TEST_CASE(BadColorArrays)
 {
   auto mesh = ColorMesh();

@@ -350,9 +350,10 @@ void BatchedSchedule<Metric>::CollapseBlock(Candidate* begin, Candidate* end, in
     this->TryCollapse(v0, v1, pass, ws, lane, false);
     if (level.OtherFlags != 0 && lane.Collapses != collapses)
     {
-      // v0's former neighbours may now have a neighbour in another finer block (or no longer
-      // have one). All of them and their fans are in this block: no other thread reads or
-      // writes them.
+      // v0's former neighbours may now have a neighbour in a block of another level (or no
+      // longer have one). They are in this block, so no other thread writes their flags; the
+      // faces around them are written by collapses of this block only (another block's
+      // collapses touch faces whose vertices are all in that block).
       this->Blocks.FlagAfterCollapse(this->E.GetMesh(), v0, v1, ws.FormerNeighbors.data(),
                                      ws.FormerNeighbors.size(), level.OtherFlags);
     }
