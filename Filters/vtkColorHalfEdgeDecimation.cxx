@@ -141,22 +141,34 @@ int SelectedAssociation(vtkAlgorithm* self, int index)
     : -1;
 }
 
-/// Where an array is selected from, for PrintSelf: " (point data)" and so on.
-const char* AssociationName(int association)
+/// The data an `association` selects from, in words ("point", "a graph's vertex", ...).
+const char* PlaceName(int association)
 {
   switch (association)
   {
     case vtkDataObject::FIELD_ASSOCIATION_POINTS:
-      return " (point data)";
+      return "point";
     case vtkDataObject::FIELD_ASSOCIATION_CELLS:
-      return " (cell data)";
+      return "cell";
     case vtkDataObject::FIELD_ASSOCIATION_NONE:
-      return " (field data)";
+      return "field";
     case vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS:
-      return " (point data, else cell data)";
+      return "point data, else cell"; // PlacedIn: "point data, else cell data"
+    case vtkDataObject::FIELD_ASSOCIATION_VERTICES:
+      return "a graph's vertex";
+    case vtkDataObject::FIELD_ASSOCIATION_EDGES:
+      return "a graph's edge";
+    case vtkDataObject::FIELD_ASSOCIATION_ROWS:
+      return "a table's row";
     default:
-      return " (not a vtkPolyData's data)";
+      return "unknown";
   }
+}
+
+/// Where an array is selected from, for PrintSelf: " (point data)" and so on.
+std::string PlacedIn(int association)
+{
+  return std::string(" (") + PlaceName(association) + " data)";
 }
 
 /// Whether a vtkPolyData has the place that `association` selects from (a graph's vertices or
@@ -175,20 +187,17 @@ std::string Unusable(vtkPolyData* input, const char* role, const char* name, int
   const std::string array =
     std::string("The ") + role + " array " + (*name ? "'" + std::string(name) + "' " : "");
   vtkAbstractArray* inPoints = input->GetPointData()->GetAbstractArray(name);
+  const std::string where = PlaceName(association);
   if (!PolyDataHas(association))
   {
-    const char* where = association == vtkDataObject::FIELD_ASSOCIATION_VERTICES
-      ? "a graph's vertex"
-      : association == vtkDataObject::FIELD_ASSOCIATION_EDGES ? "a graph's edge"
-                                                              : "a table's row";
     return array + "is selected from " + where + " data, which a vtkPolyData does not have";
   }
   if (association == vtkDataObject::FIELD_ASSOCIATION_CELLS ||
       association == vtkDataObject::FIELD_ASSOCIATION_NONE)
   {
-    const bool cells = association == vtkDataObject::FIELD_ASSOCIATION_CELLS;
-    vtkFieldData* place = cells ? input->GetCellData() : input->GetFieldData();
-    const std::string where = cells ? "cell" : "field";
+    vtkFieldData* place = association == vtkDataObject::FIELD_ASSOCIATION_CELLS
+      ? input->GetCellData()
+      : input->GetFieldData();
     if (place->GetAbstractArray(name) || !inPoints)
     {
       return array + "is " + where + " data, not point data";
@@ -746,13 +755,13 @@ const char* vtkColorHalfEdgeDecimation::GetLockArrayName()
 }
 
 //------------------------------------------------------------------------------
-vtkDataArray* vtkColorHalfEdgeDecimation::GetLockArray(vtkInformationVector** inputVector,
-                                                       int& association)
+vtkDataArray* vtkColorHalfEdgeDecimation::GetSelectedArray(int index,
+                                                           vtkInformationVector** inputVector,
+                                                           int& association)
 {
-  association = SelectedAssociation(this, 1);
-  return this->GetLockArrayName() && PolyDataHas(association)
-    ? this->GetInputArrayToProcess(1, inputVector, association)
-    : nullptr;
+  association = SelectedAssociation(this, index);
+  return PolyDataHas(association) ? this->GetInputArrayToProcess(index, inputVector, association)
+                                  : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -761,17 +770,10 @@ bool vtkColorHalfEdgeDecimation::ReadPointArrays(vtkInformationVector** inputVec
 {
   int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
   int lockAssociation = vtkDataObject::FIELD_ASSOCIATION_POINTS;
-  const int selected = SelectedAssociation(this, 0);
-  vtkDataArray* colors = nullptr;
-  if (this->ErrorMetric != Geometry && PolyDataHas(selected))
-  {
-    colors = this->GetInputArrayToProcess(0, inputVector, association);
-  }
-  else if (this->ErrorMetric != Geometry)
-  {
-    association = selected;
-  }
-  vtkDataArray* locks = this->GetLockArray(inputVector, lockAssociation);
+  vtkDataArray* colors =
+    this->ErrorMetric != Geometry ? this->GetSelectedArray(0, inputVector, association) : nullptr;
+  vtkDataArray* locks =
+    this->GetLockArrayName() ? this->GetSelectedArray(1, inputVector, lockAssociation) : nullptr;
   return (this->ErrorMetric == Geometry ||
           ReadColors(this, colors, association, input, threads, mesh)) &&
     ReadLocks(this, locks, lockAssociation, input, mesh);
@@ -819,10 +821,10 @@ void vtkColorHalfEdgeDecimation::PrintSelf(ostream& os, vtkIndent indent)
      << (!colors     ? "(the active point scalars)"
            : *colors ? colors
                      : "(none)")
-     << (colors && *colors ? AssociationName(SelectedAssociation(this, 0)) : "") << "\n";
+     << (colors && *colors ? PlacedIn(SelectedAssociation(this, 0)) : "") << "\n";
   os << indent
      << "LockArrayName: " << (this->GetLockArrayName() ? this->GetLockArrayName() : "(none)")
-     << (this->GetLockArrayName() ? AssociationName(SelectedAssociation(this, 1)) : "") << "\n";
+     << (this->GetLockArrayName() ? PlacedIn(SelectedAssociation(this, 1)) : "") << "\n";
   os << indent << "PreserveBoundary: " << (this->PreserveBoundary ? "On" : "Off") << "\n";
   os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";
   os << indent << "GeometryWeight: " << this->GeometryWeight << "\n";

@@ -590,9 +590,10 @@ protected:
   void ResetStatistics();
   /// The figures of a run into the statistics properties.
   void KeepStatistics(const colordecimation::DecimatorStatistics& stats);
-  /// The lock array, or null when none is selected or the input has none of that name (the
-  /// caller tells which from GetLockArrayName()).
-  vtkDataArray* GetLockArray(vtkInformationVector** inputVector, int& association);
+  /// The array selected with SetInputArrayToProcess(index, ...) and its association; null
+  /// when the input has none such, or the selection is from a place a vtkPolyData does not
+  /// have (a graph's or a table's data, where VTK's own look-up reports an error).
+  vtkDataArray* GetSelectedArray(int index, vtkInformationVector** inputVector, int& association);
   /// The colours (unless the metric is Geometry) and the locked points into `mesh`; false
   /// (with an error) for a bad array.
   bool ReadPointArrays(vtkInformationVector** inputVector, vtkPolyData* input, int threads,
