@@ -597,6 +597,10 @@ std::vector<std::string> RunOne(const uint8_t* data, size_t size)
   {
     broken.push_back("two runs on the same input differ");
   }
+  for (const std::string& why : second.Broken)
+  {
+    broken.push_back("with the collapse record on: " + why);
+  }
   CheckLastLevel(mesh, settings, second, broken);
   return broken;
 }

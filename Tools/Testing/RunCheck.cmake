@@ -7,11 +7,14 @@
 #                                           ascii-vtk-cut|stl-cut|stl-bogus-count|
 #                                           string-array-vtk|link-dev-full|folder|
 #                                           truncated -DMAKE_FILE_FROM=path -DMAKE_FILE_SIZE=n]
-#         [-DCHECK_FILE=path -DCHECK_FILE_REGEX=re] [-DCHECK_FILE_ABSENT=path]
+#         [-DCHECK_FILE=path -DCHECK_FILE_REGEX=re] [-DCHECK_FILE_ABSENT=path] [-DFRESH=path;...]
+#         [-DALLOW_RAW_VTK=ON]
 #         -P RunCheck.cmake -- COMMAND [ARG ...]
 #
 # EXPECT: success (exit 0, the default) or failure (exit status not 0; EXIT_CODE pins it).
-# REGEX must match and FORBID must not match the command's stdout + stderr.
+# REGEX must match and FORBID must not match the command's stdout + stderr, which must hold no
+# raw VTK message ("ERROR: In ...", "Warning: In ...", a logger's "ERR|" or "WARN|") unless
+# ALLOW_RAW_VTK is on.
 # MAKE_FILE is written before the command runs: "junk" is text that is no mesh format,
 # "points-only" a legacy VTK polydata with three vertices and no triangle, "ascii-ply-no-face"
 # an ASCII PLY whose header announces a face its body lacks, "ushort-ply" an ASCII PLY with
@@ -30,7 +33,8 @@
 # "folder" an empty folder, "truncated" the first MAKE_FILE_SIZE bytes of MAKE_FILE_FROM.
 # CHECK_FILE must exist after the command and match CHECK_FILE_REGEX (it is removed first,
 # unless it is MAKE_FILE: a file from an earlier run cannot pass); CHECK_FILE_ABSENT must not
-# (it is removed first too).
+# (it is removed first too). Each FRESH file, a file the command writes for later checks, is
+# removed first and must exist after.
 set(command)
 set(after_separator FALSE)
 foreach (i RANGE 1 ${CMAKE_ARGC})
@@ -178,6 +182,9 @@ endif ()
 if (DEFINED CHECK_FILE_ABSENT)
   file(REMOVE "${CHECK_FILE_ABSENT}")
 endif ()
+foreach (fresh IN LISTS FRESH)
+  file(REMOVE "${fresh}")
+endforeach ()
 if (DEFINED CHECK_FILE AND NOT CHECK_FILE STREQUAL "${MAKE_FILE}")
   file(REMOVE "${CHECK_FILE}")
 endif ()
@@ -211,6 +218,17 @@ endif ()
 if (DEFINED FORBID AND all MATCHES "${FORBID}")
   message(FATAL_ERROR "the output matches '${FORBID}', which it must not")
 endif ()
+# Whatever the command, a VTK message printed raw (by VTK's output window or logger, which the
+# tools' own message catchers replace) is a message the tools failed to catch and word
+# (ALLOW_RAW_VTK: not checked, for the check of this check).
+if (NOT ALLOW_RAW_VTK AND all MATCHES "(ERROR|Warning): In [^\n]*, line [0-9]+|[ ](ERR|WARN)\\| ")
+  message(FATAL_ERROR "the output holds a raw VTK message: ${CMAKE_MATCH_0}")
+endif ()
+foreach (fresh IN LISTS FRESH)
+  if (NOT EXISTS "${fresh}")
+    message(FATAL_ERROR "${fresh} was not written")
+  endif ()
+endforeach ()
 if (DEFINED CHECK_FILE_ABSENT AND EXISTS "${CHECK_FILE_ABSENT}")
   message(FATAL_ERROR "${CHECK_FILE_ABSENT} was written")
 endif ()
