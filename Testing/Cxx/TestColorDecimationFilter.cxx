@@ -600,7 +600,9 @@ CD_TEST_CASE(ScaleTranslationInvariance)
   auto sphere = Jittered(meshes::Icosphere(4, Pattern::SharpRegions), 5e-4);
   auto torus = Jittered(meshes::Torus(60, 24, Pattern::SmoothGradient), 5e-4);
   auto grid = Jittered(meshes::Grid(40, 30, Pattern::SharpRegions), 5e-4);
-  for (int metric : { 0, 1 })
+  for (int metric :
+       { vtkColorHalfEdgeDecimation::HalfEdgeColor, vtkColorHalfEdgeDecimation::Geometry,
+         vtkColorHalfEdgeDecimation::ColorQuadric, vtkColorHalfEdgeDecimation::AttributeQuadric })
   {
     CheckScaleInvariance(sphere, metric, "Icosphere(4)");
     CheckScaleInvariance(torus, metric, "Torus(60,24)");

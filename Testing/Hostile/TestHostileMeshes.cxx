@@ -28,6 +28,7 @@
 #include "vtkLogger.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -1507,7 +1508,7 @@ CD_TEST_CASE(OtherMetrics)
 CD_TEST_CASE(ExtremeProperties)
 {
   auto mesh = colordecimation::meshes::Icosphere(3, Pattern::FineDetail);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
   for (double weight : { 0.0, 1e-300, 1e300, std::numeric_limits<double>::max() })
   {
     RunResult run =
@@ -1520,12 +1521,17 @@ CD_TEST_CASE(ExtremeProperties)
     RunResult run =
       Run(mesh, 0.9, [angle](vtkColorHalfEdgeDecimation* f) { f->SetMaximumNormalAngle(angle); });
     ExpectNoMessages(run);
+    // On a sphere every collapse turns some normal: none within 1e-9 degrees.
+    CD_CHECK_MSG((angle < 1 ? run.Collapses == 0 : run.Collapses > 0),
+                 "MaximumNormalAngle " << angle << ": " << run.Collapses << " collapses");
   }
   vtkNew<vtkColorHalfEdgeDecimation> clamp;
   clamp->SetTargetReduction(-1);
   CD_CHECK_MSG(clamp->GetTargetReduction() == 0.0, "TargetReduction is clamped to 0");
   clamp->SetTargetReduction(2);
   CD_CHECK_MSG(clamp->GetTargetReduction() == 1.0, "TargetReduction is clamped to 1");
+  clamp->SetTargetReduction(inf);
+  CD_CHECK_MSG(clamp->GetTargetReduction() == 1.0, "TargetReduction inf is clamped to 1");
   clamp->SetErrorMetric(7);
   CD_CHECK_MSG(clamp->GetErrorMetric() == vtkColorHalfEdgeDecimation::AttributeQuadric,
                "ErrorMetric clamped");
@@ -1533,6 +1539,12 @@ CD_TEST_CASE(ExtremeProperties)
   CD_CHECK_MSG(clamp->GetColorSpace() == vtkColorHalfEdgeDecimation::CIELab, "ColorSpace clamped");
   clamp->SetColorWeight(-1);
   CD_CHECK_MSG(clamp->GetColorWeight() == 0.0, "ColorWeight is clamped to 0");
+  clamp->SetColorWeight(inf);
+  CD_CHECK_MSG(clamp->GetColorWeight() == VTK_DOUBLE_MAX, "ColorWeight inf is clamped");
+  clamp->SetBoundaryWeight(inf);
+  CD_CHECK_MSG(clamp->GetBoundaryWeight() == VTK_DOUBLE_MAX, "BoundaryWeight inf is clamped");
+  clamp->SetEdgeLengthWeight(-inf);
+  CD_CHECK_MSG(clamp->GetEdgeLengthWeight() == 0.0, "EdgeLengthWeight -inf is clamped to 0");
   clamp->SetGeometryWeight(-3);
   CD_CHECK_MSG(clamp->GetGeometryWeight() == 0.0, "GeometryWeight is clamped to 0");
   clamp->SetGeometryWeight(std::numeric_limits<double>::infinity());
@@ -1543,8 +1555,9 @@ CD_TEST_CASE(ExtremeProperties)
 
 /**
  * NaN property values pass vtkSetClampMacro unchanged: the filter refuses them with an error
- * and an empty output. Also ColorWeight NaN with the ColorQuadric metric. (Infinite values
- * are clamped by the setters: see ExtremeProperties.)
+ * and an empty output. Also ColorWeight NaN with the ColorQuadric metric, and MaximumError
+ * infinite either way (it has no clamp). (The setters clamp the other infinite values: see
+ * ExtremeProperties.)
  */
 CD_TEST_CASE(NaNProperties)
 {
@@ -1565,12 +1578,51 @@ CD_TEST_CASE(NaNProperties)
           f->SetErrorMetricToColorQuadric();
           f->SetColorWeight(nan);
         } },
+      { "BoundaryWeight", [nan](vtkColorHalfEdgeDecimation* f) { f->SetBoundaryWeight(nan); } },
+      { "EdgeLengthWeight", [nan](vtkColorHalfEdgeDecimation* f) { f->SetEdgeLengthWeight(nan); } },
+      { "MaximumError", [nan](vtkColorHalfEdgeDecimation* f) { f->SetMaximumError(nan); } },
+      { "MaximumError (infinite)",
+        [](vtkColorHalfEdgeDecimation* f)
+        { f->SetMaximumError(std::numeric_limits<double>::infinity()); } },
+      { "MaximumError (-infinite)",
+        [](vtkColorHalfEdgeDecimation* f)
+        { f->SetMaximumError(-std::numeric_limits<double>::infinity()); } },
     };
   for (const auto& setting : settings)
   {
     std::cout << setting.first << "\n";
     ExpectEmptyWithError(Run(mesh, 0.9, setting.second), "NaN or infinite");
   }
+}
+
+/// A mesh that says it has 2^31 points, more than the core's 32-bit ids name (a real one would
+/// need 24 GiB for its coordinates alone).
+class HugePointCount : public vtkPolyData
+{
+public:
+  static HugePointCount* New();
+  vtkTypeMacro(HugePointCount, vtkPolyData);
+  vtkIdType GetNumberOfPoints() override { return vtkIdType(1) << 31; }
+};
+vtkStandardNewMacro(HugePointCount);
+
+/// Too many points: an error naming them, an empty output, the input untouched.
+CD_TEST_CASE(TooManyPoints)
+{
+  auto mesh = colordecimation::meshes::Icosphere(2, Pattern::FineDetail);
+  vtkNew<HugePointCount> huge;
+  huge->ShallowCopy(mesh);
+  vtkNew<vtkColorHalfEdgeDecimation> filter;
+  EventRecorder messages;
+  messages.Watch(filter);
+  filter->SetInputData(huge);
+  filter->SetTargetReduction(0.9);
+  filter->Update();
+  CD_CHECK_MSG(messages.Errors == 1 && messages.HasError("Too many points (2147483648)"),
+               "one error naming the points: " << messages.ErrorText());
+  vtkPolyData* output = filter->GetOutput();
+  CD_CHECK_MSG(output->GetNumberOfPoints() == 0 && output->GetNumberOfCells() == 0, "empty output");
+  CD_CHECK_MSG(huge->GetNumberOfPolys() == mesh->GetNumberOfPolys(), "the input keeps its cells");
 }
 
 CD_TEST_CASE(ColorType_char)
