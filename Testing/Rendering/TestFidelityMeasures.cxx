@@ -153,9 +153,15 @@ void CheckImages(vtkPolyData* sphere, vtkPolyData* moved, fid::Options options,
 {
   options.ImageDirectory = temporary;
   std::string why;
-  fid::CompareRenders(sphere, moved, options);
-  CD_CHECK_MSG(std::ifstream(temporary + "/unlit_-Z_difference.png").good() &&
-                 std::ifstream(temporary + "/lit_+X_original.png").good(),
+  const std::string views[] = { temporary + "/unlit_-Z_difference.png",
+                                temporary + "/lit_+X_original.png" };
+  for (const std::string& view : views)
+  {
+    std::remove(view.c_str()); // an earlier run's must not pass
+  }
+  const fid::Result result = fid::CompareRenders(sphere, moved, options);
+  CD_CHECK_MSG(result.Ok, "CompareRenders with images: " << result.Error);
+  CD_CHECK_MSG(std::ifstream(views[0]).good() && std::ifstream(views[1]).good(),
                "per-view images are written");
   const std::string snapshot = temporary + "/fidelity_snapshot.png";
   std::remove(snapshot.c_str());

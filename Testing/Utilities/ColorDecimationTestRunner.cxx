@@ -28,6 +28,7 @@ namespace testing
 namespace
 {
 int Failures = 0;
+int Skips = 0; ///< cases that skipped themselves (SkipTestCase)
 constexpr int MaximumPrintedFailures = 40;
 
 struct RegisteredCase
@@ -43,10 +44,11 @@ std::vector<RegisteredCase>& Registry()
   return cases;
 }
 
-/// Run one case; prints PASS or FAIL with its name.
+/// Run one case; prints PASS, SKIP or FAIL with its name.
 void RunCase(const RegisteredCase& c)
 {
   const int before = Failures;
+  const int skipsBefore = Skips;
   try
   {
     c.Function();
@@ -55,7 +57,7 @@ void RunCase(const RegisteredCase& c)
   {
     ReportFailure(__FILE__, __LINE__, c.Name.c_str(), std::string("exception: ") + e.what());
   }
-  std::cout << (Failures == before ? "PASS " : "FAIL ") << c.Name;
+  std::cout << (Failures != before ? "FAIL " : Skips != skipsBefore ? "SKIP " : "PASS ") << c.Name;
   if (Failures != before)
   {
     std::cout << " (" << Failures - before << " failed checks)";
@@ -219,7 +221,17 @@ int RunTestCases(int argc, char* argv[])
     std::cerr << "no test case named '" << wanted << "'" << std::endl;
     return 2;
   }
-  return Failures == 0 ? 0 : 1;
+  if (Failures != 0)
+  {
+    return 1;
+  }
+  return wanted != "all" && Skips > 0 ? SkipExitCode : 0;
+}
+
+void SkipTestCase(const std::string& why)
+{
+  std::cout << "  skipped: " << why << std::endl;
+  ++Skips;
 }
 
 //------------------------------------------------------------------------------

@@ -10,7 +10,8 @@
  * its line followed by the body; its main() returns RunTestCases(argc, argv). The CMake
  * function colordecimation_add_test_cases() (Testing/Utilities/CMakeLists.txt) reads those
  * lines and adds one ctest entry per case (`exe Name`). A case reports failures with
- * CD_CHECK*; the process exits non-zero if any check failed.
+ * CD_CHECK*; the process exits non-zero if any check failed (SkipExitCode when the one case
+ * run skipped itself, SkipTestCase).
  */
 #ifndef ColorDecimationTestUtilities_h
 #define ColorDecimationTestUtilities_h
@@ -55,6 +56,12 @@ constexpr double KeptVertexErrorWeight = 0.0;
 void ReportFailure(const char* file, int line, const char* condition, const std::string& message);
 /// Number of failed checks so far.
 int GetNumberOfFailures();
+
+/// The exit code of a case that skipped itself (ctest's SKIP_RETURN_CODE on every case).
+constexpr int SkipExitCode = 77;
+/// Mark the running case as skipped (it cannot run here; `why` is printed): run alone, its
+/// executable then exits with SkipExitCode unless a check failed.
+void SkipTestCase(const std::string& why);
 
 /// Add a case to the executable's list (what CD_TEST_CASE does); returns true.
 bool RegisterTestCase(const char* name, void (*function)());

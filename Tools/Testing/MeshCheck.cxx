@@ -5,18 +5,22 @@
  *
  * Usage: ColorDecimationMeshCheck FILE [--triangles N | --triangles-between LO HI]
  *          [--points N] [--colors] [--colors-from INPUT] [--original-ids]
+ *          [--boundary-of INPUT]
  *
  * --colors          the file has a 3- or 4-component unsigned char colour array (the active
  *                   scalars) with more than one colour in it;
  * --colors-from IN  every point of FILE is a point of IN (same coordinates) with the same
  *                   colour, bit for bit (decimation by half-edge collapses keeps both);
  * --original-ids    FILE has vtkOriginalPointIds, and each output point's coordinates and
- *                   colour are those of that input point of the file given by --colors-from.
+ *                   colour are those of that input point of the file given by --colors-from;
+ * --boundary-of IN  FILE's boundary edges (those of one polygon) are IN's, by coordinates
+ *                   (what PreserveBoundary keeps).
  * Prints "points=P triangles=T colors=NAME/COMPONENTS" and exits non-zero on a failed check.
  */
 #include "CommandLine.h"
 #include "MeshIO.h"
 
+#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkLogger.h"
@@ -74,6 +78,7 @@ struct Checks
   bool Colors = false;
   std::string Reference;
   bool OriginalIds = false;
+  std::string BoundaryReference;
 };
 
 void AddOptions(CLI::App& app, Checks& checks)
@@ -95,6 +100,44 @@ void AddOptions(CLI::App& app, Checks& checks)
   app.add_flag("--original-ids", checks.OriginalIds,
                "vtkOriginalPointIds names, for each point, the point of --colors-from's\n"
                "file with its coordinates and colour");
+  app
+    .add_option("--boundary-of", checks.BoundaryReference,
+                "the boundary edges (those of one polygon) are INPUT's, by coordinates")
+    ->type_name("INPUT");
+}
+
+/// The boundary edges of `mesh` (those of one polygon), each as its two ends' coordinates in
+/// increasing order.
+std::set<std::array<Key, 2>> BoundaryEdges(vtkPolyData* mesh)
+{
+  std::map<std::array<Key, 2>, int> uses;
+  vtkCellArray* polys = mesh->GetPolys();
+  vtkIdType count;
+  const vtkIdType* ids;
+  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+  {
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      double a[3], b[3];
+      mesh->GetPoint(ids[k], a);
+      mesh->GetPoint(ids[(k + 1) % count], b);
+      std::array<Key, 2> edge = { Key{ a[0], a[1], a[2] }, Key{ b[0], b[1], b[2] } };
+      if (edge[1] < edge[0])
+      {
+        std::swap(edge[0], edge[1]);
+      }
+      ++uses[edge];
+    }
+  }
+  std::set<std::array<Key, 2>> boundary;
+  for (const auto& use : uses)
+  {
+    if (use.second == 1)
+    {
+      boundary.insert(use.first);
+    }
+  }
+  return boundary;
 }
 
 /// The triangle and point counts; "" when right.
@@ -226,21 +269,31 @@ int Check(const Checks& checks)
   {
     return Failure(wrong);
   }
-  if (checks.Reference.empty())
+  if (!checks.Reference.empty())
   {
-    return 0;
+    auto input = Load(checks.Reference);
+    wrong = input ? CheckAgainst(mesh, input, checks.OriginalIds) : "cannot read the reference";
+    if (!wrong.empty())
+    {
+      return Failure(wrong);
+    }
+    std::cout << "all " << points << " points and colours found in " << checks.Reference << "\n";
   }
-  auto input = Load(checks.Reference);
-  if (!input)
+  if (!checks.BoundaryReference.empty())
   {
-    return 1;
+    auto input = Load(checks.BoundaryReference);
+    if (!input)
+    {
+      return 1;
+    }
+    const auto boundary = BoundaryEdges(mesh);
+    if (boundary != BoundaryEdges(input))
+    {
+      return Failure("the boundary edges differ from those of " + checks.BoundaryReference);
+    }
+    std::cout << "the " << boundary.size() << " boundary edges of " << checks.BoundaryReference
+              << "\n";
   }
-  wrong = CheckAgainst(mesh, input, checks.OriginalIds);
-  if (!wrong.empty())
-  {
-    return Failure(wrong);
-  }
-  std::cout << "all " << points << " points and colours found in " << checks.Reference << std::endl;
   return 0;
 }
 } // namespace
