@@ -7,8 +7,10 @@
  * - engine/Engine.h: set-up (mesh/SpatialOrder.h, mesh/HalfEdgeMesh.h, mesh/Seams.h,
  *   engine/Frame.h), costing, the rules (rules/CollapseRules.h), the collapse and the merge,
  *   the affected vertices, the mapping back to the input's ids;
- * - the metric, a policy of the engine: metric/HalfEdgeColor.h (the paper's cost, and the
- *   quadric alone) or metric/ColorQuadricMetric.h (Garland and Heckbert's colour quadric);
+ * - the metric, a policy of the engine: metric/AttributeQuadric.h (the default: a quadric of
+ *   position and colour per vertex, with a colour-gradient term), metric/HalfEdgeColor.h (the
+ *   paper's cost, and the quadric alone) or metric/ColorQuadricMetric.h (Garland and
+ *   Heckbert's colour quadric);
  * - the schedule, a loop over the engine: schedule/Greedy.h (a min-heap, the paper's order) or
  *   schedule/Batched.h (passes by blocks on several threads);
  * - the stop rules: the target, MaximumError (rules/ErrorBound.h), and after the schedule the
@@ -52,8 +54,8 @@ public:
 
   /// The decimated mesh, by input ids (empty before Run).
   const HalfEdgeMesh& GetMesh() const;
-  /// The per-vertex state of HalfEdgeColor and Geometry (empty with ColorQuadric, or without
-  /// KeepVertexState).
+  /// The per-vertex state of HalfEdgeColor and Geometry (empty with ColorQuadric or
+  /// AttributeQuadric, or without KeepVertexState).
   const Buffer<VertexMetric>& GetMetrics() const;
   /// The per-vertex state of ColorQuadric (each centred at its vertex's point of R^6).
   const LargeVector<ColorQuadric>& GetColorQuadrics() const;

@@ -43,12 +43,13 @@ int EngineBase::ThreadCount(size_t items) const
   return ThreadsFor(items, this->Options.NumberOfThreads, MinimumThreadWork);
 }
 
-void EngineBase::SetUp(const DecimatorInput& input, bool useColor, DecimatorStatistics& stats)
+void EngineBase::SetUp(const DecimatorInput& input, bool useColor, bool movesVertices,
+                       DecimatorStatistics& stats)
 {
   const int32_t n = input.NumberOfPoints;
   this->ComputeOrder(input);
   stats.Phases.Lap("spatial order");
-  this->BuildMesh(input, stats);
+  this->BuildMesh(input, movesVertices, stats);
   stats.Phases.Lap("connectivity");
   const int32_t* source = this->Renumbered ? this->Order.OldVertex.data() : nullptr;
   this->Geometry = MeasureFrame(this->Mesh, input.Points, source, stats.Build.IsolatedVertices > 0,
@@ -169,7 +170,8 @@ void EngineBase::ComputeOrder(const DecimatorInput& input)
   }
 }
 
-void EngineBase::BuildMesh(const DecimatorInput& input, DecimatorStatistics& stats)
+void EngineBase::BuildMesh(const DecimatorInput& input, bool movesVertices,
+                           DecimatorStatistics& stats)
 {
   const int32_t n = input.NumberOfPoints;
   const auto build = [this, &input, &stats, n](const int32_t* triangles)
@@ -197,10 +199,11 @@ void EngineBase::BuildMesh(const DecimatorInput& input, DecimatorStatistics& sta
     }
   }
   this->Order.NewVertex = Buffer<int32_t>();
-  this->FindSeamsAndLocks(input, stats);
+  this->FindSeamsAndLocks(input, movesVertices, stats);
 }
 
-void EngineBase::FindSeamsAndLocks(const DecimatorInput& input, DecimatorStatistics& stats)
+void EngineBase::FindSeamsAndLocks(const DecimatorInput& input, bool movesVertices,
+                                   DecimatorStatistics& stats)
 {
   // Seams first, so that a fixed point still has its twin (whose pair it then refuses).
   const int32_t n = input.NumberOfPoints;
@@ -209,10 +212,8 @@ void EngineBase::FindSeamsAndLocks(const DecimatorInput& input, DecimatorStatist
   if (this->Options.PreserveSeams)
   {
     // Full collapses would move the two sides apart: their seams are locked.
-    const bool lockAll =
-      this->Options.Metric == ErrorMetric::ColorQuadric && this->Options.OptimalPlacement;
-    const SeamReport seams =
-      this->Seams.Detect(this->Mesh, input.Points, source, lockAll, this->ThreadCount(size_t(n)));
+    const SeamReport seams = this->Seams.Detect(this->Mesh, input.Points, source, movesVertices,
+                                                this->ThreadCount(size_t(n)));
     stats.SeamVertices = seams.TwinnedVertices + seams.SharedVertices + seams.LockedVertices;
     stats.SeamLockedVertices = seams.LockedVertices;
   }

@@ -6,7 +6,8 @@
  *
  * EngineBase holds what does not depend on the metric: the mesh, the frame and the hot
  * records, the input normals for the rules, each vertex's chosen target. Engine<Metric> adds
- * the metric, a policy type (metric/HalfEdgeColor.h, metric/ColorQuadricMetric.h) that gives
+ * the metric, a policy type (metric/AttributeQuadric.h, metric/HalfEdgeColor.h,
+ * metric/ColorQuadricMetric.h) that gives
  * the cost of every member of a ring, merges the state of a collapse, and says whether
  * collapses move the survivor. The schedules (schedule/Greedy.h, schedule/Batched.h) are loops
  * over an Engine<Metric>; templates keep the per-candidate calls inlined.
@@ -25,8 +26,6 @@
 #include "mesh/HalfEdgeMesh.h"
 #include "mesh/Seams.h"
 #include "mesh/SpatialOrder.h"
-#include "metric/ColorQuadric.h"
-#include "metric/HalfEdgeColor.h"
 #include "metric/Ring.h"
 #include "rules/CollapseRules.h"
 #include "rules/ErrorBound.h"
@@ -66,9 +65,11 @@ public:
    * The set-up before the metric's state: the spatial order of a large mesh, the connectivity
    * (built again with each piece wound one way if the input's winding disagrees; the input's
    * fixed points locked), the frame and the hot records (with colour when
-   * useColor), and the input normals that bound each face's drift.
+   * useColor), and the input normals that bound each face's drift. movesVertices: the
+   * metric's collapses move the survivor (every seam is then locked, section 15).
    */
-  void SetUp(const DecimatorInput& input, bool useColor, DecimatorStatistics& stats);
+  void SetUp(const DecimatorInput& input, bool useColor, bool movesVertices,
+             DecimatorStatistics& stats);
   /// After the schedule: free what the output does not need and map the mesh back to the
   /// input's ids (keepHot: the hot records are kept, e.g. for moved vertices).
   void Finish(bool keepHot);
@@ -206,9 +207,11 @@ private:
   void RecordPiece(const std::vector<int32_t>& vertices, int64_t faces, double cost,
                    double squaredError);
   void ComputeOrder(const DecimatorInput& input);
-  void BuildMesh(const DecimatorInput& input, DecimatorStatistics& stats);
+  /// The connectivity, then the seams and locked vertices (FindSeamsAndLocks).
+  void BuildMesh(const DecimatorInput& input, bool movesVertices, DecimatorStatistics& stats);
   /// The seams of the built mesh (section 15), then the input's fixed points locked.
-  void FindSeamsAndLocks(const DecimatorInput& input, DecimatorStatistics& stats);
+  void FindSeamsAndLocks(const DecimatorInput& input, bool movesVertices,
+                         DecimatorStatistics& stats);
 };
 
 /**
@@ -255,7 +258,7 @@ public:
   /// Set-up (EngineBase::SetUp), then the metric's initial state, then the error planes.
   void Start(const DecimatorInput& input, DecimatorStatistics& stats)
   {
-    this->SetUp(input, Metric::ReadsColor && input.Colors, stats);
+    this->SetUp(input, Metric::ReadsColor && input.Colors, this->TheMetric.MovesVertices(), stats);
     const bool pieces = Metric::CostsPieces && this->Options.PieceWeight > 0;
     if (pieces)
     {

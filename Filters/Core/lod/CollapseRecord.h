@@ -75,7 +75,7 @@ VTKCOLORDECIMATION_EXPORT size_t LevelLength(const CollapseRecord& record, int64
                                              double maximumError);
 
 /**
- * Whether the record is one of a mesh of `points` points: every id in range, no vertex
+ * Whether the record is one of a mesh of record.InputPoints points: every id in range, no vertex
  * removed twice or collapsed into after its removal, the triangle counts decreasing (equal
  * only for the two collapses of a pair and the vertices of a removed piece). On failure, `why`
  * says what is wrong.

@@ -2,10 +2,11 @@
  * @file HalfEdgeMesh.h
  * @brief Compact triangle connectivity (a corner table) that supports half-edge collapses.
  *
- * Half-edge `h` lives in face `h / 3` and runs from corner vertex `V[h]` to `V[Next(h)]`.
- * `T[h]` is its twin (the same edge in the neighbouring face, running the other way) or -1
- * on a boundary. Each vertex keeps one outgoing half-edge in `Out`; for a boundary vertex
- * it is the one whose twin is -1, so that circulating forward from it visits the whole fan.
+ * Half-edge `h` lives in face `h / 3` and runs from its corner's vertex `Corners[h].Vertex`
+ * to that of `Next(h)`. `Corners[h].Twin` is its twin (the same edge in the neighbouring face,
+ * running the other way) or -1 on a boundary. Each vertex keeps one outgoing half-edge in
+ * `Out`; for a boundary vertex it is the one whose twin is -1, so that circulating forward
+ * from it visits the whole fan.
  *
  * Everything is stored in flat arrays (no per-vertex allocation): 24 bytes per triangle and
  * 5 bytes per vertex.

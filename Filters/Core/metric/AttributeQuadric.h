@@ -53,7 +53,8 @@ struct VTKCOLORDECIMATION_EXPORT AttributeQuadric
   float C = 0;
 
   double Evaluate(const double dx[3], const double ds[3]) const;
-  /// Add `other`, whose centre lies at offset (dx, ds) from this one's (dx = x_this - x_other).
+  /// Add `other`, centred at (x_other, s_other), to this quadric: dx = x_this - x_other and
+  /// ds = s_this - s_other (this centre in other's frame).
   void AddShifted(const AttributeQuadric& other, const double dx[3], const double ds[3]);
   /// Add weight * m m^T to the geometric block (a plane through the centre). Inline: the
   /// set-up adds seven planes a corner.

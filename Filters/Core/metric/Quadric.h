@@ -78,8 +78,9 @@ struct Quadric
   }
 
   /**
-   * Add `other`, whose centre lies at offset d from this one's centre (d = p_this -
-   * p_other): other(x) re-centred has b' = b + A d and c' = other.Evaluate(d).
+   * Add `other`, centred at p_other, to this quadric, centred at p_this; d = p_this - p_other
+   * (this centre in other's frame): other re-centred has b' = b + A d and c' =
+   * other.Evaluate(d).
    */
   void AddShifted(const Quadric& other, const double d[3])
   {

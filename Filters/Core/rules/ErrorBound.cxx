@@ -67,7 +67,7 @@ void AddFacePlane(const HalfEdgeMesh& mesh, const float* positions, int stride, 
 
 /// The mean squared distance q / area of the planes' points: 0 without area or where rounding
 /// took q below 0, and the largest double where it is no finite number (the products of huge
-/// coordinates overflowed): an error no finite bound admits (as before), which the infinite
+/// coordinates overflowed): an error no finite bound admits, which the infinite
 /// bound of a record does admit, so that a run with a record makes the collapses a run without
 /// one makes, and which the record can hold (its errors are finite).
 double MeanSquared(double q, double area)
@@ -133,8 +133,8 @@ double ErrorBound::PlaneSum::Mean(const double x[3]) const
 
 double ErrorBound::SquaredError(int32_t v0, int32_t v1, const double x[3]) const
 {
-  // Summed term by term rather than through Add and Mean: the rounding of the bound's
-  // decisions stays that of the first version.
+  // The two plane sums evaluated in one expression, without a temporary sum: the order of its
+  // additions fixes the rounding of the bound's decisions.
   const PlaneSum& q0 = this->Planes[v0];
   const PlaneSum& q1 = this->Planes[v1];
   double a[6];

@@ -3,7 +3,7 @@
  * @brief The Batched schedule's choice of a batch: the cheapest candidates of the whole mesh,
  * listed in vertex order, without sorting them.
  *
- * A pass takes the k cheapest of up to a million keyed vertices. Instead of copying them all
+ * A pass takes the k cheapest of the keyed vertices. Instead of copying them all
  * and partitioning the copy (nth_element), SelectCheapest estimates the k-th key from a
  * sample of one vertex in 16, takes the vertices up to a little above it in one scan (on
  * several threads), and partitions only those a little below it or above (those further below
@@ -214,8 +214,9 @@ inline void KeepSmallest(std::vector<Candidate>& out, size_t first,
  * Append to `out`, in vertex order, the `howMany(m)` smallest candidates by (key, vertex), m
  * being the number of candidates among the vertices vertices[0 .. count - 1] (in increasing
  * order; 0 .. count - 1 when `vertices` is null): those for which keyOf(v, key) returns true,
- * with their key (an OrderableKey). Returns m. keyOf is called twice per vertex, from
- * `threads` threads at once (each calling its own copy: let it capture pointers by value).
+ * with their key (an OrderableKey). Returns m. keyOf is called once per vertex, and again for
+ * the sampled ones (one in 16) and, should the sample mislead, for every vertex once more,
+ * from `threads` threads at once (each calling its own copy: let it capture pointers by value).
  */
 template <typename KeyOf, typename HowMany>
 size_t SelectCheapest(size_t count, const int32_t* vertices, const KeyOf& keyOf,
