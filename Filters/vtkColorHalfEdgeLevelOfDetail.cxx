@@ -418,8 +418,15 @@ void vtkColorHalfEdgeLevelOfDetail::UpdateMeshProgress(double fraction)
 
 //------------------------------------------------------------------------------
 void vtkColorHalfEdgeLevelOfDetail::ExtractSingle(vtkPolyData* input, vtkDataObject* record,
-                                                  Cache& cache, vtkPolyData* output)
+                                                  vtkPolyData* output)
 {
+  // A single mesh has the cache at 0, the flat index of a composite's root, never a leaf's.
+  std::map<unsigned int, Cache>& blocks = this->Cached->ByBlock;
+  for (auto it = blocks.begin(); it != blocks.end();)
+  {
+    it = it->first == 0 ? std::next(it) : blocks.erase(it);
+  }
+  Cache& cache = blocks[0];
   // A composite record of one mesh serves a single mesh; one of several cannot say whose.
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(record))
   {
@@ -439,6 +446,35 @@ void vtkColorHalfEdgeLevelOfDetail::ExtractSingle(vtkPolyData* input, vtkDataObj
 }
 
 //------------------------------------------------------------------------------
+void vtkColorHalfEdgeLevelOfDetail::ResetStatistics()
+{
+  this->ActualReduction = this->ActualError = 0.0;
+  this->NumberOfCollapses = this->NumberOfRecordedCollapses = 0;
+  this->Cached->InputTriangles = this->Cached->OutputTriangles = 0;
+  this->ProgressFirst = 0; // a single mesh's progress is the run's (ExtractBlocks shares it)
+  this->ProgressShare = 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkColorHalfEdgeLevelOfDetail::CheckSettings(vtkDataObject* record)
+{
+  if (!std::isfinite(this->MaximumError) || std::isnan(this->TargetReduction))
+  {
+    vtkErrorMacro(<< (std::isnan(this->TargetReduction) ? "TargetReduction is NaN"
+                                                        : "MaximumError is NaN or infinite")
+                  << "; output is empty.");
+    return false;
+  }
+  if (!record)
+  {
+    vtkErrorMacro(<< "No collapse record on input port 1 (SetRecordConnection; in ParaView, the "
+                     "Record input); output is empty.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(request),
                                                vtkInformationVector** inputVector,
                                                vtkInformationVector* outputVector)
@@ -446,28 +482,15 @@ int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(reques
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkDataObject* record = vtkDataObject::GetData(inputVector[1], 0);
   vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
-  this->ActualReduction = this->ActualError = 0.0;
-  this->NumberOfCollapses = this->NumberOfRecordedCollapses = 0;
-  this->Cached->InputTriangles = this->Cached->OutputTriangles = 0;
-  this->ProgressFirst = 0; // a single mesh's progress is the run's (ExtractBlocks shares it)
-  this->ProgressShare = 1;
+  this->ResetStatistics();
   if (!input || !output)
   {
     vtkErrorMacro(<< "No " << (input ? "output" : "input") << " data object.");
     return 0;
   }
   output->GetFieldData()->PassData(input->GetFieldData());
-  if (!std::isfinite(this->MaximumError) || std::isnan(this->TargetReduction))
+  if (!this->CheckSettings(record))
   {
-    vtkErrorMacro(<< (std::isnan(this->TargetReduction) ? "TargetReduction is NaN"
-                                                        : "MaximumError is NaN or infinite")
-                  << "; output is empty.");
-    return 1;
-  }
-  if (!record)
-  {
-    vtkErrorMacro(<< "No collapse record on input port 1 (SetRecordConnection; in ParaView, the "
-                     "Record input); output is empty.");
     return 1;
   }
   auto* composite = vtkCompositeDataSet::SafeDownCast(input);
@@ -484,13 +507,7 @@ int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(reques
     }
     else if (mesh && level)
     {
-      // A single mesh has the cache at 0, the flat index of a composite's root, never a leaf's.
-      std::map<unsigned int, Cache>& blocks = this->Cached->ByBlock;
-      for (auto it = blocks.begin(); it != blocks.end();)
-      {
-        it = it->first == 0 ? std::next(it) : blocks.erase(it);
-      }
-      this->ExtractSingle(mesh, record, blocks[0], level);
+      this->ExtractSingle(mesh, record, level);
     }
   }
   catch (const std::exception& e)
@@ -500,9 +517,7 @@ int vtkColorHalfEdgeLevelOfDetail::RequestData(vtkInformation* vtkNotUsed(reques
     this->SetProgressText(nullptr); // the failure may come while the record is read
     colordecimation::adapter::EmptyOutput(input, output);
     this->Cached->ByBlock.clear();
-    this->Cached->InputTriangles = this->Cached->OutputTriangles = 0;
-    this->NumberOfCollapses = this->NumberOfRecordedCollapses = 0;
-    this->ActualError = 0.0;
+    this->ResetStatistics();
   }
   const Caches& sums = *this->Cached;
   this->ActualReduction = sums.InputTriangles > 0

@@ -164,8 +164,9 @@ protected:
   bool UpdateCache(vtkPolyData* input, vtkDataObject* record, Cache& cache);
   /// The level of one mesh from its record, into `output`; false (with an error) if none.
   bool ExtractLevel(vtkPolyData* input, vtkDataObject* record, Cache& cache, vtkPolyData* output);
-  /// A single mesh's level: its record is a table, or a composite record holding one table.
-  void ExtractSingle(vtkPolyData* input, vtkDataObject* record, Cache& cache, vtkPolyData* output);
+  /// A single mesh's level: its record is a table, or a composite record holding one table
+  /// (the mesh's cache is at 0; those of a composite input's leaves are dropped).
+  void ExtractSingle(vtkPolyData* input, vtkDataObject* record, vtkPolyData* output);
   /// Each leaf mesh of a composite input from the record at the same place in `records`.
   bool ExtractBlocks(vtkCompositeDataSet* input, vtkDataObject* records,
                      vtkCompositeDataSet* output);
@@ -186,6 +187,11 @@ private:
 
   /// Progress within the mesh being extracted (0 to 1), mapped to its share of the run's.
   void UpdateMeshProgress(double fraction);
+  /// The statistics of no extraction, and the progress of a single mesh.
+  void ResetStatistics();
+  /// False, with an error, when a setting is NaN (or MaximumError infinite) or there is no
+  /// record.
+  bool CheckSettings(vtkDataObject* record);
 
   struct Caches;
   std::unique_ptr<Caches> Cached;
