@@ -31,6 +31,7 @@ Run from the repository: python3 Tools/fidelity-benchmark.py --build build
 
 import argparse
 import datetime
+import functools
 import json
 import math
 import os
@@ -297,10 +298,8 @@ def figures(rec):
     return out
 
 
-def write_markdown(args, records, meshes, reductions, methods, coloured, elapsed, skipped):
-    by = {(r["mesh"], r["reduction"], r["method"]): r for r in records}
-    lines = []
-    w = lines.append
+def markdown_header(w, args, elapsed, skipped):
+    """The study's title, command, measures, what was left out and the analysis kept."""
     w("# Fidelity study: the half-edge colour metric against the colour quadric and peers")
     w("")
     w("Written by `Tools/fidelity-benchmark.py` (" + datetime.date.today().isoformat() +
@@ -333,37 +332,45 @@ def write_markdown(args, records, meshes, reductions, methods, coloured, elapsed
         if a >= 0 and b > a:
             w(old[a:b + len(ANALYSIS_END)])
             w("")
+
+
+def markdown_table(w, by, reductions, methods, title, cell, mesh_list, note=None):
+    """One table of the study: a row per method, a column per mesh, a part per reduction."""
+    w(f"## {title}")
+    w("")
+    if note:
+        w(note)
+        w("")
+    for red in reductions:
+        w(f"### {red:.0%} reduction")
+        w("")
+        w("| method | " + " | ".join(mesh_list) + " |")
+        w("|---|" + "--:|" * len(mesh_list))
+        for mid in methods:
+            row = [METHOD_LABEL[mid]]
+            any_value = False
+            for mesh in mesh_list:
+                rec = by.get((mesh, red, mid))
+                text = cell(figures(rec)) if rec and "run" in rec else (
+                    "failed" if rec and "error" in rec else "—")
+                any_value = any_value or text not in ("—",)
+                row.append(text)
+            if any_value:
+                w("| " + " | ".join(row) + " |")
+        w("")
+
+
+def write_markdown(args, records, meshes, reductions, methods, coloured, elapsed, skipped):
+    by = {(r["mesh"], r["reduction"], r["method"]): r for r in records}
+    lines = []
+    w = lines.append
+    markdown_header(w, args, elapsed, skipped)
     rel = os.path.relpath(args.plot, os.path.dirname(os.path.abspath(args.markdown)))
     w(f"![PSNR of the unlit renders against the compression ratio, per coloured mesh]({rel})")
     w("")
     aims(w, by, meshes, coloured, reductions, methods)
-
-    def table(title, cols, cell, mesh_list, note=None):
-        w(f"## {title}")
-        w("")
-        if note:
-            w(note)
-            w("")
-        for red in reductions:
-            w(f"### {red:.0%} reduction")
-            w("")
-            w("| method | " + " | ".join(mesh_list) + " |")
-            w("|---|" + "--:|" * len(mesh_list))
-            for mid in methods:
-                row = [METHOD_LABEL[mid]]
-                any_value = False
-                for mesh in mesh_list:
-                    rec = by.get((mesh, red, mid))
-                    text = cell(figures(rec)) if rec and "run" in rec else (
-                        "failed" if rec and "error" in rec else "—")
-                    any_value = any_value or text not in ("—",)
-                    row.append(text)
-                if any_value:
-                    w("| " + " | ".join(row) + " |")
-            w("")
-
+    table = functools.partial(markdown_table, w, by, reductions, methods)
     table("Table 1: time and memory",
-          None,
           lambda f: (f"{f['seconds']:.2f} s / {f['peak'] / 2**20:.0f} MiB / {f['bpv']:.0f} B"
                      f" ({f['tri_out']:,} tri)") if "seconds" in f else "—",
           meshes,
@@ -371,12 +378,10 @@ def write_markdown(args, records, meshes, reductions, methods, coloured, elapsed
           "per vertex (and the output triangle count: a method that stops early is visible "
           "here).")
     table("Table 2: geometric error (Metro), mean / RMS / max, % of the bounding-box diagonal",
-          None,
           lambda f: (f"{f['mean']:.4f} / **{f['rms']:.4f}** / {f['max']:.3f}")
           if "rms" in f else "—",
           meshes)
     table("Table 3: colour error of unlit renders, RMS (0-255) / PSNR (dB)",
-          None,
           lambda f: f"**{f['crms']:.2f}** / {fmt(f.get('psnr'), 2)}" if "crms" in f else "—",
           coloured,
           "Meshes whose colour varies (on the others the unlit renders measure silhouettes "

@@ -163,10 +163,13 @@ def torus(nu, nv, r1=4.0, r2=1.5):
     return points, triangles
 
 
-def seeds():
-    s = {}
-    tet_p = [(0, 0, 0), (2, 0, 0), (0, 2, 0), (0, 0, 2)]
-    tet_t = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
+TETRAHEDRON = ([(0, 0, 0), (2, 0, 0), (0, 2, 0), (0, 0, 2)],
+               [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)])
+
+
+def closed_seeds(s):
+    """Closed surfaces: tetrahedron, octahedron, icospheres, torus."""
+    tet_p, tet_t = TETRAHEDRON
     s["tetrahedron"] = encode(tet_p, tet_t, colors=colors_for(tet_p))
     oct_p = [(2, 0, 0), (-2, 0, 0), (0, 2, 0), (0, -2, 0), (0, 0, 2), (0, 0, -2)]
     oct_t = [(0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5),
@@ -183,6 +186,12 @@ def seeds():
     s["icosphere2"] = encode(ico2_p, ico2_t, angle=250, colors=colors_for(ico2_p))
     tor_p, tor_t = torus(10, 6)
     s["torus"] = encode(tor_p, tor_t, target=250, colors=colors_for(tor_p, 4), components=4)
+
+
+def grid_seeds(s):
+    """Open grids: flat, waved, with controls, scales, grey and unnamed colours, mixed
+    orientation."""
+    ico_p, ico_t = icosphere(1)
     g_p, g_t = grid(8, 8, flat=True)
     s["flat_grid"] = encode(g_p, g_t, colors=colors_for(g_p))
     s["flat_grid_preserve_boundary"] = encode(g_p, g_t, preserve=True, target=250,
@@ -209,6 +218,12 @@ def seeds():
     s["mixed_orientation"] = encode(w_p, mixed, colors=colors_for(w_p))
     s["mixed_orientation_consistent"] = encode(w_p, mixed, colors=colors_for(w_p), controls=0,
                                                more_controls=1)
+
+
+def non_manifold_seeds(s):
+    """Bow-tie, fin, duplicates, soups, zero areas, isolated points."""
+    tet_p, _ = TETRAHEDRON
+    g_p, g_t = grid(8, 8, flat=True)
     # Bow-tie: two fans sharing their centre.
     bow_p = [(0, 0, 0)] + [(2 * math.cos(a), 2 * math.sin(a), 0.5)
                            for a in [k * math.pi / 6 for k in range(12)]]
@@ -241,6 +256,10 @@ def seeds():
     s["zero_area_row"] = encode(z_p, g_t, colors=colors_for(z_p))
     s["isolated_points"] = encode(g_p + [(1, 1, 5), (-3, 2, -5)], g_t,
                                   colors=colors_for(g_p + [(1, 1, 5), (-3, 2, -5)]))
+
+
+def cell_kind_seeds(s):
+    """Polygons, strips, vertex and line cells."""
     # Polygons and strips.
     q_p, _ = grid(4, 4)
     quads = [(j * 5 + i, j * 5 + i + 1, j * 5 + i + 6, j * 5 + i + 5)
@@ -251,6 +270,14 @@ def seeds():
                                       colors=colors_for(q_p))
     s["lines_and_verts_only"] = encode(q_p, [], verts=[(0,), (1, 2)], lines=[(3, 4, 5, 6)],
                                        colors=colors_for(q_p))
+
+
+def bad_input_seeds(s):
+    """NaN and infinite points, ids out of range, colour arrays of the wrong length or place,
+    every colour type, ghosts."""
+    tet_p, tet_t = TETRAHEDRON
+    ico_p, ico_t = icosphere(1)
+    w_p, w_t = grid(10, 8)
     # Errors.
     s["nan_point"] = encode(tet_p[:3] + [(NAN_CODE, 0, 0)], tet_t, colors=colors_for(tet_p))
     s["inf_point_float"] = encode([(INF_CODE, 0, 0)] + tet_p[1:], tet_t, colors=colors_for(tet_p))
@@ -277,6 +304,13 @@ def seeds():
     s["ghosts"] = encode(w_p, w_t, cell_ghosts=[1 if k % 11 == 0 else 0 for k in range(len(w_t))],
                          point_ghosts=[1 if k % 13 == 0 else 0 for k in range(len(w_p))],
                          colors=colors_for(w_p))
+
+
+def seeds():
+    s = {}
+    for group in (closed_seeds, grid_seeds, non_manifold_seeds, cell_kind_seeds,
+                  bad_input_seeds):
+        group(s)
     return s
 
 
