@@ -13,6 +13,7 @@
 //   --write-baseline F   write the picture to F and compare nothing (refresh baselines)
 #include "ColorDecimationFidelity.h"
 #include "ColorDecimationRenderingScenes.h"
+#include "CommandLine.h"
 
 #include "vtkActor2D.h"
 #include "vtkCellArray.h"
@@ -27,7 +28,6 @@
 #include "vtkRendererCollection.h"
 
 #include <cstdlib>
-#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -61,57 +61,39 @@ void PaintRectangle(vtkRenderWindow* window)
   renderer->AddActor2D(actor);
 }
 
-std::string ArgumentAfter(int argc, char* argv[], const char* flag)
-{
-  for (int i = 1; i + 1 < argc; ++i)
-  {
-    if (std::strcmp(argv[i], flag) == 0)
-    {
-      return argv[i + 1];
-    }
-  }
-  return std::string();
-}
-
-/// The command line after the scene.
+/// The command line: the scene, the options, and vtkTesting's -V and -T.
 struct Arguments
 {
-  double Reduction = 0.0;
+  std::string Scene;
+  double Reduction = -1;   ///< -1: the scene's own
   double Threshold = 0.15; // vtkRegressionTestImage's own default
   bool Tamper = false;
   bool ExpectMismatch = false;
   std::string WriteBaseline;
+  std::string Baseline;  ///< -V, read by vtkTesting too
+  std::string Temporary; ///< -T, read by vtkTesting too
 };
 
-Arguments ParseArguments(int argc, char* argv[], double reduction)
+/// Parses the command line (CLI11); -1 to go on, otherwise the exit status.
+int ParseArguments(int argc, char* argv[], Arguments& args)
 {
-  Arguments args;
-  args.Reduction = reduction;
-  for (int i = 2; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if (arg == "--reduction" && i + 1 < argc)
-    {
-      args.Reduction = std::atof(argv[++i]);
-    }
-    else if (arg == "--threshold" && i + 1 < argc)
-    {
-      args.Threshold = std::atof(argv[++i]);
-    }
-    else if (arg == "--tamper")
-    {
-      args.Tamper = true;
-    }
-    else if (arg == "--expect-mismatch")
-    {
-      args.ExpectMismatch = true;
-    }
-    else if (arg == "--write-baseline" && i + 1 < argc)
-    {
-      args.WriteBaseline = argv[++i];
-    }
-  }
-  return args;
+  namespace tools = colordecimation::tools;
+  CLI::App app("Renders a decimated scene and compares it with its baseline (vtkTesting).",
+               "TestColorDecimationRendering");
+  tools::SetUpCommandLine(app,
+                          "Usage: TestColorDecimationRendering SCENE [options] -V "
+                          "BASELINE.png -T TEMPDIR");
+  app.add_option("SCENE", args.Scene, "the scene's name")->required();
+  tools::AddNumber(app, "--reduction", args.Reduction, 0.0, 1.0,
+                   tools::BadValueComplaint("--reduction"), "another reduction than the scene's");
+  tools::AddNumber(app, "--threshold", args.Threshold, 0.0, 1e9,
+                   tools::BadValueComplaint("--threshold"), "vtkTesting's image error threshold");
+  app.add_flag("--tamper", args.Tamper, "paint a rectangle over the picture");
+  app.add_flag("--expect-mismatch", args.ExpectMismatch, "pass only if the comparison fails");
+  app.add_option("--write-baseline", args.WriteBaseline, "write the picture as this baseline");
+  app.add_option("-V", args.Baseline, "the baseline picture");
+  app.add_option("-T", args.Temporary, "the folder of the test's pictures");
+  return tools::ParseCommandLine(app, argc, argv, EXIT_FAILURE);
 }
 
 /// The window's picture written as the baseline `path`.
@@ -126,11 +108,10 @@ int WriteBaseline(vtkRenderWindow* window, const std::string& path)
 /// comparison failed.
 int CompareWithBaseline(int argc, char* argv[], vtkRenderWindow* window, const Arguments& args)
 {
-  const std::string baseline = ArgumentAfter(argc, argv, "-V");
-  if (baseline.empty() || !std::ifstream(baseline).good())
+  if (args.Baseline.empty() || !std::ifstream(args.Baseline).good())
   {
     // Without a baseline vtkTesting fails too: an expected mismatch must not pass so.
-    std::cerr << "missing baseline (-V): '" << baseline << "'\n";
+    std::cerr << "missing baseline (-V): '" << args.Baseline << "'\n";
     return EXIT_FAILURE;
   }
   const int result = vtkRegressionTestImageThreshold(window, args.Threshold);
@@ -152,18 +133,22 @@ int CompareWithBaseline(int argc, char* argv[], vtkRenderWindow* window, const A
 int main(int argc, char* argv[])
 {
   namespace cr = colordecimation::rendering;
-  if (argc < 2)
+  Arguments args;
+  const int status = ParseArguments(argc, argv, args);
+  if (status >= 0)
   {
-    std::cerr << "usage: " << argv[0] << " SCENE [options] -V BASELINE.png -T TEMPDIR\n";
-    return EXIT_FAILURE;
+    return status;
   }
-  const cr::Scene* scene = cr::FindScene(argv[1]);
+  const cr::Scene* scene = cr::FindScene(args.Scene);
   if (!scene)
   {
-    std::cerr << "unknown scene " << argv[1] << "\n";
+    std::cerr << "unknown scene " << args.Scene << "\n";
     return EXIT_FAILURE;
   }
-  const Arguments args = ParseArguments(argc, argv, scene->Reduction);
+  if (args.Reduction < 0)
+  {
+    args.Reduction = scene->Reduction;
+  }
   auto input = cr::MakeInput(*scene);
   auto output = cr::Decimate(input, args.Reduction);
   const double actual =
