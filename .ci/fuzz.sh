@@ -20,13 +20,9 @@ seconds=${FUZZ_SECONDS:-120}
 
 if ! command -v clang++ > /dev/null || ! echo 'int main(){}' |
     clang++ -x c++ -fsanitize=fuzzer-no-link,address -o /dev/null - 2> /dev/null; then
-  if [ "$(id -u)" = 0 ] && command -v apt-get > /dev/null; then
-    echo "== fuzz: installing clang and libclang-rt-14-dev"
-    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq clang libclang-rt-14-dev
-  else
-    echo "fuzz.sh needs clang++ with libFuzzer (apt-get install clang libclang-rt-14-dev)" >&2
-    exit 1
-  fi
+  echo "== fuzz: installing clang and libclang-rt-14-dev"
+  . "$root/scripts/lib.sh"
+  ensure_packages clang libclang-rt-14-dev
 fi
 
 echo "== fuzz: configure $build"
@@ -44,7 +40,7 @@ export ASAN_OPTIONS="detect_leaks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 echo "== fuzz: replay the seeds and the regressions (Clang + ASan + UBSan)"
 replay=0
-ctest --test-dir "$build" --output-on-failure -L fuzz || replay=1
+ctest --test-dir "$build" --output-on-failure -L fuzz --no-tests=error || replay=1
 
 corpus="$build/fuzz-corpus"
 artifacts="$build/fuzz-artifacts"

@@ -26,13 +26,9 @@ fi
 jobs=${JOBS:-2}
 
 if ! command -v valgrind > /dev/null; then
-  if [ "$(id -u)" = 0 ] && command -v apt-get > /dev/null; then
-    echo "== valgrind: installing valgrind"
-    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq valgrind
-  else
-    echo "valgrind.sh needs valgrind (apt-get install valgrind)" >&2
-    exit 1
-  fi
+  echo "== valgrind: installing valgrind"
+  . "$root/scripts/lib.sh"
+  ensure_packages valgrind
 fi
 
 if [ ! -f "$build/CMakeCache.txt" ]; then

@@ -78,7 +78,7 @@ PY
 # The slider: the level filter updated for each level in one process (first update excluded).
 # The wrapping is where the flavour installs it: python3/dist-packages (VTK 9.1) or
 # python3.X/site-packages (ParaView 5.11's VTK 9.2).
-site=$(ls -d "$build"/lib/python3*/*-packages 2>/dev/null | head -1)
+site=$(ls -d "$build"/lib/python3*/*-packages 2>/dev/null | head -1 || true)
 if [ "${mesh##*.}" = ply ] && [ -n "$site" ] && [ -d "$site/colordecimation" ]; then
   PYTHONPATH="$site${PYTHONPATH:+:$PYTHONPATH}" /usr/bin/python3 - "$mesh" "$levels" <<'PY'
 import statistics, sys, time

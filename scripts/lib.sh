@@ -51,12 +51,18 @@ ensure_packages() {
     return 0
   fi
   echo "== apt-get install: ${missing//$'\n'/ } ${present_removals[*]}"
-  export DEBIAN_FRONTEND=noninteractive
   # Refresh the package lists when they are absent or older than a day.
   if [ -z "$(find /var/lib/apt/lists -maxdepth 1 -name '*_Packages*' -mmin -1440 2>/dev/null | head -1)" ]; then
-    as_root apt-get update -q
+    apt_get update -q
   fi
-  as_root apt-get install -y -q "${install[@]}" "${present_removals[@]}"
+  apt_get install -y -q "${install[@]}" "${present_removals[@]}"
+}
+
+# apt_get ARGS...: apt-get as root, never prompting (also through sudo, which drops the
+# environment), waiting up to 10 minutes for another apt or dpkg (a fresh machine's own
+# updates) to finish.
+apt_get() {
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 "$@"
 }
 
 # ensure_flavour vtk|paraview

@@ -21,16 +21,22 @@ if [ -z "$flavour" ]; then
   [ "$flavour" = none ] && flavour=vtk
 fi
 if [ "$flavour" = both ]; then
-  "$0" --flavour vtk "$@"
-  "$0" --flavour paraview "$@"
+  scripts/test.sh --flavour vtk "$@"
+  scripts/test.sh --flavour paraview "$@"
   exit 0
 fi
 
 ensure_flavour "$flavour"
 # The benchmarks' meshoptimizer 1.3 (WebAssembly): the pinned npm package, when node and npm
-# are there and it is not installed yet; if npm fails (no registry), its tests are skipped.
-if command -v node >/dev/null && command -v npm >/dev/null &&
-  [ ! -d Tools/MeshOptimizerJS/node_modules/meshoptimizer ]; then
+# are there and it is not installed yet (or another version is); if npm fails (no registry),
+# its tests are skipped.
+pinned_meshoptimizer() {
+  node -e 'const d = "./Tools/MeshOptimizerJS/";
+    const want = require(d + "package.json").dependencies.meshoptimizer;
+    process.exit(require(d + "node_modules/meshoptimizer/package.json").version === want ? 0 : 1)' \
+    2>/dev/null
+}
+if command -v node >/dev/null && command -v npm >/dev/null && ! pinned_meshoptimizer; then
   npm ci --prefix Tools/MeshOptimizerJS --no-audit --no-fund --fetch-retries=1 \
     --fetch-timeout=60000 ||
     echo "== npm ci failed: the meshoptimizer 1.3 (WebAssembly) tests will be skipped"
