@@ -11,7 +11,7 @@
 # $BUILD_DIR/fuzz-corpus/. A failing input is written to $BUILD_DIR/fuzz-artifacts/; commit it
 # to Testing/Fuzz/regressions/ (a ctest test replays every file there, in every build).
 # Needs clang and libclang-rt-14-dev (Debian 12); installed here with apt-get when missing
-# and running as root.
+# (scripts/lib.sh: as root, or through sudo).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${BUILD_DIR:-$root/build-fuzz}

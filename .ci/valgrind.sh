@@ -9,7 +9,8 @@
 #                                     else build in build-valgrind/ (RelWithDebInfo)
 #   BUILD_DIR=build .ci/valgrind.sh   use that (non-sanitizer) build tree
 #
-# Needs valgrind (installed here with apt-get when missing and running as root).
+# Needs valgrind (installed here with apt-get when missing: scripts/lib.sh, as root or through
+# sudo).
 # Takes about 5 s under valgrind, plus about 1 minute on 2 cores when it builds its own tree.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

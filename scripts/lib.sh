@@ -1,5 +1,6 @@
-# Shared by scripts/demo.sh and scripts/test.sh: Debian 12 packages for each VTK flavour,
-# installed with apt-get when missing (as root, or through sudo).
+# Shared by scripts/demo.sh, scripts/test.sh and the CI jobs in .ci/: Debian 12 packages for
+# each VTK flavour (and the CI jobs' own), installed with apt-get when missing (as root, or
+# through sudo).
 #
 # The two flavours cannot be installed together (python3-paraview conflicts with python3-vtk9,
 # which libvtk9-dev needs); installing one removes the other.
