@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Formatting: every tracked C and C++ file as .clang-format (VTK's style) has it, by Debian 12's
+# clang-format 14; fails listing the files that differ (fix them with
+# `clang-format -i FILE...`). Python and CMake files are not checked.
+#
+# Needs clang-format (installed here with apt-get when missing: scripts/lib.sh, as root or
+# through sudo). Takes a few seconds.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$root"
+
+if ! command -v clang-format > /dev/null; then
+  echo "== format: installing clang-format"
+  . "$root/scripts/lib.sh"
+  ensure_packages clang-format
+fi
+
+mapfile -t files < <(git ls-files '*.h' '*.hpp' '*.c' '*.cxx' '*.cpp' '*.txx')
+if [ "${#files[@]}" -eq 0 ]; then
+  echo "== format: no C or C++ files found (not a git checkout?)" >&2
+  exit 1
+fi
+unformatted=()
+for f in "${files[@]}"; do
+  if ! clang-format --style=file --dry-run --Werror "$f" > /dev/null 2>&1; then
+    unformatted+=("$f")
+  fi
+done
+echo "== format: $(clang-format --version | head -1); ${#files[@]} files checked"
+if [ "${#unformatted[@]}" -ne 0 ]; then
+  echo "== format: ${#unformatted[@]} files differ from .clang-format:" >&2
+  printf '   %s\n' "${unformatted[@]}" >&2
+  exit 1
+fi
