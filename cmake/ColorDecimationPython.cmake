@@ -67,7 +67,8 @@ vtk_module_wrap_python(
 set(_colordecimation_python_init
   "${CMAKE_BINARY_DIR}/${COLORDECIMATION_PYTHON_DESTINATION}/colordecimation/__init__.py")
 file(WRITE "${_colordecimation_python_init}"
-"\"\"\"Colour-aware mesh decimation for VTK (Kim, Choi and Lee's half-edge collapse metric).
+"\"\"\"Colour-aware mesh decimation for VTK by half-edge collapses (by default Hoppe's
+attribute quadric; SetPaperDefaults() gives Kim, Choi and Lee's method).
 
     from colordecimation import vtkColorHalfEdgeDecimation
 

@@ -40,6 +40,8 @@ enum class CollapseSchedule
 /// fifth, the collapses the rest); returning false aborts the run.
 using ProgressFunction = std::function<bool(double)>;
 
+/// The core's options. Their defaults are the paper's method (section 4); the VTK filter sets
+/// every one from its own properties, whose defaults differ (docs/ALGORITHM.md, section 13).
 struct DecimatorOptions
 {
   ErrorMetric Metric = ErrorMetric::HalfEdgeColor;
@@ -48,7 +50,7 @@ struct DecimatorOptions
   double GeometryWeight = 1.0;      ///< w in Q' = w Q (section 2); not ColorQuadric
   /// Where colour is measured (every colour term of every metric; section 8).
   ColorSpace Space = ColorSpace::RGB;
-  /// ColorQuadric: the colour coordinates of R^6 are multiplied by this weight.
+  /// ColorQuadric and AttributeQuadric: the colour coordinates are multiplied by this weight.
   double ColorWeight = 1.0;
   /// AttributeQuadric: the weight, in the cost of v0 -> v1, of the error v1 holds already (its
   /// quadric's constant; section 12). 1: the total error (Q0 + Q1)(x1); 0: the error the
