@@ -22,6 +22,8 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -35,6 +37,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 using namespace colordecimation;
 using namespace colordecimation::testing;
@@ -791,6 +794,66 @@ CD_TEST_CASE(ParallelForException)
     badAlloc = true;
   }
   CD_CHECK(badAlloc);
+}
+
+CD_TEST_CASE(ParallelForChunks)
+{
+  // Every item in exactly one chunk, chunks of at most `chunk` items inside one thread's range
+  // (ParallelFor's), on 1 to 4 threads, for counts and chunks around each other.
+  for (const size_t count :
+       { size_t(0), size_t(1), size_t(5), size_t(2047), size_t(2049), size_t(10000) })
+  {
+    for (const int threads : { 1, 2, 3, 4 })
+    {
+      for (const size_t chunk : { size_t(1), size_t(7), size_t(2048), size_t(100000) })
+      {
+        std::vector<std::atomic<int>> seen(count);
+        std::atomic<int> bad(0);
+        std::atomic<int>* s = seen.data();
+        std::atomic<int>* b = &bad;
+        ParallelForChunks(count, threads, chunk,
+                          [s, b, count, threads, chunk](size_t begin, size_t end, int t)
+                          {
+                            const auto range = [count, threads](size_t i)
+                            {
+                              int u = 0; // ParallelFor's u-th range holds i
+                              while (count * size_t(u + 1) / size_t(threads) <= i)
+                              {
+                                ++u;
+                              }
+                              return u;
+                            };
+                            const bool inside = begin < end && end <= count &&
+                              end - begin <= chunk && t >= 0 && t < threads &&
+                              (threads == 1 || range(begin) == range(end - 1));
+                            b->fetch_add(inside ? 0 : 1);
+                            for (size_t i = begin; i < end && end <= count; ++i)
+                            {
+                              s[i].fetch_add(1);
+                            }
+                          });
+        CD_CHECK_MSG(bad.load() == 0 &&
+                       std::all_of(seen.begin(), seen.end(),
+                                   [](const std::atomic<int>& n) { return n.load() == 1; }),
+                     "count " << count << " threads " << threads << " chunk " << chunk);
+      }
+    }
+  }
+  // A thread held up in its first chunk: the other runs the rest of its range.
+  std::vector<int> ranBy(64, -1);
+  int* r = ranBy.data();
+  ParallelForChunks(size_t(64), 2, size_t(1),
+                    [r](size_t begin, size_t, int t)
+                    {
+                      if (begin == 0)
+                      {
+                        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+                      }
+                      r[begin] = t;
+                    });
+  CD_CHECK_MSG(std::count(ranBy.begin(), ranBy.begin() + 32, 1) > 0,
+               "the second thread took none of the first range's chunks");
+  CD_CHECK(std::count(ranBy.begin(), ranBy.end(), -1) == 0);
 }
 
 CD_TEST_CASE(CollectInOrder)

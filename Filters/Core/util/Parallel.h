@@ -13,6 +13,7 @@
 #include "util/Buffer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
@@ -93,6 +94,54 @@ void ParallelFor(size_t count, int threads, Body&& body)
       std::rethrow_exception(e);
     }
   }
+}
+
+/**
+ * Call body(begin, end, t) for chunks [begin, end) of up to `chunk` items covering [0, count),
+ * on `threads` threads (t: the thread, 0 .. threads - 1). Each thread runs the chunks of its own
+ * contiguous range (ParallelFor's) in order, then takes the chunks left in the others' ranges:
+ * for loops whose items are independent (where an item runs does not change what it gives),
+ * so that a thread the machine slows down does not hold up the others, while each thread still
+ * works through neighbouring items. Exceptions as ParallelFor's.
+ */
+template <typename Body>
+void ParallelForChunks(size_t count, int threads, size_t chunk, const Body& body)
+{
+  chunk = std::max<size_t>(chunk, 1);
+  threads = std::max(threads, 1);
+  if (threads == 1)
+  {
+    for (size_t begin = 0; begin < count; begin += chunk)
+    {
+      body(begin, std::min(begin + chunk, count), 0);
+    }
+    return;
+  }
+  struct alignas(64) Range
+  {
+    std::atomic<size_t> Next;
+    size_t End;
+  };
+  std::vector<Range> ranges(static_cast<size_t>(threads));
+  for (int t = 0; t < threads; ++t)
+  {
+    ranges[t].Next.store(count * t / threads);
+    ranges[t].End = count * (t + 1) / threads;
+  }
+  Range* range = ranges.data();
+  ParallelFor(size_t(threads), threads,
+              [range, threads, chunk, body](size_t, size_t, int t)
+              {
+                for (int k = 0; k < threads; ++k)
+                {
+                  Range& r = range[(t + k) % threads];
+                  for (size_t begin = r.Next.fetch_add(chunk); begin < r.End;
+                       begin = r.Next.fetch_add(chunk))
+                  {
+                    body(begin, std::min(begin + chunk, r.End), t);
+                  }
+                }
+              });
 }
 
 /**
