@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Formatting: every tracked C and C++ file as .clang-format (VTK's style) has it, by Debian 12's
 # clang-format 14; fails listing the files that differ (fix them with
-# `clang-format -i FILE...`). Python and CMake files are not checked.
+# `clang-format -i FILE...`; the first lines of each difference are printed). Python and CMake
+# files are not checked.
 #
 # Needs clang-format (installed here with apt-get when missing: scripts/lib.sh, as root or
 # through sudo). Takes a few seconds.
@@ -9,11 +10,17 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 
-if ! command -v clang-format > /dev/null; then
+# Debian 12's clang-format is version 14; another version formats some constructs otherwise.
+if ! command -v clang-format-14 > /dev/null && ! command -v clang-format > /dev/null; then
   echo "== format: installing clang-format"
   . "$root/scripts/lib.sh"
   ensure_packages clang-format
 fi
+format=$(command -v clang-format-14 || command -v clang-format)
+case "$("$format" --version)" in
+  *" 14."*) ;;
+  *) echo "== format: warning: $("$format" --version | head -1) is not version 14" >&2 ;;
+esac
 
 mapfile -t files < <(git ls-files '*.h' '*.hpp' '*.c' '*.cxx' '*.cpp' '*.txx')
 if [ "${#files[@]}" -eq 0 ]; then
@@ -22,13 +29,14 @@ if [ "${#files[@]}" -eq 0 ]; then
 fi
 unformatted=()
 for f in "${files[@]}"; do
-  if ! clang-format --style=file --dry-run --Werror "$f" > /dev/null 2>&1; then
+  if ! report=$("$format" --style=file --dry-run --Werror "$f" 2>&1); then
     unformatted+=("$f")
+    printf '%s\n' "$report" | sed -n '1,6p' >&2 # the first difference, or why it failed
   fi
 done
-echo "== format: $(clang-format --version | head -1); ${#files[@]} files checked"
+echo "== format: $("$format" --version | head -1); ${#files[@]} files checked"
 if [ "${#unformatted[@]}" -ne 0 ]; then
-  echo "== format: ${#unformatted[@]} files differ from .clang-format:" >&2
+  echo "== format: ${#unformatted[@]} files differ from .clang-format (or could not be read):" >&2
   printf '   %s\n' "${unformatted[@]}" >&2
   exit 1
 fi

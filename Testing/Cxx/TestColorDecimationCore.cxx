@@ -799,13 +799,15 @@ CD_TEST_CASE(ParallelForException)
 CD_TEST_CASE(ParallelForChunks)
 {
   // Every item in exactly one chunk, chunks of at most `chunk` items inside one thread's range
-  // (ParallelFor's), on 1 to 4 threads, for counts and chunks around each other.
+  // (ParallelFor's) on 2 to 4 threads, one call for all on one, for counts and chunks around
+  // each other (the largest chunk too).
   for (const size_t count :
        { size_t(0), size_t(1), size_t(5), size_t(2047), size_t(2049), size_t(10000) })
   {
     for (const int threads : { 1, 2, 3, 4 })
     {
-      for (const size_t chunk : { size_t(1), size_t(7), size_t(2048), size_t(100000) })
+      for (const size_t chunk :
+           { size_t(0), size_t(1), size_t(7), size_t(2048), std::numeric_limits<size_t>::max() })
       {
         std::vector<std::atomic<int>> seen(count);
         std::atomic<int> bad(0);
@@ -823,9 +825,10 @@ CD_TEST_CASE(ParallelForChunks)
                               }
                               return u;
                             };
-                            const bool inside = begin < end && end <= count &&
-                              end - begin <= chunk && t >= 0 && t < threads &&
-                              (threads == 1 || range(begin) == range(end - 1));
+                            const bool inside = threads == 1 ? begin == 0 && end == count && t == 0
+                                                             : begin < end && end <= count &&
+                                end - begin <= std::max<size_t>(chunk, 1) && t >= 0 &&
+                                t < threads && range(begin) == range(end - 1);
                             b->fetch_add(inside ? 0 : 1);
                             for (size_t i = begin; i < end && end <= count; ++i)
                             {
@@ -839,21 +842,61 @@ CD_TEST_CASE(ParallelForChunks)
       }
     }
   }
-  // A thread held up in its first chunk: the other runs the rest of its range.
+  // The thread that runs item 0 waits there until another thread has run an item of the first
+  // range (for 20 s at most): the other takes the rest of that range once its own is done.
   std::vector<int> ranBy(64, -1);
+  std::atomic<int> zeroRunner(-1);
+  std::atomic<bool> taken(false);
   int* r = ranBy.data();
+  std::atomic<int>* z = &zeroRunner;
+  std::atomic<bool>* k = &taken;
   ParallelForChunks(size_t(64), 2, size_t(1),
-                    [r](size_t begin, size_t, int t)
+                    [r, z, k](size_t begin, size_t, int t)
                     {
+                      r[begin] = t;
                       if (begin == 0)
                       {
-                        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+                        z->store(t);
+                        const auto start = std::chrono::steady_clock::now();
+                        while (!k->load() &&
+                               std::chrono::steady_clock::now() - start < std::chrono::seconds(20))
+                        {
+                          std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                        }
                       }
-                      r[begin] = t;
+                      else if (begin < 32 && t != z->load())
+                      {
+                        k->store(true);
+                      }
                     });
-  CD_CHECK_MSG(std::count(ranBy.begin(), ranBy.begin() + 32, 1) > 0,
-               "the second thread took none of the first range's chunks");
+  CD_CHECK_MSG(taken.load(), "no other thread took a chunk of the held-up thread's range");
   CD_CHECK(std::count(ranBy.begin(), ranBy.end(), -1) == 0);
+  // A body's exception reaches the caller; the other chunks still run, each once.
+  std::vector<std::atomic<int>> seen(1000);
+  std::atomic<int>* s = seen.data();
+  bool caught = false;
+  try
+  {
+    ParallelForChunks(seen.size(), 2, size_t(10),
+                      [s](size_t begin, size_t end, int)
+                      {
+                        for (size_t i = begin; i < end; ++i)
+                        {
+                          s[i].fetch_add(1);
+                        }
+                        if (begin == 500)
+                        {
+                          throw std::out_of_range("500");
+                        }
+                      });
+  }
+  catch (const std::out_of_range&)
+  {
+    caught = true;
+  }
+  CD_CHECK(
+    caught &&
+    std::all_of(seen.begin(), seen.end(), [](const std::atomic<int>& n) { return n.load() == 1; }));
 }
 
 CD_TEST_CASE(CollectInOrder)

@@ -98,25 +98,24 @@ void ParallelFor(size_t count, int threads, Body&& body)
 
 /**
  * Call body(begin, end, t) for chunks [begin, end) of up to `chunk` items covering [0, count),
- * on `threads` threads (t: the thread, 0 .. threads - 1). Each thread runs the chunks of its own
- * contiguous range (ParallelFor's) in order, then takes the chunks left in the others' ranges:
- * for loops whose items are independent (where an item runs does not change what it gives),
- * so that a thread the machine slows down does not hold up the others, while each thread still
- * works through neighbouring items. Exceptions as ParallelFor's.
+ * on `threads` threads (t: the thread, 0 .. threads - 1; on one thread, one call for all).
+ * Each thread runs the chunks of its own contiguous range (ParallelFor's) in order, then takes
+ * the chunks left in the others' ranges: for loops whose items are independent (where an item
+ * runs does not change what it gives), so that a thread the machine slows down does not hold up
+ * the others, while each thread still works through neighbouring items. An exception thrown by
+ * a body is thrown again on the calling thread once every thread has ended (the other threads
+ * run the chunks left, the thrower's too; of several, the lowest thread's).
  */
 template <typename Body>
 void ParallelForChunks(size_t count, int threads, size_t chunk, const Body& body)
 {
-  chunk = std::max<size_t>(chunk, 1);
   threads = std::max(threads, 1);
   if (threads == 1)
   {
-    for (size_t begin = 0; begin < count; begin += chunk)
-    {
-      body(begin, std::min(begin + chunk, count), 0);
-    }
+    body(size_t(0), count, 0);
     return;
   }
+  chunk = std::min(std::max<size_t>(chunk, 1), std::max<size_t>(count, 1)); // no wrap past End
   struct alignas(64) Range
   {
     std::atomic<size_t> Next;
