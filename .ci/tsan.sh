@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # ThreadSanitizer build of the module and its C++ tests, then the tests that decimate on
 # several threads (docs/RELIABILITY.md): the Batched schedule's blocks and re-costing passes,
-# and the initial costs of both schedules.
+# the initial costs of both schedules, and the parallel loops' own tests.
 #
 #   .ci/tsan.sh                       build in build-tsan/ and run the threaded tests
 #   BUILD_DIR=dir JOBS=n .ci/tsan.sh
@@ -25,4 +25,4 @@ cmake --build "$build" -j "$jobs" --target TestColorDecimationCore TestColorDeci
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
 echo "== tsan: ctest"
 ctest --test-dir "$build" -j 1 --output-on-failure --timeout 900 --no-tests=error \
-  -R "ThreadsSameResult|SmallPiecesOnThreads|CountingSort|BatchedOneAtATimeIsGreedy|InvariantsBatched|InvariantsLarge|Progress|Abort|LargeSeams" "$@"
+  -R "ThreadsSameResult|SmallPiecesOnThreads|CountingSort|BatchedOneAtATimeIsGreedy|InvariantsBatched|InvariantsLarge|Progress|Abort|LargeSeams|ParallelFor|CollectInOrder" "$@"
