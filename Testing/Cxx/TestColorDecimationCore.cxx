@@ -796,11 +796,12 @@ CD_TEST_CASE(ParallelForException)
   CD_CHECK(badAlloc);
 }
 
-CD_TEST_CASE(ParallelForChunks)
+//------------------------------------------------------------------------------
+/// ParallelForChunks: every item in exactly one chunk, chunks of at most `chunk` items inside
+/// one thread's range (ParallelFor's) on 2 to 4 threads, one call for all on one, for counts
+/// and chunks around each other (the largest chunk too).
+void CheckChunksCoverItemsOnce()
 {
-  // Every item in exactly one chunk, chunks of at most `chunk` items inside one thread's range
-  // (ParallelFor's) on 2 to 4 threads, one call for all on one, for counts and chunks around
-  // each other (the largest chunk too).
   for (const size_t count :
        { size_t(0), size_t(1), size_t(5), size_t(2047), size_t(2049), size_t(10000) })
   {
@@ -842,8 +843,12 @@ CD_TEST_CASE(ParallelForChunks)
       }
     }
   }
-  // The thread that runs item 0 waits there until another thread has run an item of the first
-  // range (for 20 s at most): the other takes the rest of that range once its own is done.
+}
+
+/// ParallelForChunks: the thread that runs item 0 waits there until another thread has run an
+/// item of the first range (for 20 s at most), which the other does once its own is done.
+void CheckChunksTakenFromHeldUpThread()
+{
   std::vector<int> ranBy(64, -1);
   std::atomic<int> zeroRunner(-1);
   std::atomic<bool> taken(false);
@@ -871,7 +876,12 @@ CD_TEST_CASE(ParallelForChunks)
                     });
   CD_CHECK_MSG(taken.load(), "no other thread took a chunk of the held-up thread's range");
   CD_CHECK(std::count(ranBy.begin(), ranBy.end(), -1) == 0);
-  // A body's exception reaches the caller; the other chunks still run, each once.
+}
+
+/// ParallelForChunks: a body's exception reaches the caller; the other chunks still run, each
+/// once.
+void CheckChunksAfterException()
+{
   std::vector<std::atomic<int>> seen(1000);
   std::atomic<int>* s = seen.data();
   bool caught = false;
@@ -897,6 +907,13 @@ CD_TEST_CASE(ParallelForChunks)
   CD_CHECK(
     caught &&
     std::all_of(seen.begin(), seen.end(), [](const std::atomic<int>& n) { return n.load() == 1; }));
+}
+
+CD_TEST_CASE(ParallelForChunks)
+{
+  CheckChunksCoverItemsOnce();
+  CheckChunksTakenFromHeldUpThread();
+  CheckChunksAfterException();
 }
 
 CD_TEST_CASE(CollectInOrder)
