@@ -17,9 +17,10 @@ if ! command -v clang-format-14 > /dev/null && ! command -v clang-format > /dev/
   ensure_packages clang-format
 fi
 format=$(command -v clang-format-14 || command -v clang-format)
-case "$("$format" --version)" in
+version=$("$format" --version | sed -n '1p')
+case "$version" in
   *" 14."*) ;;
-  *) echo "== format: warning: $("$format" --version | head -1) is not version 14" >&2 ;;
+  *) echo "== format: warning: $version is not version 14" >&2 ;;
 esac
 
 mapfile -t files < <(git ls-files '*.h' '*.hpp' '*.c' '*.cxx' '*.cpp' '*.txx')
@@ -34,7 +35,7 @@ for f in "${files[@]}"; do
     printf '%s\n' "$report" | sed -n '1,6p' >&2 # the first difference, or why it failed
   fi
 done
-echo "== format: $("$format" --version | head -1); ${#files[@]} files checked"
+echo "== format: $version; ${#files[@]} files checked"
 if [ "${#unformatted[@]}" -ne 0 ]; then
   echo "== format: ${#unformatted[@]} files differ from .clang-format (or could not be read):" >&2
   printf '   %s\n' "${unformatted[@]}" >&2
