@@ -7,7 +7,6 @@
 #include "schedule/Selection.h"
 #include "util/Buffer.h"
 
-#include <atomic>
 #include <cmath>
 #include <numeric>
 
@@ -289,7 +288,6 @@ template <typename Metric>
 void BatchedSchedule<Metric>::CollapseLevel(const BlockLevel& level, int32_t pass)
 {
   const int32_t blocks = static_cast<int32_t>(this->BlockStart.size()) - 1;
-  std::atomic<int32_t> nextBlock(0);
   // A thread is worth it for some thousands of candidates only; either way the blocks are
   // the same, and so is the result.
   const int threads = this->E.ThreadCount(CandidateWork * this->Batch.size());
@@ -303,17 +301,19 @@ void BatchedSchedule<Metric>::CollapseLevel(const BlockLevel& level, int32_t pas
   {
     lane.ClearPass();
   }
-  // One call per thread (the ranges are unused): the threads take the blocks in turn.
-  ParallelFor(size_t(threads), threads,
-              [this, &nextBlock, blocks, level, pass](size_t, size_t, int t)
-              {
-                for (int32_t block = nextBlock++; block < blocks; block = nextBlock++)
-                {
-                  this->CollapseBlock(this->Batch.data() + this->BlockStart[block],
-                                      this->Batch.data() + this->BlockStart[block + 1], block,
-                                      level, pass, this->E.GetWorkspace(t), this->Lanes[t]);
-                }
-              });
+  // Each thread collapses its own run of neighbouring blocks, then takes those left in the
+  // others' runs (the blocks are independent: where one runs does not change what it gives).
+  ParallelForChunks(size_t(blocks), threads, 1,
+                    [this, &level, pass](size_t begin, size_t end, int t)
+                    {
+                      for (auto block = static_cast<int32_t>(begin);
+                           block < static_cast<int32_t>(end); ++block)
+                      {
+                        this->CollapseBlock(this->Batch.data() + this->BlockStart[block],
+                                            this->Batch.data() + this->BlockStart[block + 1], block,
+                                            level, pass, this->E.GetWorkspace(t), this->Lanes[t]);
+                      }
+                    });
 }
 
 template <typename Metric>
