@@ -228,8 +228,9 @@ void AddInputOptions(CLI::App& app, Options& options)
     ->type_name("");
   app
     .add_option("OUTPUT", options.Output,
-                "a .ply (binary, colours as uchar red/green/blue[/alpha]), .vtp\n"
-                "(binary, with every point array, including vtkOriginalPointIds) or\n"
+                "a .ply (binary, float coordinates as VTK writes them, so double-\n"
+                "precision points are rounded; colours as uchar red/green/blue[/alpha]),\n"
+                ".vtp (binary, with every point array, including vtkOriginalPointIds) or\n"
                 ".vtk (legacy binary) file")
     ->type_name("");
   app.add_flag("--demo", options.Demo, "INPUT is the built-in demo mesh (the same as demo:)");
@@ -1130,10 +1131,12 @@ void WarnUnreadSettings(vtkColorHalfEdgeDecimation* filter, const Options& optio
 }
 
 /// Levels come from the record, which holds neither the pieces PruneComponents removes after
-/// the collapses nor ConsistentOrientation's winding: those options would be ignored.
+/// the collapses nor ConsistentOrientation's winding: those options would be ignored. A record
+/// saved alone is still the run's, but the levels later taken from it lack them: said.
 int CheckLevelOptions(vtkColorHalfEdgeDecimation* filter, const Options& options)
 {
-  if (options.Levels.empty() && options.FromRecord.empty())
+  const bool levels = !options.Levels.empty() || !options.FromRecord.empty();
+  if (!levels && options.SaveRecord.empty())
   {
     return Continue;
   }
@@ -1141,12 +1144,18 @@ int CheckLevelOptions(vtkColorHalfEdgeDecimation* filter, const Options& options
        { std::make_pair(filter->GetPruneComponents() != 0, "--prune-components"),
          std::make_pair(filter->GetConsistentOrientation() != 0, "--consistent-orientation") })
   {
-    if (on)
+    if (on && levels)
     {
       return Fail(std::string("levels from a collapse record (--lod, --from-record) hold only "
                               "its collapses: not with ") +
                     name,
                   2);
+    }
+    if (on)
+    {
+      std::cerr << Program << ": warning: --save-record: the record holds the collapses only: "
+                << "the levels --from-record takes from it are without " << name
+                << " (OUTPUT has it)\n";
     }
   }
   return Continue;

@@ -161,8 +161,9 @@ std::string CheckCounts(const Checks& checks, long long points, long long triang
   return "";
 }
 
-/// --colors: unsigned char RGB(A), one per point, not all the same; "" when so.
-std::string CheckColors(vtkDataArray* colors, long long points)
+/// --colors: unsigned char RGB(A), one per point, not all the same (`varied`; --colors-from
+/// alone compares them with its reference's, which may have one colour); "" when so.
+std::string CheckColors(vtkDataArray* colors, long long points, bool varied)
 {
   if (!colors || !vtkUnsignedCharArray::SafeDownCast(colors) ||
       (colors->GetNumberOfComponents() != 3 && colors->GetNumberOfComponents() != 4))
@@ -172,6 +173,10 @@ std::string CheckColors(vtkDataArray* colors, long long points)
   if (colors->GetNumberOfTuples() != points)
   {
     return "the colour array does not have one colour per point";
+  }
+  if (!varied)
+  {
+    return "";
   }
   std::set<Colour> distinct;
   for (vtkIdType i = 0; i < points && distinct.size() < 2; ++i)
@@ -263,7 +268,7 @@ int Check(const Checks& checks)
   std::string wrong = CheckCounts(checks, points, triangles);
   if (wrong.empty() && (checks.Colors || !checks.Reference.empty()))
   {
-    wrong = CheckColors(colors, points);
+    wrong = CheckColors(colors, points, checks.Colors);
   }
   if (!wrong.empty())
   {
