@@ -304,7 +304,7 @@ void BatchedSchedule<Metric>::CollapseLevel(const BlockLevel& level, int32_t pas
   // Each thread collapses its own run of neighbouring blocks, then takes those left in the
   // others' runs (the blocks are independent: where one runs does not change what it gives).
   ParallelForChunks(size_t(blocks), threads, 1,
-                    [this, &level, pass](size_t begin, size_t end, int t)
+                    [this, level, pass](size_t begin, size_t end, int t)
                     {
                       for (auto block = static_cast<int32_t>(begin);
                            block < static_cast<int32_t>(end); ++block)
