@@ -879,6 +879,17 @@ std::string Ratio(const RunResult& quadric, const RunResult& run)
   return Format("%.1f", quadric.Seconds / run.Seconds);
 }
 
+/// The run's time divided by the reference's (two decimals), or "—" when either has none.
+std::string Share(const RunResult& run, const RunResult& reference)
+{
+  if (!reference.Ran || !run.Ran || reference.Seconds <= 0 || !reference.Error.empty() ||
+      !run.Error.empty())
+  {
+    return "—";
+  }
+  return Format("%.2f", run.Seconds / reference.Seconds);
+}
+
 /// The WebAssembly rows' whole calls, node's start included, or "".
 std::string RoundTripNote(const CaseResult& c)
 {
@@ -910,9 +921,12 @@ std::string CaseTable(const CaseResult& c, double reduction)
      << c.Description << ": " << WithThousands(c.Points) << " points, "
      << WithThousands(c.Triangles) << " triangles; target reduction " << Format("%g", reduction)
      << ".\n\n";
+  // The share of meshoptimizer's attribute mode, the peer to beat on speed, when it can run.
+  const bool share = MethodAvailable(MeshOptimizerJSAttributes);
   os << "| method | seconds | CPU seconds | output triangles | reduction | vtkQD attr on ÷ this | "
-        "vtkQD attr off ÷ this | peak memory (MiB) | decimation state (MiB) |\n"
-     << "|---|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+        "vtkQD attr off ÷ this | "
+     << (share ? "this ÷ meshopt attr | " : "") << "peak memory (MiB) | decimation state (MiB) |\n"
+     << "|---|--:|--:|--:|--:|--:|--:|" << (share ? "--:|" : "") << "--:|--:|\n";
   for (int m = 0; m < NumberOfMethods; ++m)
   {
     const RunResult& r = c.Runs[m];
@@ -924,13 +938,14 @@ std::string CaseTable(const CaseResult& c, double reduction)
        << (r.Note.empty() ? "" : " (cleaned input, see below)") << " | ";
     if (!r.Ran)
     {
-      os << r.Skipped << " | | | | | | | |\n";
+      os << r.Skipped << " | | | | | | | |" << (share ? " |" : "") << "\n";
       continue;
     }
     os << Format("%.3f", r.Seconds) << " | " << Format("%.3f", r.CpuSeconds) << " | "
        << WithThousands(r.OutputTriangles) << " | "
        << Format("%.4f", c.Triangles ? 1.0 - double(r.OutputTriangles) / c.Triangles : 0.0) << " | "
        << Ratio(c.Runs[QuadricAttributes], r) << " | " << Ratio(c.Runs[QuadricGeometry], r) << " | "
+       << (share ? Share(r, c.Runs[MeshOptimizerJSAttributes]) + " | " : std::string())
        << MiB(r.PeakBytes) << (r.PeakReset ? "" : " (process peak)") << " | "
        << (r.StateBytes >= 0 ? MiB(r.StateBytes) : std::string("—")) << " |\n";
   }
@@ -1343,6 +1358,11 @@ std::string Report(const Options& options, const std::vector<CaseResult>& cases,
         "- *vtkQD attr on ÷ this*, *vtkQD attr off ÷ this*: vtkQuadricDecimation's time "
         "(AttributeErrorMetric on with the colour array as the only attribute, resp. off) "
         "divided by the row's time: how many times faster the row is.\n"
+        "- *this ÷ meshopt attr* (when node and the package are there): the row's time divided "
+        "by that of meshoptimizer 1.3's `simplifyWithAttributes` (WebAssembly) in the same "
+        "run; below 1 the row is faster. The WebAssembly build is slower than the native "
+        "library, so against native meshoptimizer the share is larger (docs/BENCHMARK.md "
+        "measures both).\n"
         "- *peak memory*: before each run the heap is trimmed (`malloc_trim`), the resident "
         "size is read (VmRSS) and the high-water mark is reset (writing `5` to "
         "`/proc/self/clear_refs`); after the run, VmHWM minus that baseline. It counts what "
