@@ -870,24 +870,14 @@ LevelsResult RunLevels(const CaseResult& c, vtkPolyData* mesh, vtkPolyData* quad
 //------------------------------------------------------------------------------
 // Report.
 
-std::string Ratio(const RunResult& quadric, const RunResult& run)
+/// a's time divided by b's, printed with `format`, or "—" when either has no valid time.
+std::string TimeRatio(const RunResult& a, const RunResult& b, const char* format)
 {
-  if (!quadric.Ran || !run.Ran || run.Seconds <= 0 || !quadric.Error.empty() || !run.Error.empty())
+  if (!a.Ran || !b.Ran || b.Seconds <= 0 || !a.Error.empty() || !b.Error.empty())
   {
     return "—";
   }
-  return Format("%.1f", quadric.Seconds / run.Seconds);
-}
-
-/// The run's time divided by the reference's (two decimals), or "—" when either has none.
-std::string Share(const RunResult& run, const RunResult& reference)
-{
-  if (!reference.Ran || !run.Ran || reference.Seconds <= 0 || !reference.Error.empty() ||
-      !run.Error.empty())
-  {
-    return "—";
-  }
-  return Format("%.2f", run.Seconds / reference.Seconds);
+  return Format(format, a.Seconds / b.Seconds);
 }
 
 /// The WebAssembly rows' whole calls, node's start included, or "".
@@ -944,8 +934,9 @@ std::string CaseTable(const CaseResult& c, double reduction)
     os << Format("%.3f", r.Seconds) << " | " << Format("%.3f", r.CpuSeconds) << " | "
        << WithThousands(r.OutputTriangles) << " | "
        << Format("%.4f", c.Triangles ? 1.0 - double(r.OutputTriangles) / c.Triangles : 0.0) << " | "
-       << Ratio(c.Runs[QuadricAttributes], r) << " | " << Ratio(c.Runs[QuadricGeometry], r) << " | "
-       << (share ? Share(r, c.Runs[MeshOptimizerJSAttributes]) + " | " : std::string())
+       << TimeRatio(c.Runs[QuadricAttributes], r, "%.1f") << " | "
+       << TimeRatio(c.Runs[QuadricGeometry], r, "%.1f") << " | "
+       << (share ? TimeRatio(r, c.Runs[MeshOptimizerJSAttributes], "%.2f") + " | " : std::string())
        << MiB(r.PeakBytes) << (r.PeakReset ? "" : " (process peak)") << " | "
        << (r.StateBytes >= 0 ? MiB(r.StateBytes) : std::string("—")) << " |\n";
   }
