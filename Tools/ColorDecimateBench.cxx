@@ -911,12 +911,14 @@ std::string CaseTable(const CaseResult& c, double reduction)
      << c.Description << ": " << WithThousands(c.Points) << " points, "
      << WithThousands(c.Triangles) << " triangles; target reduction " << Format("%g", reduction)
      << ".\n\n";
-  // The share of meshoptimizer's attribute mode, the peer to beat on speed, when it can run.
-  const bool share = MethodAvailable(MeshOptimizerJSAttributes);
+  // Each row's time over meshoptimizer's attribute mode's, the peer to beat on speed, when
+  // that can run.
+  const bool againstMeshopt = MethodAvailable(MeshOptimizerJSAttributes);
   os << "| method | seconds | CPU seconds | output triangles | reduction | vtkQD attr on ÷ this | "
         "vtkQD attr off ÷ this | "
-     << (share ? "this ÷ meshopt attr | " : "") << "peak memory (MiB) | decimation state (MiB) |\n"
-     << "|---|--:|--:|--:|--:|--:|--:|" << (share ? "--:|" : "") << "--:|--:|\n";
+     << (againstMeshopt ? "this ÷ meshopt attr | " : "")
+     << "peak memory (MiB) | decimation state (MiB) |\n"
+     << "|---|--:|--:|--:|--:|--:|--:|" << (againstMeshopt ? "--:|" : "") << "--:|--:|\n";
   for (int m = 0; m < NumberOfMethods; ++m)
   {
     const RunResult& r = c.Runs[m];
@@ -928,7 +930,7 @@ std::string CaseTable(const CaseResult& c, double reduction)
        << (r.Note.empty() ? "" : " (cleaned input, see below)") << " | ";
     if (!r.Ran)
     {
-      os << r.Skipped << " | | | | | | | |" << (share ? " |" : "") << "\n";
+      os << r.Skipped << " | | | | | | | |" << (againstMeshopt ? " |" : "") << "\n";
       continue;
     }
     os << Format("%.3f", r.Seconds) << " | " << Format("%.3f", r.CpuSeconds) << " | "
@@ -936,7 +938,8 @@ std::string CaseTable(const CaseResult& c, double reduction)
        << Format("%.4f", c.Triangles ? 1.0 - double(r.OutputTriangles) / c.Triangles : 0.0) << " | "
        << TimeRatio(c.Runs[QuadricAttributes], r, "%.1f") << " | "
        << TimeRatio(c.Runs[QuadricGeometry], r, "%.1f") << " | "
-       << (share ? TimeRatio(r, c.Runs[MeshOptimizerJSAttributes], "%.2f") + " | " : std::string())
+       << (againstMeshopt ? TimeRatio(r, c.Runs[MeshOptimizerJSAttributes], "%.2f") + " | "
+                          : std::string())
        << MiB(r.PeakBytes) << (r.PeakReset ? "" : " (process peak)") << " | "
        << (r.StateBytes >= 0 ? MiB(r.StateBytes) : std::string("—")) << " |\n";
   }
@@ -1323,54 +1326,61 @@ std::string LevelsSection(const Options& options, const std::vector<CaseResult>&
   return os.str();
 }
 
+/// The report's "What is measured" section: what each column and row means.
+std::string MeasuredSection()
+{
+  return "## What is measured\n\n"
+         "- Every method runs in this one process on the very same vtkPolyData (triangles; "
+         "polygons and strips would be triangulated once beforehand), one after the other.\n"
+         "- *seconds*: the filter's own wall-clock time, `Update()` only (reading and generating "
+         "the mesh are not counted). *CPU seconds*: the process's CPU time over the same span "
+         "(user + system, all threads); on a busy machine it is the steadier figure. For "
+         "meshoptimizer: copying the points to float and the ids to 32 "
+         "bits, then `meshopt_simplify` (target error 1, i.e. unbounded, so that it stops at "
+         "the triangle target; no vtkPolyData is built from its result).\n"
+         "- meshoptimizer 1.3 (WebAssembly): the npm package `meshoptimizer` (pinned in "
+         "Tools/MeshOptimizerJS), same algorithm as the native library, run by node (V8) with "
+         "the module compiled by the optimising compiler before the call, which "
+         "Tools/MeshOptimizerJS/simplify.mjs times inside node (`performance.now()`, "
+         "`process.cpuUsage()`); the colour as 3 attributes in [0,1] of weight 1, target error "
+         "FLT_MAX (the triangle target governs), LockBorder off; its peak memory is node's "
+         "(maxRSS above the RSS before the call). The whole call, node's start included, is "
+         "below each table.\n"
+         "- *vtkQD attr on ÷ this*, *vtkQD attr off ÷ this*: vtkQuadricDecimation's time "
+         "(AttributeErrorMetric on with the colour array as the only attribute, resp. off) "
+         "divided by the row's time: how many times faster the row is.\n"
+         "- *this ÷ meshopt attr* (when node and the package are there): the row's time divided "
+         "by that of meshoptimizer 1.3's `simplifyWithAttributes` (WebAssembly) in the same "
+         "run; below 1 the row is faster. The WebAssembly build is slower than native "
+         "meshoptimizer's `simplifyWithAttributes` (not built into this benchmark), so against "
+         "that the ratio is larger (docs/BENCHMARK.md, *One thread and two against native "
+         "meshoptimizer in the same rounds*).\n"
+         "- *peak memory*: before each run the heap is trimmed (`malloc_trim`), the resident "
+         "size is read (VmRSS) and the high-water mark is reset (writing `5` to "
+         "`/proc/self/clear_refs`); after the run, VmHWM minus that baseline. It counts what "
+         "the run allocated at its peak, output included, input excluded.\n"
+         "- *decimation state*: vtkColorHalfEdgeDecimation::GetStateMemory(), the bytes of "
+         "its own arrays (connectivity, metric, heap or the Batched schedule's keys).\n"
+         "- This filter's rows: its defaults (AttributeQuadric with boundary planes and the "
+         "Batched schedule, NumberOfThreads 0: every core, so its CPU seconds add up the "
+         "threads); the paper's method (SetPaperDefaults: HalfEdgeColor, Greedy); the paper's "
+         "cost with the Batched schedule; the Geometry metric with the Greedy schedule "
+         "(docs/SCHEDULES.md, docs/RESULTS.md).\n"
+         "- *ns/triangle* in the sweep: seconds (CPU seconds for the CPU column) divided by the "
+         "input triangles; flat means linear time (n log n shows as a slow rise, cache misses "
+         "as a step once the working set outgrows the caches).\n"
+         "- The spheres are vtkSphereSource latitude-longitude spheres (ColorDecimation::Meshes "
+         "UVSphere): two poles of valence equal to the resolution (700 for the 977,200-triangle "
+         "sphere), all other vertices of valence 6.\n\n";
+}
+
 std::string Report(const Options& options, const std::vector<CaseResult>& cases,
                    const std::vector<CaseResult>& sweep, const std::string& date,
                    double totalSeconds, const std::string& loadBefore, const std::string& loadAfter)
 {
   std::ostringstream os;
   os << ReportHeader(options, date, totalSeconds, loadBefore, loadAfter);
-  os << "## What is measured\n\n"
-        "- Every method runs in this one process on the very same vtkPolyData (triangles; "
-        "polygons and strips would be triangulated once beforehand), one after the other.\n"
-        "- *seconds*: the filter's own wall-clock time, `Update()` only (reading and generating "
-        "the mesh are not counted). *CPU seconds*: the process's CPU time over the same span "
-        "(user + system, all threads); on a busy machine it is the steadier figure. For "
-        "meshoptimizer: copying the points to float and the ids to 32 "
-        "bits, then `meshopt_simplify` (target error 1, i.e. unbounded, so that it stops at "
-        "the triangle target; no vtkPolyData is built from its result).\n"
-        "- meshoptimizer 1.3 (WebAssembly): the npm package `meshoptimizer` (pinned in "
-        "Tools/MeshOptimizerJS), same algorithm as the native library, run by node (V8) with "
-        "the module compiled by the optimising compiler before the call, which "
-        "Tools/MeshOptimizerJS/simplify.mjs times inside node (`performance.now()`, "
-        "`process.cpuUsage()`); the colour as 3 attributes in [0,1] of weight 1, target error "
-        "FLT_MAX (the triangle target governs), LockBorder off; its peak memory is node's "
-        "(maxRSS above the RSS before the call). The whole call, node's start included, is "
-        "below each table.\n"
-        "- *vtkQD attr on ÷ this*, *vtkQD attr off ÷ this*: vtkQuadricDecimation's time "
-        "(AttributeErrorMetric on with the colour array as the only attribute, resp. off) "
-        "divided by the row's time: how many times faster the row is.\n"
-        "- *this ÷ meshopt attr* (when node and the package are there): the row's time divided "
-        "by that of meshoptimizer 1.3's `simplifyWithAttributes` (WebAssembly) in the same "
-        "run; below 1 the row is faster. The WebAssembly build is slower than the native "
-        "library, so against native meshoptimizer the share is larger (docs/BENCHMARK.md "
-        "measures both).\n"
-        "- *peak memory*: before each run the heap is trimmed (`malloc_trim`), the resident "
-        "size is read (VmRSS) and the high-water mark is reset (writing `5` to "
-        "`/proc/self/clear_refs`); after the run, VmHWM minus that baseline. It counts what "
-        "the run allocated at its peak, output included, input excluded.\n"
-        "- *decimation state*: vtkColorHalfEdgeDecimation::GetStateMemory(), the bytes of "
-        "its own arrays (connectivity, metric, heap or the Batched schedule's keys).\n"
-        "- This filter's rows: its defaults (AttributeQuadric with boundary planes and the "
-        "Batched schedule, NumberOfThreads 0: every core, so its CPU seconds add up the "
-        "threads); the paper's method (SetPaperDefaults: HalfEdgeColor, Greedy); the paper's "
-        "cost with the Batched schedule; the Geometry metric with the Greedy schedule "
-        "(docs/SCHEDULES.md, docs/RESULTS.md).\n"
-        "- *ns/triangle* in the sweep: seconds (CPU seconds for the CPU column) divided by the "
-        "input triangles; flat means linear time (n log n shows as a slow rise, cache misses "
-        "as a step once the working set outgrows the caches).\n"
-        "- The spheres are vtkSphereSource latitude-longitude spheres (ColorDecimation::Meshes "
-        "UVSphere): two poles of valence equal to the resolution (700 for the 977,200-triangle "
-        "sphere), all other vertices of valence 6.\n\n";
+  os << MeasuredSection();
 
   if (!cases.empty())
   {
